@@ -1,0 +1,59 @@
+#include "engine/passes/fxaa.h"
+
+#include "embedded_shaders.h"
+#include "engine/passes/fullscreen.h"
+
+#include <stdexcept>
+
+namespace engine::passes {
+namespace {
+
+struct FxaaPush {
+  float inverse_size[2];
+  float edge_threshold;
+  float edge_threshold_min;
+  float subpixel_quality;
+};
+
+}  // namespace
+
+FxaaPass::FxaaPass(vk::Context& context, VkFormat format)
+    : pipeline_(context, vk::GraphicsPipelineDesc{
+                             .name = "fxaa",
+                             .vertex = fullscreen_vertex_shader(),
+                             .fragment = shaders::fxaa_frag,
+                             .color_formats = {format},
+                             .bindings = {{0, vk::DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
+                             .push_constant_size = sizeof(FxaaPush)}),
+      sampler_(context, VK_FILTER_LINEAR),
+      format_(format) {}
+
+graph::ImageHandle FxaaPass::add_to(graph::RenderGraph& graph, graph::ImageHandle input,
+                                    const FxaaSettings& settings, const std::string& name) const {
+  vk::ImageDesc desc = graph.image_desc(input);
+  if (desc.format != format_ || desc.kind != vk::ImageKind::Image2D)
+    throw std::logic_error("fxaa: input '" + graph.image_name(input) + "' is not a 2D image of the pass's format");
+  desc.usage = 0;
+  struct Data {
+    graph::ImageHandle output;
+  };
+  const Data& data = graph.add_pass<Data>(
+      name,
+      [&](graph::PassBuilder& builder, Data& d) {
+        builder.read(input, graph::Access::FragmentSampled);
+        d.output = builder.write(builder.create(name + ".output", desc), graph::Access::ColorAttachmentWrite);
+      },
+      [this, input, settings](graph::PassContext& ctx, const Data&) {
+        pipeline_.bind(ctx.cmd, ctx.width, ctx.height);
+        pipeline_.push_image(ctx.cmd, 0, ctx.image(input).sampled_view(), sampler_.handle());
+        const FxaaPush push{{1.0f / float(ctx.width), 1.0f / float(ctx.height)},
+                            settings.edge_threshold,
+                            settings.edge_threshold_min,
+                            settings.subpixel_quality};
+        pipeline_.push_constants(ctx.cmd, push);
+        draw_fullscreen(ctx.cmd);
+      });
+  return data.output;
+}
+
+}  // namespace engine::passes

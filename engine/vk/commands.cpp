@@ -1,0 +1,57 @@
+#include "engine/vk/commands.h"
+
+#include "engine/vk/context.h"
+#include "engine/vk/vk_check.h"
+
+#include <cstdint>
+
+namespace engine::vk {
+
+CommandBuffer::CommandBuffer(Context& context) : context_(context) {
+  VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  alloc.commandPool = context.command_pool();
+  alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  alloc.commandBufferCount = 1;
+  VK_CHECK(vkAllocateCommandBuffers(context.device(), &alloc, &cmd_));
+  VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  const VkResult result = vkCreateFence(context.device(), &fence, nullptr, &fence_);
+  if (result != VK_SUCCESS) {
+    vkFreeCommandBuffers(context.device(), context.command_pool(), 1, &cmd_);
+    VK_CHECK(result);
+  }
+}
+
+CommandBuffer::~CommandBuffer() {
+  if (pending_) vkWaitForFences(context_.device(), 1, &fence_, VK_TRUE, UINT64_MAX);
+  vkDestroyFence(context_.device(), fence_, nullptr);
+  vkFreeCommandBuffers(context_.device(), context_.command_pool(), 1, &cmd_);
+}
+
+VkCommandBuffer CommandBuffer::begin() {
+  wait();
+  VK_CHECK(vkResetCommandBuffer(cmd_, 0));
+  VkCommandBufferBeginInfo info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  info.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  VK_CHECK(vkBeginCommandBuffer(cmd_, &info));
+  return cmd_;
+}
+
+void CommandBuffer::submit() {
+  VK_CHECK(vkEndCommandBuffer(cmd_));
+  VK_CHECK(vkResetFences(context_.device(), 1, &fence_));
+  VkCommandBufferSubmitInfo cmd_info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
+  cmd_info.commandBuffer = cmd_;
+  VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+  submit.commandBufferInfoCount = 1;
+  submit.pCommandBufferInfos = &cmd_info;
+  VK_CHECK(vkQueueSubmit2(context_.queue(), 1, &submit, fence_));
+  pending_ = true;
+}
+
+void CommandBuffer::wait() {
+  if (!pending_) return;
+  VK_CHECK(vkWaitForFences(context_.device(), 1, &fence_, VK_TRUE, UINT64_MAX));
+  pending_ = false;
+}
+
+}  // namespace engine::vk

@@ -1,0 +1,83 @@
+// RAII image with its memory and views, plus the synchronization state the render graph keeps
+// for it between graph executions (an imported, persistent image remembers its last access).
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <string>
+
+namespace engine::vk {
+
+class Context;
+
+enum class ImageKind {
+  Image2D,       // width x height
+  Image2DArray,  // width x height x layers
+  Image3D,       // width x height x depth; created 2D_ARRAY_COMPATIBLE so passes render into slices
+};
+
+struct ImageDesc {
+  ImageKind kind = ImageKind::Image2D;
+  uint32_t width = 1;
+  uint32_t height = 1;
+  uint32_t depth_or_layers = 1;  // depth for Image3D, layers for Image2DArray, 1 for Image2D
+  VkFormat format = VK_FORMAT_R8G8B8A8_UNORM;
+  VkImageUsageFlags usage = 0;
+
+  // Layers a pass renders into: slices of a 3D image, layers of an array.
+  uint32_t render_layers() const { return kind == ImageKind::Image2D ? 1 : depth_or_layers; }
+  bool operator==(const ImageDesc&) const = default;
+};
+
+// Where an image stands in the pipeline: its layout, the last write not yet made visible to every
+// later use, and the stages that read it since. The graph derives barriers from this.
+struct ImageSyncState {
+  VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
+  VkPipelineStageFlags2 write_stages = 0;
+  VkAccessFlags2 write_access = 0;
+  VkPipelineStageFlags2 read_stages = 0;  // readers since the last write
+  VkAccessFlags2 read_access = 0;
+  VkPipelineStageFlags2 visible_stages = 0;  // stages that already see the last write
+};
+
+bool is_depth_format(VkFormat format);
+uint32_t format_texel_size(VkFormat format);
+
+class Image {
+ public:
+  Image() = default;
+  Image(Context& context, const ImageDesc& desc, const std::string& name);
+  ~Image();
+  Image(Image&& other) noexcept;
+  Image& operator=(Image&& other) noexcept;
+  Image(const Image&) = delete;
+  Image& operator=(const Image&) = delete;
+
+  VkImage handle() const { return image_; }
+  // View for sampling: 2D, 2D_ARRAY or 3D matching the kind.
+  VkImageView sampled_view() const { return sampled_view_; }
+  // View for rendering: 2D for Image2D, 2D_ARRAY over every layer or slice otherwise.
+  VkImageView attachment_view() const { return attachment_view_; }
+  const ImageDesc& desc() const { return desc_; }
+  const std::string& name() const { return name_; }
+  VkImageAspectFlags aspect() const;
+  VkImageSubresourceRange full_range() const;
+
+  ImageSyncState& sync_state() { return sync_; }
+  const ImageSyncState& sync_state() const { return sync_; }
+
+ private:
+  void release();
+
+  Context* context_ = nullptr;
+  VkImage image_ = VK_NULL_HANDLE;
+  VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  VkImageView sampled_view_ = VK_NULL_HANDLE;
+  VkImageView attachment_view_ = VK_NULL_HANDLE;
+  ImageDesc desc_{};
+  std::string name_;
+  ImageSyncState sync_{};
+};
+
+}  // namespace engine::vk

@@ -1,0 +1,83 @@
+// Graphics pipelines built from embedded SPIR-V, for dynamic rendering (no VkRenderPass). Resources
+// are bound with push descriptors: one set, written at draw time, so passes need no descriptor
+// pools and a pass can bind a different ping-pong image every step.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace engine::vk {
+
+class Context;
+
+enum class BlendMode {
+  None,      // overwrite
+  Additive,  // dst + src on every channel (the splat's accumulation)
+  Alpha,     // src.a * src + (1 - src.a) * dst
+};
+
+enum class DescriptorKind { SampledImage, UniformBuffer };
+
+struct DescriptorBinding {
+  uint32_t binding = 0;
+  DescriptorKind kind = DescriptorKind::SampledImage;
+  VkShaderStageFlags stages = VK_SHADER_STAGE_ALL_GRAPHICS;
+};
+
+struct GraphicsPipelineDesc {
+  std::string name;
+  std::span<const uint32_t> vertex;
+  std::span<const uint32_t> geometry;  // empty = none
+  std::span<const uint32_t> fragment;
+  VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  std::vector<VkFormat> color_formats;
+  std::vector<BlendMode> blend;  // one per colour format; missing entries are None
+  VkFormat depth_format = VK_FORMAT_UNDEFINED;
+  bool depth_test = false;
+  bool depth_write = false;
+  std::vector<DescriptorBinding> bindings;
+  uint32_t push_constant_size = 0;  // bytes, at most 128 (lavapipe's limit)
+};
+
+class GraphicsPipeline {
+ public:
+  GraphicsPipeline() = default;
+  GraphicsPipeline(Context& context, const GraphicsPipelineDesc& desc);
+  ~GraphicsPipeline();
+  GraphicsPipeline(GraphicsPipeline&& other) noexcept;
+  GraphicsPipeline& operator=(GraphicsPipeline&& other) noexcept;
+  GraphicsPipeline(const GraphicsPipeline&) = delete;
+  GraphicsPipeline& operator=(const GraphicsPipeline&) = delete;
+
+  VkPipeline handle() const { return pipeline_; }
+  VkPipelineLayout layout() const { return layout_; }
+  const std::string& name() const { return name_; }
+
+  // Binds the pipeline and sets a full viewport and scissor of the given size.
+  void bind(VkCommandBuffer cmd, uint32_t width, uint32_t height) const;
+  // Push-descriptor writes for the next draw.
+  void push_image(VkCommandBuffer cmd, uint32_t binding, VkImageView view, VkSampler sampler) const;
+  void push_uniform(VkCommandBuffer cmd, uint32_t binding, VkBuffer buffer, VkDeviceSize offset,
+                    VkDeviceSize size) const;
+  void push_constants(VkCommandBuffer cmd, const void* data, uint32_t size) const;
+  template <class T>
+  void push_constants(VkCommandBuffer cmd, const T& value) const {
+    push_constants(cmd, &value, sizeof(T));
+  }
+
+ private:
+  void release();
+
+  Context* context_ = nullptr;
+  VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
+  VkPipelineLayout layout_ = VK_NULL_HANDLE;
+  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  uint32_t push_constant_size_ = 0;
+  std::string name_;
+};
+
+}  // namespace engine::vk

@@ -1,0 +1,53 @@
+#include "engine/vk/png.h"
+
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#define STB_IMAGE_IMPLEMENTATION
+#define STBI_ONLY_PNG
+#include <stb_image.h>
+#include <stb_image_write.h>
+
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+namespace engine::vk {
+
+void write_png(const std::filesystem::path& path, const Rgba8Image& image) {
+  if (image.pixels.size() != size_t(image.width) * image.height * 4)
+    throw std::invalid_argument("write_png: pixel buffer does not match " + std::to_string(image.width) + "x" +
+                                std::to_string(image.height));
+  std::vector<unsigned char> encoded;
+  auto append = [](void* context, void* data, int size) {
+    auto* out = static_cast<std::vector<unsigned char>*>(context);
+    out->insert(out->end(), static_cast<unsigned char*>(data), static_cast<unsigned char*>(data) + size);
+  };
+  if (!stbi_write_png_to_func(append, &encoded, int(image.width), int(image.height), 4, image.pixels.data(),
+                              int(image.width) * 4))
+    throw std::runtime_error(path.string() + ": PNG encoding failed");
+  std::filesystem::path temporary = path;
+  temporary += ".partial";
+  {
+    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
+    if (!file) throw std::runtime_error(path.parent_path().string() + ": cannot write (" + path.filename().string() + ")");
+    file.write(reinterpret_cast<const char*>(encoded.data()), std::streamsize(encoded.size()));
+    file.close();
+    if (!file) {
+      std::error_code ignored;
+      std::filesystem::remove(temporary, ignored);
+      throw std::runtime_error(path.string() + ": write failed (disk full?)");
+    }
+  }
+  std::filesystem::rename(temporary, path);
+}
+
+Rgba8Image read_png(const std::filesystem::path& path) {
+  int width = 0, height = 0, channels = 0;
+  stbi_uc* data = stbi_load(path.string().c_str(), &width, &height, &channels, 4);
+  if (!data) throw std::runtime_error(path.string() + ": cannot read PNG (" + stbi_failure_reason() + ")");
+  Rgba8Image image{uint32_t(width), uint32_t(height), std::vector<uint8_t>(data, data + size_t(width) * height * 4)};
+  stbi_image_free(data);
+  return image;
+}
+
+}  // namespace engine::vk

@@ -1,0 +1,113 @@
+// Scene description in physical units (metres, seconds, kg/m^3, m/s^2), loaded from JSON and
+// validated field by field. This is plain data: liquid/setup.h turns it into grid sizes, particle
+// mass and initial particles; the GPU side never sees JSON.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace liquid {
+
+// Thrown for any problem in a scene file; what() names the file and the field, e.g.
+// "scenes/x.json: fluid_blocks[1].min: must lie inside the domain".
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+enum class SimulationMode {
+  Liquid,        // the chapter's liquid: P = k (rho/rho0)^gamma with gravity
+  ShallowWater,  // section 6, figure 4: 2D density read as water height, ground term as obstacle
+};
+
+enum class SplatFormat { Rgba32f, Rgba16f };
+
+// A box of liquid filled with particles on a lattice of the scene's particle spacing.
+struct FluidBlock {
+  glm::vec3 min{0.0f};       // m (z ignored in 2D)
+  glm::vec3 max{0.0f};       // m
+  glm::vec3 velocity{0.0f};  // m/s, initial velocity of its particles
+};
+
+// A nozzle that adds particles over time (the paper's water jet), up to `capacity` particles.
+struct Emitter {
+  glm::vec3 position{0.0f};  // m, nozzle centre
+  glm::vec3 velocity{0.0f};  // m/s, jet velocity (its direction is the nozzle axis)
+  float radius = 0.0f;       // m, nozzle radius
+  float start_time = 0.0f;   // s
+  float stop_time = 1e30f;   // s
+  int capacity = 0;          // most particles this emitter ever adds
+};
+
+enum class ObstacleShape { Sphere, Box, Metaballs };
+
+struct Metaball {
+  glm::vec3 center{0.0f};  // m
+  float radius = 0.0f;     // m, radius of influence
+};
+
+// A rigid obstacle: an analytic shape whose smooth distance field adds an artificial pressure in
+// the grid pass (section 6). It may move: position(t) = center + velocity t + amplitude sin(2 pi f t).
+struct Obstacle {
+  ObstacleShape shape = ObstacleShape::Sphere;
+  glm::vec3 center{0.0f};        // m
+  float radius = 0.0f;           // m (sphere)
+  glm::vec3 half_extent{0.0f};   // m (box)
+  std::vector<Metaball> balls;   // metaballs: surface where sum (1 - d^2/R^2)^2 = threshold
+  float threshold = 0.5f;        // metaballs iso level, in (0, 1)
+  glm::vec3 velocity{0.0f};      // m/s, constant drift
+  glm::vec3 oscillation_amplitude{0.0f};  // m
+  float oscillation_frequency = 0.0f;     // Hz
+};
+
+// Shallow-water ground: height b(x, y) = sum of Gaussian hills, in metres above the bed.
+struct GroundHill {
+  glm::vec2 center{0.0f};  // m
+  float height = 0.0f;     // m
+  float width = 0.0f;      // m, Gaussian standard deviation
+};
+
+struct Camera {
+  glm::vec3 position{0.0f};  // m
+  glm::vec3 target{0.0f};    // m
+  float fov_y_degrees = 45.0f;
+};
+
+struct Scene {
+  std::string name;                 // file stem unless "name" is given
+  int dimension = 2;                // 2 or 3
+  SimulationMode mode = SimulationMode::Liquid;
+  glm::vec3 domain{1.0f};           // m, box [0, domain]; z ignored in 2D
+  std::optional<int> grid_resolution;  // cells along the longest axis; default round(N^(1/d))
+  glm::vec3 gravity{0.0f, -9.81f, 0.0f};  // m/s^2
+  float particle_spacing = 0.01f;   // m, lattice spacing of fluid blocks (sets particle mass)
+  float density = 1000.0f;          // kg/m^3, the liquid's density (particle mass = density * spacing^d)
+  std::optional<float> rest_density;  // kg/m^3 rho0; empty = computed from the initial uniform lattice
+  float stiffness = 50.0f;          // k, m^2/s^2 (specific pressure; speed of sound c = sqrt(k gamma))
+  float gamma = 5.0f;               // pressure exponent
+  float kernel_radius_cells = 3.0f; // splat radius r, in grid cells
+  float pic_ratio = 0.05f;          // r in the PIC/FLIP blend
+  float time_step = 0.002f;         // s, one simulation step
+  int substeps = 8;                 // steps per rendered frame
+  float wall_margin_cells = 0.5f;   // particles are clamped this many cells inside the walls
+  SplatFormat splat_format = SplatFormat::Rgba32f;
+  float rest_depth = 0.1f;          // m, shallow water: water height where rho = rho0
+  std::vector<FluidBlock> fluid_blocks;
+  std::vector<Emitter> emitters;
+  std::vector<Obstacle> obstacles;
+  std::vector<GroundHill> ground;   // shallow water only
+  std::optional<Camera> camera;     // 3D rendering; a default looks at the domain
+};
+
+// Parses and validates a scene. `source_name` prefixes every error message.
+Scene parse_scene(const std::string& json_text, const std::string& source_name);
+
+// Reads and parses a file; a missing or unreadable file is a SceneError naming the path.
+Scene load_scene(const std::filesystem::path& path);
+
+}  // namespace liquid
