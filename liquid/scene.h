@@ -58,7 +58,9 @@ struct Obstacle {
   glm::vec3 center{0.0f};        // m
   float radius = 0.0f;           // m (sphere)
   glm::vec3 half_extent{0.0f};   // m (box)
-  std::vector<Metaball> balls;   // metaballs: surface where sum (1 - d^2/R^2)^2 = threshold
+  std::vector<Metaball> balls;   // metaballs: surface where sum (1 - d^2/R^2)^2 = threshold;
+                                 // centres relative to `center` (the JSON gives them in domain
+                                 // coordinates; the parser puts `center` at their centroid)
   float threshold = 0.5f;        // metaballs iso level, in (0, 1)
   glm::vec3 velocity{0.0f};      // m/s, constant drift
   glm::vec3 oscillation_amplitude{0.0f};  // m

@@ -240,8 +240,15 @@ void Context::create_device() {
   VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
   f13.dynamicRendering = VK_TRUE;
   f13.synchronization2 = VK_TRUE;
+  VkPhysicalDeviceVulkan12Features supported12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+  VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &supported12};
+  vkGetPhysicalDeviceFeatures2(physical_device_, &supported);
   VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &f13};
   f12.hostQueryReset = VK_TRUE;
+  // gl_Layer from the vertex shader: the 3D splat routes each particle's slices without a
+  // geometry shader.
+  f12.shaderOutputLayer = supported12.shaderOutputLayer;
+  vertex_layer_output_ = supported12.shaderOutputLayer == VK_TRUE;
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f12};
   features.features.geometryShader = VK_TRUE;
   features.features.largePoints = VK_TRUE;

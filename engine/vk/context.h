@@ -49,6 +49,8 @@ class Context {
   std::string driver_description() const { return driver_description_; }
   bool is_cpu_device() const { return properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
   bool validation_enabled() const { return messenger_ != VK_NULL_HANDLE; }
+  // Whether vertex shaders may write gl_Layer (Vulkan 1.2 shaderOutputLayer).
+  bool supports_vertex_layer_output() const { return vertex_layer_output_; }
 
   // Number of validation warnings and errors reported since creation (or the last reset).
   uint32_t validation_message_count() const { return validation_messages_.load(); }
@@ -86,6 +88,7 @@ class Context {
   uint32_t queue_family_ = 0;
   VkCommandPool command_pool_ = VK_NULL_HANDLE;
   bool print_messages_ = true;
+  bool vertex_layer_output_ = false;
   std::atomic<uint32_t> validation_messages_{0};
   mutable std::string last_message_;
   PFN_vkSetDebugUtilsObjectNameEXT set_object_name_ = nullptr;

@@ -1,0 +1,54 @@
+// Per-step health of a simulation, computed on the CPU from read-back particles and density:
+// what the physics must conserve and respect (count and mass, finite state, walls and obstacles
+// not crossed) and energy, so an unstable run is reported instead of silently continued.
+#pragma once
+
+#include "liquid/obstacles.h"
+#include "liquid/setup.h"
+
+#include <glm/glm.hpp>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace liquid {
+
+// An unstable run (NaN/Inf, or kinetic energy past the bound); what() names the step.
+class SimulationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Diagnostics {
+  int step = 0;
+  double time = 0.0;               // s
+  int active_particles = 0;
+  int outside_domain = 0;          // particles beyond a wall
+  int inside_obstacles = 0;        // particles inside an obstacle (signed distance < 0)
+  int non_finite = 0;              // particles with a NaN or Inf component
+  float max_density_ratio = 0.0f;  // max rho / rho0 over the grid
+  double mass = 0.0;               // kg, active particles * particle mass
+  double kinetic_energy = 0.0;     // J, sum 1/2 m |u|^2
+  float max_speed = 0.0f;          // m/s
+  glm::vec3 center_of_mass{0.0f};  // m
+};
+
+struct ParticleSnapshot {
+  std::vector<glm::vec4> positions;   // active particles only
+  std::vector<glm::vec4> velocities;
+};
+
+// Computes the diagnostics of a snapshot; `density_ratio` is the grid's rho / rho0 (may be empty).
+Diagnostics compute_diagnostics(const SimulationSetup& setup, const ParticleSnapshot& particles,
+                                const std::vector<float>& density_ratio,
+                                const std::vector<ObstaclePose>& obstacle_poses, int step, double time);
+
+// The kinetic energy above which a run counts as unstable: `factor` times the energy the scene
+// could release (potential energy over the domain height, plus initial and emitter motion).
+double kinetic_energy_bound(const SimulationSetup& setup, double factor = 20.0);
+
+// Throws SimulationError naming the step when particles are not finite or the energy is past `bound`.
+void check_stable(const Diagnostics& diagnostics, double energy_bound);
+
+}  // namespace liquid

@@ -1,0 +1,160 @@
+#include "liquid/node.h"
+
+#include "engine/graph/transfer.h"
+#include "engine/vk/context.h"
+
+#include <glm/gtc/packing.hpp>
+
+#include <cstring>
+#include <stdexcept>
+
+namespace liquid {
+namespace {
+
+DeviceLimits device_limits(const engine::vk::Context& context) {
+  const auto& l = context.limits();
+  return {int(l.maxImageDimension2D), int(l.maxImageDimension3D), int(l.maxFramebufferLayers)};
+}
+
+VkFormat splat_format(const Scene& scene) {
+  return scene.splat_format == SplatFormat::Rgba16f ? VK_FORMAT_R16G16B16A16_SFLOAT : VK_FORMAT_R32G32B32A32_SFLOAT;
+}
+
+void require_blendable(const engine::vk::Context& context, VkFormat format, const char* name) {
+  if (!context.format_supports(format, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT))
+    throw std::runtime_error(std::string("the device cannot blend into ") + name + " render targets (splat_format)");
+}
+
+template <class T>
+std::vector<T> as_vector(const std::vector<std::byte>& bytes, size_t count) {
+  std::vector<T> out(count);
+  std::memcpy(out.data(), bytes.data(), std::min(bytes.size(), count * sizeof(T)));
+  return out;
+}
+
+}  // namespace
+
+LiquidNode::LiquidNode(engine::vk::Context& context, const Scene& scene, const LiquidOptions& options)
+    : context_(context), setup_(make_setup(scene, device_limits(context))) {
+  if (setup_.dimension == 3 && !context.supports_vertex_layer_output())
+    throw std::runtime_error("the device cannot write gl_Layer from a vertex shader (shaderOutputLayer), "
+                             "which the 3D splat needs");
+  const VkFormat format = splat_format(scene);
+  require_blendable(context, format, scene.splat_format == SplatFormat::Rgba16f ? "RGBA16F" : "RGBA32F");
+  pipelines_ = std::make_unique<SolverPipelines>(context, setup_.dimension, format);
+  state_ = std::make_unique<LiquidState>(context, setup_, format);
+  max_steps_per_frame_ = options.max_steps_per_frame > 0 ? options.max_steps_per_frame : scene.substeps;
+  uniforms_ = std::make_unique<engine::vk::UniformArena>(
+      context, VkDeviceSize(max_steps_per_frame_) * 256 * ((sizeof(gpu::SolverUniforms) + 255) / 256),
+      options.frames_in_flight + 1);
+  energy_bound_ = kinetic_energy_bound(setup_, options.energy_bound_factor);
+  active_ = setup_.initial_particles;
+  emitted_.assign(scene.emitters.size(), 0);
+  pose_overrides_.resize(scene.obstacles.size());
+}
+
+LiquidNode::~LiquidNode() = default;
+
+void LiquidNode::set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity) {
+  if (index >= pose_overrides_.size())
+    throw std::out_of_range("liquid: obstacle " + std::to_string(index) + " does not exist");
+  pose_overrides_[index] = PoseOverride{center, velocity, time_};
+}
+
+std::vector<ObstaclePose> LiquidNode::obstacle_poses(double time) const {
+  std::vector<ObstaclePose> poses;
+  for (size_t i = 0; i < setup_.scene.obstacles.size(); ++i) {
+    if (const auto& o = pose_overrides_[i])
+      poses.push_back({o->center + o->velocity * float(time - o->since), o->velocity});
+    else
+      poses.push_back(scripted_pose(setup_.scene.obstacles[i], time));
+  }
+  return poses;
+}
+
+LiquidImages LiquidNode::add_to(engine::graph::RenderGraph& graph, int steps) {
+  if (steps > max_steps_per_frame_)
+    throw std::invalid_argument("liquid: " + std::to_string(steps) + " steps in one frame, at most " +
+                                std::to_string(max_steps_per_frame_) + " (LiquidOptions::max_steps_per_frame)");
+  uniforms_->begin_frame();
+  LiquidState& s = *state_;
+  std::array<ParticleImages, 2> particles;
+  for (int i = 0; i < 2; ++i)
+    particles[i] = {graph.import_image(s.positions[i].name(), s.positions[i]),
+                    graph.import_image(s.velocities[i].name(), s.velocities[i])};
+  ImageHandle splat = graph.import_image(s.splat.name(), s.splat);
+  GridImages grids{graph.import_image(s.grid_velocity.name(), s.grid_velocity),
+                   graph.import_image(s.density.name(), s.density)};
+
+  const Scene& scene = setup_.scene;
+  const float dt = scene.time_step;
+  for (int k = 0; k < steps; ++k) {
+    const double t1 = time_ + dt;
+    StepInputs step;
+    step.dt = dt;
+    step.active_before = active_;
+    int next_index = active_;
+    // Emitters (the paper's jet): this step's new particles take the next texels in order.
+    for (size_t e = 0; e < scene.emitters.size(); ++e) {
+      const int total = emitted_by(scene.emitters[e], setup_.dimension, scene.particle_spacing, t1);
+      const int count = std::min(total - emitted_[e], setup_.capacity - next_index);
+      if (count <= 0) continue;
+      step.emissions.push_back({int(e), next_index, next_index + count});
+      next_index += count;
+      emitted_[e] += count;
+    }
+    step.active_after = next_index;
+    step.obstacle_poses = obstacle_poses(t1);
+    step.brushes = brushes_;
+    const engine::vk::UniformSlice slice = uniforms_->push(make_uniforms(setup_, step));
+
+    const int cur = s.current, next = 1 - s.current;
+    splat = add_splat(graph, *pipelines_, slice, particles[cur], splat, active_, scene.kernel_radius_cells);
+    grids = add_grid(graph, *pipelines_, slice, splat, grids);
+    particles[next] = add_particle_update(graph, *pipelines_, slice, particles[cur], splat, grids, particles[next],
+                                          step.active_after);
+    s.current = next;
+    active_ = step.active_after;
+    time_ = t1;
+    ++step_;
+  }
+  return {particles[s.current].positions, particles[s.current].velocities, splat, grids.velocity, grids.density};
+}
+
+ParticleSnapshot LiquidNode::read_particles() {
+  ParticleSnapshot snapshot;
+  snapshot.positions =
+      as_vector<glm::vec4>(engine::graph::download_image(context_, state_->positions[state_->current]), size_t(active_));
+  snapshot.velocities =
+      as_vector<glm::vec4>(engine::graph::download_image(context_, state_->velocities[state_->current]), size_t(active_));
+  return snapshot;
+}
+
+std::vector<float> LiquidNode::read_density_ratio() {
+  const auto bytes = engine::graph::download_image(context_, state_->density);
+  std::vector<float> ratio(bytes.size() / 2);
+  const uint16_t* halves = reinterpret_cast<const uint16_t*>(bytes.data());
+  for (size_t i = 0; i < ratio.size(); ++i) ratio[i] = glm::unpackHalf1x16(halves[i]);
+  return ratio;
+}
+
+std::vector<glm::vec4> LiquidNode::read_splat() {
+  const engine::vk::ImageDesc& d = state_->splat.desc();
+  const size_t cells = size_t(d.width) * d.height * d.depth_or_layers;
+  const auto bytes = engine::graph::download_image(context_, state_->splat);
+  if (d.format == VK_FORMAT_R32G32B32A32_SFLOAT) return as_vector<glm::vec4>(bytes, cells);
+  std::vector<glm::vec4> out(cells);
+  const uint16_t* halves = reinterpret_cast<const uint16_t*>(bytes.data());
+  for (size_t i = 0; i < cells; ++i)
+    for (int c = 0; c < 4; ++c) out[i][c] = glm::unpackHalf1x16(halves[i * 4 + c]);
+  return out;
+}
+
+Diagnostics LiquidNode::diagnose() {
+  const Diagnostics d =
+      compute_diagnostics(setup_, read_particles(), read_density_ratio(), obstacle_poses(time_), step_, time_);
+  check_stable(d, energy_bound_);
+  return d;
+}
+
+}  // namespace liquid

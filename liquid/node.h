@@ -1,0 +1,100 @@
+// LiquidNode: the one entry point a host engine uses. Created from a scene, it adds the solver's
+// passes (splat -> grid -> particle, per step) to the host's render graph each frame, exposes the
+// grids and particles as graph images for the host's own passes, takes force brushes and obstacle
+// updates, and reads back particles and diagnostics on demand.
+#pragma once
+
+#include "engine/graph/render_graph.h"
+#include "engine/vk/uniform_arena.h"
+#include "liquid/diagnostics.h"
+#include "liquid/scene.h"
+#include "liquid/setup.h"
+#include "liquid/solver_passes.h"
+#include "liquid/state.h"
+#include "liquid/uniforms.h"
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace engine::vk {
+class Context;
+}
+
+namespace liquid {
+
+struct LiquidOptions {
+  uint32_t frames_in_flight = 2;  // frames the GPU may still be running when add_to() is called
+  int max_steps_per_frame = 0;    // 0 = the scene's substeps (uniform space is sized for this)
+  double energy_bound_factor = 20.0;
+};
+
+// The graph images after the steps add_to() declared; valid for the rest of that graph.
+struct LiquidImages {
+  ImageHandle positions;      // RGBA32F particle texture, xyz m
+  ImageHandle velocities;     // RGBA32F particle texture, xyz m/s
+  ImageHandle splat;          // (sum w u, sum w), the last step's splat
+  ImageHandle grid_velocity;  // (u', fluid flag)
+  ImageHandle density;        // R16F rho / rho0
+};
+
+class LiquidNode {
+ public:
+  // Throws SceneError when the scene does not fit the device (grid or particle count past its
+  // limits) and std::runtime_error when the device lacks a needed format feature.
+  LiquidNode(engine::vk::Context& context, const Scene& scene, const LiquidOptions& options = {});
+  ~LiquidNode();
+
+  const SimulationSetup& setup() const { return setup_; }
+  int dimension() const { return setup_.dimension; }
+
+  // Declares `steps` simulation steps on `graph` (the host then compiles and executes it).
+  // Advances the host-side clock and particle count: the graph must be executed.
+  LiquidImages add_to(engine::graph::RenderGraph& graph, int steps);
+  // The scene's steps per frame.
+  int substeps() const { return setup_.scene.substeps; }
+
+  // External forces for the following steps (at most 4).
+  void set_brushes(std::vector<ForceBrush> brushes) { brushes_ = std::move(brushes); }
+  // Places obstacle `index` (a host-driven obstacle): from now on it moves at `velocity` from
+  // `center`, replacing the scene's scripted motion.
+  void set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity);
+  std::vector<ObstaclePose> obstacle_poses(double time) const;
+
+  int active_particles() const { return active_; }
+  int step_count() const { return step_; }
+  double time() const { return time_; }
+
+  // Blocking reads (own submission): call when no frame of this node is in flight.
+  ParticleSnapshot read_particles();
+  std::vector<float> read_density_ratio();
+  std::vector<glm::vec4> read_splat();
+  // Diagnostics of the current state; throws SimulationError when the state is unstable.
+  Diagnostics diagnose();
+  double energy_bound() const { return energy_bound_; }
+
+  LiquidState& state() { return *state_; }
+
+ private:
+  engine::vk::Context& context_;
+  SimulationSetup setup_;
+  std::unique_ptr<SolverPipelines> pipelines_;
+  std::unique_ptr<LiquidState> state_;
+  std::unique_ptr<engine::vk::UniformArena> uniforms_;
+  int max_steps_per_frame_ = 0;
+  double energy_bound_ = 0.0;
+
+  int active_ = 0;
+  int step_ = 0;
+  double time_ = 0.0;
+  std::vector<int> emitted_;  // per emitter
+  std::vector<ForceBrush> brushes_;
+  struct PoseOverride {
+    glm::vec3 center;
+    glm::vec3 velocity;
+    double since;
+  };
+  std::vector<std::optional<PoseOverride>> pose_overrides_;
+};
+
+}  // namespace liquid

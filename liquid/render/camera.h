@@ -1,0 +1,24 @@
+// A pinhole camera in scene units (metres), and the matrices the render passes use.
+#pragma once
+
+#include <glm/glm.hpp>
+
+namespace liquid {
+
+struct Scene;
+struct SimulationSetup;
+
+struct CameraView {
+  glm::vec3 position{0.0f};
+  glm::vec3 target{0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float fov_y_degrees = 45.0f;
+};
+
+// The scene's camera, or one that frames the whole domain from the front, slightly above.
+CameraView default_camera(const SimulationSetup& setup);
+
+// Vulkan clip space (y down, depth 0..1): projection * view.
+glm::mat4 view_projection(const CameraView& camera, float aspect, float near_plane, float far_plane);
+
+}  // namespace liquid

@@ -1,0 +1,155 @@
+#include "liquid/render/height_field.h"
+
+#include "embedded_shaders.h"
+#include "liquid/uniforms.h"
+
+#include <glm/gtc/constants.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace liquid {
+
+using engine::graph::Access;
+using engine::graph::ImageHandle;
+using engine::graph::PassBuilder;
+using engine::graph::PassContext;
+using engine::vk::DescriptorKind;
+
+namespace {
+
+constexpr VkFormat k_view_format = VK_FORMAT_R8G8B8A8_UNORM;
+constexpr VkFormat k_view_depth_format = VK_FORMAT_D32_SFLOAT;
+constexpr float k_camera_elevation_degrees = 50.0f;
+constexpr float k_camera_fov_degrees = 40.0f;
+// Heights are drawn at their true scale.
+constexpr float k_vertical_scale = 1.0f;
+// Towards the sun: high, beyond the plane's far side and to the right, so the waves facing the
+// default camera catch its highlight.
+const glm::vec3 k_sun_direction = glm::normalize(glm::vec3(0.35f, 0.7f, -0.6f));
+// The sky where no mesh covers the frame (the colour the water reflects near the horizon).
+constexpr glm::vec4 k_sky{0.70f, 0.79f, 0.89f, 1.0f};
+
+// Mirror of HeightFieldUniforms in shaders/render/height_field.vert/.frag (std140).
+struct HeightFieldUniforms {
+  glm::mat4 view_projection;
+  glm::vec4 camera_position;
+  glm::vec4 sun_direction;
+  glm::vec4 params;
+};
+static_assert(sizeof(HeightFieldUniforms) == 112);
+
+// Mirror of HeightFieldPush.
+struct HeightFieldPush {
+  int32_t layer;
+};
+
+constexpr int32_t k_ground_layer = 0;
+constexpr int32_t k_water_layer = 1;
+
+const LiquidNode& require_shallow_water(const LiquidNode& node) {
+  if (node.dimension() != 2 || node.setup().scene.mode != SimulationMode::ShallowWater)
+    throw std::invalid_argument("liquid: the height-field view needs a 2D shallow-water scene");
+  return node;
+}
+
+}  // namespace
+
+CameraView default_height_field_camera(const SimulationSetup& setup) {
+  if (setup.scene.camera) {
+    const Camera& c = *setup.scene.camera;
+    return {c.position, c.target, {0.0f, 1.0f, 0.0f}, c.fov_y_degrees};
+  }
+  const glm::vec2 plane(setup.domain.x, setup.domain.y);
+  const glm::vec3 target(0.5f * plane.x, 0.5f * setup.scene.rest_depth, 0.5f * plane.y);
+  // Far enough that the plane, foreshortened by the elevation, fills most of a 4:3 frame.
+  const float extent = std::max(plane.x, plane.y);
+  const float distance = 1.55f * extent;
+  const float elevation = glm::radians(k_camera_elevation_degrees);
+  const glm::vec3 direction(0.0f, std::sin(elevation), std::cos(elevation));  // from the front, +z
+  return {target + distance * direction, target, {0.0f, 1.0f, 0.0f}, k_camera_fov_degrees};
+}
+
+HeightFieldPass::HeightFieldPass(engine::vk::Context& context, const LiquidNode& node)
+    : node_(require_shallow_water(node)),
+      pipeline_(context,
+                engine::vk::GraphicsPipelineDesc{
+                    .name = "liquid.height_field",
+                    .vertex = shaders::height_field_vert,
+                    .fragment = shaders::height_field_frag,
+                    .color_formats = {k_view_format},
+                    // The ground writes alpha 1, so one blended pipeline draws both layers.
+                    .blend = {engine::vk::BlendMode::Alpha},
+                    .depth_format = k_view_depth_format,
+                    .depth_test = true,
+                    .depth_write = true,
+                    .bindings = {{0, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_VERTEX_BIT},
+                                 {1, DescriptorKind::UniformBuffer,
+                                  VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
+                                 {2, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
+                    .push_constant_size = sizeof(HeightFieldPush)}),
+      linear_(context, VK_FILTER_LINEAR),
+      uniforms_(context, 4096, 3) {}
+
+ImageHandle HeightFieldPass::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
+                                    const RenderSettings& settings, const CameraView& camera) {
+  const SimulationSetup& setup = node_.setup();
+  uniforms_.begin_frame();
+  StepInputs inputs;
+  inputs.obstacle_poses = node_.obstacle_poses(node_.time());
+  const engine::vk::UniformSlice solver = uniforms_.push(make_uniforms(setup, inputs));
+
+  const float rest_depth = setup.scene.rest_depth;
+  const float extent = std::max(setup.domain.x, setup.domain.y);
+  const float aspect = float(settings.width) / float(settings.height);
+  const float far_plane = 4.0f * extent + 2.0f * glm::length(camera.position - camera.target);
+  const float near_plane = 1e-3f * far_plane;
+  // The sides drop below the bed by a slab as thick as the rest depth (at least 2% of the plane).
+  const float base = -std::max(rest_depth, 0.02f * extent);
+  const HeightFieldUniforms view{view_projection(camera, aspect, near_plane, far_plane),
+                                 glm::vec4(camera.position, 1.0f),
+                                 glm::vec4(k_sun_direction, 0.0f),
+                                 glm::vec4(rest_depth, k_dry_fraction * rest_depth, k_vertical_scale, base)};
+  const engine::vk::UniformSlice view_slice = uniforms_.push(view);
+
+  // 6 vertices per quad between neighbouring vertices of the (cells + 2)^2 grid with its edge ring.
+  const glm::ivec2 cells(setup.grid_cells.x, setup.grid_cells.y);
+  const uint32_t vertex_count = 6u * uint32_t(cells.x + 1) * uint32_t(cells.y + 1);
+
+  struct Data {
+    ImageHandle color;
+    ImageHandle depth;
+  };
+  const ImageHandle density = images.density;
+  const engine::vk::ImageDesc color_desc{engine::vk::ImageKind::Image2D, settings.width, settings.height, 1,
+                                         k_view_format, 0};
+  const engine::vk::ImageDesc depth_desc{engine::vk::ImageKind::Image2D, settings.width, settings.height, 1,
+                                         k_view_depth_format, 0};
+  return graph
+      .add_pass<Data>(
+          "liquid.height_field",
+          [&](PassBuilder& b, Data& d) {
+            b.read(density, Access::VertexSampled);
+            // Blended: the water reads what the ground wrote.
+            d.color = b.write(b.create("liquid.height_field", color_desc), Access::ColorAttachmentBlend,
+                              engine::graph::clear_to(k_sky.r, k_sky.g, k_sky.b, k_sky.a));
+            d.depth = b.write(b.create("liquid.height_field.depth", depth_desc), Access::DepthAttachmentWrite,
+                              engine::graph::clear_depth(1.0f));
+          },
+          [this, solver, view_slice, density, vertex_count](PassContext& ctx, const Data&) {
+            pipeline_.bind(ctx.cmd, ctx.width, ctx.height);
+            pipeline_.push_uniform(ctx.cmd, 0, solver.buffer, solver.offset, solver.size);
+            pipeline_.push_uniform(ctx.cmd, 1, view_slice.buffer, view_slice.offset, view_slice.size);
+            pipeline_.push_image(ctx.cmd, 2, ctx.image(density).sampled_view(), linear_.handle());
+            // Ground first (opaque), then the water over it; rows run from far (scene y = 0) to
+            // near for the default camera, so the blended water is drawn back to front.
+            pipeline_.push_constants(ctx.cmd, HeightFieldPush{k_ground_layer});
+            vkCmdDraw(ctx.cmd, vertex_count, 1, 0, 0);
+            pipeline_.push_constants(ctx.cmd, HeightFieldPush{k_water_layer});
+            vkCmdDraw(ctx.cmd, vertex_count, 1, 0, 0);
+          })
+      .color;
+}
+
+}  // namespace liquid

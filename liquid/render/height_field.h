@@ -1,0 +1,41 @@
+// The shallow-water view (section 6, figure 4): the 2D simulation plane laid on the ground
+// (scene x -> world x, scene y -> world z, up = world y), drawn as a lit sandy ground b(x, y) and a
+// semi-transparent water surface at b + h, h = rest_depth * rho / rho0.
+#pragma once
+
+#include "engine/graph/render_graph.h"
+#include "engine/vk/pipeline.h"
+#include "engine/vk/uniform_arena.h"
+#include "engine/vk/sampler.h"
+#include "liquid/node.h"
+#include "liquid/render/camera.h"
+#include "liquid/render/renderer.h"
+
+namespace liquid {
+
+// A camera looking at the centre of the plane from above and in front (+z), about 50 degrees
+// above the horizon, framing the whole domain; the scene's own camera when it has one.
+CameraView default_height_field_camera(const SimulationSetup& setup);
+
+// Draws a shallow-water node's ground and water as two meshes of one vertex per grid cell, made in
+// the vertex shader from gl_VertexIndex, with depth testing.
+class HeightFieldPass {
+ public:
+  // Throws std::invalid_argument when the node is not a 2D shallow-water simulation.
+  HeightFieldPass(engine::vk::Context& context, const LiquidNode& node);
+
+  // Returns a new RGBA8_UNORM image of settings.width x settings.height.
+  engine::graph::ImageHandle add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
+                                    const RenderSettings& settings, const CameraView& camera);
+
+  // Water thinner than this fraction of the rest depth is not drawn (dry ground).
+  static constexpr float k_dry_fraction = 0.05f;
+
+ private:
+  const LiquidNode& node_;
+  engine::vk::GraphicsPipeline pipeline_;
+  engine::vk::Sampler linear_;
+  engine::vk::UniformArena uniforms_;
+};
+
+}  // namespace liquid

@@ -1,0 +1,153 @@
+#include "liquid/render/view2d.h"
+
+#include "embedded_shaders.h"
+#include "engine/passes/fullscreen.h"
+#include "liquid/uniforms.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace liquid {
+
+using engine::graph::Access;
+using engine::graph::ImageHandle;
+using engine::graph::PassBuilder;
+using engine::graph::PassContext;
+using engine::vk::DescriptorKind;
+
+namespace {
+
+constexpr VkFormat k_view_format = VK_FORMAT_R8G8B8A8_UNORM;
+// How far up (cells) a liquid pixel looks for the surface; depth below this is the deepest blue.
+constexpr float k_depth_search_cells = 24.0f;
+
+// Mirror of View2dPush in shaders/render/view2d.frag.
+struct View2dPush {
+  glm::vec2 origin;
+  float pixels_per_metre;
+  float iso_level;
+  glm::vec2 frame;
+  float wall_pixels;
+  float depth_cells;
+};
+static_assert(sizeof(View2dPush) == 32);
+
+// Mirror of Particles2dPush in shaders/render/particles2d.vert.
+struct Particles2dPush {
+  glm::vec2 origin;
+  float pixels_per_metre;
+  float point_size;
+  glm::vec2 frame;
+  int32_t texture_width;
+  float alpha;
+};
+static_assert(sizeof(Particles2dPush) == 32);
+
+const LiquidNode& require_2d(const LiquidNode& node) {
+  if (node.dimension() != 2) throw std::invalid_argument("liquid: the 2D view needs a two-dimensional scene");
+  return node;
+}
+
+}  // namespace
+
+View2dLayout fit_view2d(glm::vec2 domain, uint32_t width, uint32_t height) {
+  const glm::vec2 frame{float(width), float(height)};
+  View2dLayout layout;
+  layout.wall_pixels = std::max(2.0f, 0.012f * std::min(frame.x, frame.y));
+  // Walls plus a gap of the same size on every side.
+  const glm::vec2 room = glm::max(frame - 4.0f * layout.wall_pixels, glm::vec2(1.0f));
+  layout.pixels_per_metre = std::min(room.x / domain.x, room.y / domain.y);
+  const glm::vec2 size = domain * layout.pixels_per_metre;
+  // Whole pixels, so that the domain's edges fall on pixel boundaries.
+  layout.origin = glm::vec2(std::round(0.5f * (frame.x - size.x)), std::round(0.5f * (frame.y + size.y)));
+  return layout;
+}
+
+View2dPass::View2dPass(engine::vk::Context& context, const LiquidNode& node)
+    : node_(require_2d(node)),
+      liquid_(context, engine::vk::GraphicsPipelineDesc{
+                           .name = "liquid.view2d",
+                           .vertex = engine::passes::fullscreen_vertex_shader(),
+                           .fragment = shaders::view2d_frag,
+                           .color_formats = {k_view_format},
+                           .bindings = {{0, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
+                                        {1, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
+                           .push_constant_size = sizeof(View2dPush)}),
+      particles_(context, engine::vk::GraphicsPipelineDesc{
+                              .name = "liquid.view2d.particles",
+                              .vertex = shaders::particles2d_vert,
+                              .fragment = shaders::particles2d_frag,
+                              .topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST,
+                              .color_formats = {k_view_format},
+                              .blend = {engine::vk::BlendMode::Alpha},
+                              .bindings = {{0, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
+                              .push_constant_size = sizeof(Particles2dPush)}),
+      linear_(context, VK_FILTER_LINEAR),
+      nearest_(context, VK_FILTER_NEAREST),
+      uniforms_(context, 4096, 3) {}
+
+ImageHandle View2dPass::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
+                               const RenderSettings& settings) {
+  const SimulationSetup& setup = node_.setup();
+  uniforms_.begin_frame();
+  StepInputs inputs;
+  inputs.obstacle_poses = node_.obstacle_poses(node_.time());
+  const engine::vk::UniformSlice solver = uniforms_.push(make_uniforms(setup, inputs));
+
+  const View2dLayout layout = fit_view2d(glm::vec2(setup.domain), settings.width, settings.height);
+  const glm::vec2 frame{float(settings.width), float(settings.height)};
+  const View2dPush push{layout.origin, layout.pixels_per_metre, settings.iso_level,
+                        frame,         layout.wall_pixels,      k_depth_search_cells};
+
+  struct Data {
+    ImageHandle color;
+  };
+  const ImageHandle density = images.density;
+  const engine::vk::ImageDesc color_desc{engine::vk::ImageKind::Image2D, settings.width, settings.height, 1,
+                                         k_view_format, 0};
+  ImageHandle color =
+      graph
+          .add_pass<Data>(
+              "liquid.view2d",
+              [&](PassBuilder& b, Data& d) {
+                b.read(density, Access::FragmentSampled);
+                d.color = b.write(b.create("liquid.view2d", color_desc), Access::ColorAttachmentWrite);
+              },
+              [this, solver, density, push](PassContext& ctx, const Data&) {
+                liquid_.bind(ctx.cmd, ctx.width, ctx.height);
+                liquid_.push_uniform(ctx.cmd, 0, solver.buffer, solver.offset, solver.size);
+                liquid_.push_image(ctx.cmd, 1, ctx.image(density).sampled_view(), linear_.handle());
+                liquid_.push_constants(ctx.cmd, push);
+                engine::passes::draw_fullscreen(ctx.cmd);
+              })
+          .color;
+  if (!settings.draw_particles || node_.active_particles() == 0) return color;
+
+  // Particles: points blended over the liquid, about 0.7 particle spacings wide (1 to 5 pixels).
+  // Where the particles are packed closer than a few pixels, each point is fainter, so that the
+  // liquid still shows through instead of a white sheet.
+  const float spacing_pixels = setup.scene.particle_spacing * layout.pixels_per_metre;
+  const float point_size = std::clamp(0.7f * spacing_pixels, 1.0f, 5.0f);
+  const float alpha = std::clamp(spacing_pixels / 3.0f, 0.25f, 0.85f);
+  const Particles2dPush particles_push{layout.origin, layout.pixels_per_metre, point_size, frame,
+                                       setup.particle_texture.x, alpha};
+  const uint32_t count = uint32_t(node_.active_particles());
+  const ImageHandle positions = images.positions;
+  return graph
+      .add_pass<Data>(
+          "liquid.view2d.particles",
+          [&](PassBuilder& b, Data& d) {
+            b.read(positions, Access::VertexSampled);
+            d.color = b.write(color, Access::ColorAttachmentBlend);
+          },
+          [this, positions, particles_push, count](PassContext& ctx, const Data&) {
+            particles_.bind(ctx.cmd, ctx.width, ctx.height);
+            particles_.push_image(ctx.cmd, 0, ctx.image(positions).sampled_view(), nearest_.handle());
+            particles_.push_constants(ctx.cmd, particles_push);
+            vkCmdDraw(ctx.cmd, count, 1, 0, 0);
+          })
+      .color;
+}
+
+}  // namespace liquid

@@ -1,0 +1,501 @@
+#include "liquid/scene.h"
+
+#include "liquid/gpu_types.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <initializer_list>
+#include <set>
+#include <sstream>
+
+namespace liquid {
+namespace {
+
+using Json = nlohmann::json;
+
+constexpr double k_max_domain_extent = 100.0;  // m
+constexpr int k_min_grid_resolution = 8;
+constexpr int k_max_grid_resolution = 2048;
+constexpr double k_max_gravity = 1000.0;        // m/s^2 per component
+constexpr double k_max_speed = 1000.0;          // m/s per component
+constexpr double k_max_length = 100.0;          // m, radii, half extents, hill sizes
+constexpr double k_max_frequency = 1000.0;      // Hz
+constexpr int k_max_emitter_capacity = 1 << 24;  // 16M particles
+
+// Readable form of a number for messages: 0.6, 12, 1000000, 1e-06.
+std::string format_number(double value) {
+  if (value == std::floor(value) && std::abs(value) < 1e15) return std::to_string(std::int64_t(value));
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+std::string child(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+
+std::string element(const std::string& path, size_t index) { return path + "[" + std::to_string(index) + "]"; }
+
+// Walks one document: knows the source name (prefix of every message) and, once read, the
+// dimension and domain that later fields are checked against.
+class Reader {
+ public:
+  explicit Reader(std::string source) : source_(std::move(source)) {}
+
+  [[noreturn]] void fail(const std::string& path, const std::string& reason) const {
+    throw SceneError(source_ + ": " + path + ": " + reason);
+  }
+
+  // Requires `value` to be an object whose keys are all in `allowed`.
+  void check_keys(const Json& value, const std::string& path, std::initializer_list<const char*> allowed) const {
+    if (!value.is_object()) fail(path, std::string("must be an object, got ") + value.type_name());
+    for (const auto& item : value.items()) {
+      const bool known = std::any_of(allowed.begin(), allowed.end(), [&](const char* k) { return item.key() == k; });
+      if (!known) fail(child(path, item.key()), "unknown key");
+    }
+  }
+
+  // The member `key` of an object, or nullptr when absent.
+  static const Json* find(const Json& object, const char* key) {
+    const auto it = object.find(key);
+    return it == object.end() ? nullptr : &*it;
+  }
+
+  const Json& require(const Json& object, const std::string& path, const char* key) const {
+    const Json* value = find(object, key);
+    if (!value) fail(child(path, key), "missing required key");
+    return *value;
+  }
+
+  // A finite number that also fits a float (the solver's precision).
+  double number(const Json& value, const std::string& path) const {
+    if (!value.is_number()) fail(path, std::string("must be a number, got ") + value.type_name());
+    const double x = value.get<double>();
+    if (!std::isfinite(x) || std::abs(x) > double(FLT_MAX)) fail(path, "must be a finite number");
+    return x;
+  }
+
+  // A number in [lo, hi]; `lo_open` / `hi_open` exclude the bound.
+  double number_in(const Json& value, const std::string& path, double lo, double hi, bool lo_open = false,
+                   bool hi_open = false) const {
+    const double x = number(value, path);
+    if ((lo_open ? x <= lo : x < lo) || (hi_open ? x >= hi : x > hi))
+      fail(path, "must be in " + std::string(lo_open ? "(" : "[") + format_number(lo) + ", " + format_number(hi) +
+                     (hi_open ? ")" : "]") + ", got " + format_number(x));
+    return x;
+  }
+
+  // An integer in [lo, hi]; an integral float such as 64.0 is accepted.
+  int integer_in(const Json& value, const std::string& path, int lo, int hi) const {
+    if (!value.is_number()) fail(path, std::string("must be an integer, got ") + value.type_name());
+    const double x = value.get<double>();
+    if (!std::isfinite(x) || x != std::floor(x)) fail(path, "must be an integer, got " + format_number(x));
+    if (x < lo || x > hi)
+      fail(path, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + format_number(x));
+    return int(x);
+  }
+
+  std::string string(const Json& value, const std::string& path) const {
+    if (!value.is_string()) fail(path, std::string("must be a string, got ") + value.type_name());
+    return value.get<std::string>();
+  }
+
+  // One of a fixed set of strings; returns its index in `choices`.
+  size_t choice(const Json& value, const std::string& path, std::initializer_list<const char*> choices) const {
+    const std::string text = string(value, path);
+    std::string list;
+    size_t index = 0;
+    for (const char* option : choices) {
+      if (text == option) return index;
+      list += (index++ ? ", \"" : "\"") + std::string(option) + "\"";
+    }
+    fail(path, "must be one of " + list + ", got \"" + text + "\"");
+  }
+
+  // A vector of exactly `length` finite numbers, each with |x| <= bound; z = 0 when length is 2.
+  glm::vec3 vector(const Json& value, const std::string& path, int length, double bound = k_max_length) const {
+    if (!value.is_array()) fail(path, std::string("must be an array of numbers, got ") + value.type_name());
+    if (int(value.size()) != length)
+      fail(path, "must have " + std::to_string(length) + " components, got " + std::to_string(value.size()));
+    glm::vec3 v(0.0f);
+    for (int i = 0; i < length; ++i) v[i] = float(number_in(value[size_t(i)], element(path, size_t(i)), -bound, bound));
+    return v;
+  }
+
+  // A vector of the scene's dimension.
+  glm::vec3 scene_vector(const Json& value, const std::string& path, double bound = k_max_length) const {
+    return vector(value, path, dimension_, bound);
+  }
+
+  // A scene vector that must lie in the closed domain box.
+  glm::vec3 point_in_domain(const Json& value, const std::string& path) const {
+    const glm::vec3 p = scene_vector(value, path);
+    for (int a = 0; a < dimension_; ++a)
+      if (p[a] < 0.0f || p[a] > domain_[a]) fail(path, "must be inside the domain " + describe_domain());
+    return p;
+  }
+
+  // "[0, 1] x [0, 0.6]".
+  std::string describe_domain() const {
+    std::string text;
+    for (int a = 0; a < dimension_; ++a) text += (a ? " x [0, " : "[0, ") + format_number(domain_[a]) + "]";
+    return text;
+  }
+
+  void set_space(int dimension, glm::vec3 domain) {
+    dimension_ = dimension;
+    domain_ = domain;
+  }
+  int dimension() const { return dimension_; }
+
+ private:
+  std::string source_;
+  int dimension_ = 2;
+  glm::vec3 domain_{0.0f};
+};
+
+// ---- Nested objects --------------------------------------------------------------------------
+
+FluidBlock read_fluid_block(const Reader& r, const Json& value, const std::string& path) {
+  r.check_keys(value, path, {"min", "max", "velocity"});
+  FluidBlock block;
+  block.min = r.point_in_domain(r.require(value, path, "min"), child(path, "min"));
+  block.max = r.point_in_domain(r.require(value, path, "max"), child(path, "max"));
+  for (int a = 0; a < r.dimension(); ++a)
+    if (!(block.min[a] < block.max[a]))
+      r.fail(child(path, "max"), "must be greater than min on every axis (axis " + std::to_string(a) + ": min " +
+                                        format_number(block.min[a]) + ", max " + format_number(block.max[a]) + ")");
+  if (const Json* v = Reader::find(value, "velocity"))
+    block.velocity = r.scene_vector(*v, child(path, "velocity"), k_max_speed);
+  return block;
+}
+
+Emitter read_emitter(const Reader& r, const Json& value, const std::string& path) {
+  r.check_keys(value, path, {"position", "velocity", "radius", "start_time", "stop_time", "capacity"});
+  Emitter emitter;
+  emitter.position = r.point_in_domain(r.require(value, path, "position"), child(path, "position"));
+  emitter.velocity = r.scene_vector(r.require(value, path, "velocity"), child(path, "velocity"), k_max_speed);
+  if (glm::dot(emitter.velocity, emitter.velocity) == 0.0f)
+    r.fail(child(path, "velocity"), "must be nonzero (it sets the jet's direction and flow rate)");
+  emitter.radius = float(r.number_in(r.require(value, path, "radius"), child(path, "radius"), 0.0, k_max_length, true));
+  if (const Json* v = Reader::find(value, "start_time"))
+    emitter.start_time = float(r.number_in(*v, child(path, "start_time"), 0.0, double(FLT_MAX)));
+  if (const Json* v = Reader::find(value, "stop_time")) {
+    emitter.stop_time = float(r.number(*v, child(path, "stop_time")));
+    if (!(emitter.stop_time > emitter.start_time))
+      r.fail(child(path, "stop_time"), "must be greater than start_time (" + format_number(emitter.start_time) +
+                                           "), got " + format_number(emitter.stop_time));
+  }
+  emitter.capacity =
+      r.integer_in(r.require(value, path, "capacity"), child(path, "capacity"), 1, k_max_emitter_capacity);
+  return emitter;
+}
+
+Metaball read_metaball(const Reader& r, const Json& value, const std::string& path) {
+  r.check_keys(value, path, {"center", "radius"});
+  Metaball ball;
+  ball.center = r.scene_vector(r.require(value, path, "center"), child(path, "center"));
+  ball.radius = float(r.number_in(r.require(value, path, "radius"), child(path, "radius"), 0.0, k_max_length, true));
+  return ball;
+}
+
+void read_oscillation(const Reader& r, const Json& value, const std::string& path, Obstacle& obstacle) {
+  r.check_keys(value, path, {"amplitude", "frequency"});
+  obstacle.oscillation_amplitude = r.scene_vector(r.require(value, path, "amplitude"), child(path, "amplitude"));
+  obstacle.oscillation_frequency =
+      float(r.number_in(r.require(value, path, "frequency"), child(path, "frequency"), 0.0, k_max_frequency));
+}
+
+Obstacle read_obstacle(const Reader& r, const Json& value, const std::string& path) {
+  if (!value.is_object()) r.fail(path, std::string("must be an object, got ") + value.type_name());
+  Obstacle obstacle;
+  obstacle.shape = ObstacleShape(r.choice(r.require(value, path, "shape"), child(path, "shape"),
+                                          {"sphere", "box", "metaballs"}));
+  switch (obstacle.shape) {
+    case ObstacleShape::Sphere:
+      r.check_keys(value, path, {"shape", "center", "radius", "velocity", "oscillation"});
+      obstacle.center = r.scene_vector(r.require(value, path, "center"), child(path, "center"));
+      obstacle.radius =
+          float(r.number_in(r.require(value, path, "radius"), child(path, "radius"), 0.0, k_max_length, true));
+      break;
+    case ObstacleShape::Box: {
+      r.check_keys(value, path, {"shape", "center", "half_extent", "velocity", "oscillation"});
+      obstacle.center = r.scene_vector(r.require(value, path, "center"), child(path, "center"));
+      const std::string extent_path = child(path, "half_extent");
+      obstacle.half_extent = r.scene_vector(r.require(value, path, "half_extent"), extent_path);
+      for (int a = 0; a < r.dimension(); ++a)
+        if (!(obstacle.half_extent[a] > 0.0f))
+          r.fail(element(extent_path, size_t(a)), "must be > 0, got " + format_number(obstacle.half_extent[a]));
+      break;
+    }
+    case ObstacleShape::Metaballs: {
+      r.check_keys(value, path, {"shape", "balls", "threshold", "velocity", "oscillation"});
+      const std::string balls_path = child(path, "balls");
+      const Json& balls = r.require(value, path, "balls");
+      if (!balls.is_array() || balls.empty()) r.fail(balls_path, "must be a non-empty array of {center, radius}");
+      glm::vec3 centroid(0.0f);
+      for (size_t i = 0; i < balls.size(); ++i) {
+        obstacle.balls.push_back(read_metaball(r, balls[i], element(balls_path, i)));
+        centroid += obstacle.balls.back().center;
+      }
+      // Ball centres are written in domain coordinates; the obstacle is placed at their centroid
+      // and the balls are stored relative to it, as the shaders and obstacles.cpp expect.
+      obstacle.center = centroid / float(obstacle.balls.size());
+      for (Metaball& ball : obstacle.balls) ball.center -= obstacle.center;
+      if (const Json* v = Reader::find(value, "threshold"))
+        obstacle.threshold = float(r.number_in(*v, child(path, "threshold"), 0.0, 1.0, true, true));
+      break;
+    }
+  }
+  if (const Json* v = Reader::find(value, "velocity"))
+    obstacle.velocity = r.scene_vector(*v, child(path, "velocity"), k_max_speed);
+  if (const Json* v = Reader::find(value, "oscillation")) read_oscillation(r, *v, child(path, "oscillation"), obstacle);
+  return obstacle;
+}
+
+GroundHill read_ground_hill(const Reader& r, const Json& value, const std::string& path) {
+  r.check_keys(value, path, {"center", "height", "width"});
+  GroundHill hill;
+  const glm::vec3 center = r.vector(r.require(value, path, "center"), child(path, "center"), 2);
+  hill.center = glm::vec2(center);
+  hill.height =
+      float(r.number_in(r.require(value, path, "height"), child(path, "height"), -k_max_length, k_max_length));
+  hill.width = float(r.number_in(r.require(value, path, "width"), child(path, "width"), 0.0, k_max_length, true));
+  return hill;
+}
+
+Camera read_camera(const Reader& r, const Json& value, const std::string& path) {
+  r.check_keys(value, path, {"position", "target", "fov_y_degrees"});
+  Camera camera;
+  camera.position = r.vector(r.require(value, path, "position"), child(path, "position"), 3, 10.0 * k_max_length);
+  camera.target = r.vector(r.require(value, path, "target"), child(path, "target"), 3, 10.0 * k_max_length);
+  if (camera.position == camera.target) r.fail(child(path, "target"), "must differ from position");
+  if (const Json* v = Reader::find(value, "fov_y_degrees"))
+    camera.fov_y_degrees = float(r.number_in(*v, child(path, "fov_y_degrees"), 1.0, 170.0));
+  return camera;
+}
+
+// Reads an optional array member, each element with `read_one`; at most `max_count` elements.
+template <typename T, typename ReadOne>
+std::vector<T> read_array(const Reader& r, const Json& object, const char* key, int max_count, ReadOne read_one) {
+  std::vector<T> items;
+  const Json* value = Reader::find(object, key);
+  if (!value) return items;
+  if (!value->is_array()) r.fail(key, std::string("must be an array, got ") + value->type_name());
+  if (int(value->size()) > max_count)
+    r.fail(key, "at most " + std::to_string(max_count) + " are supported, got " + std::to_string(value->size()));
+  for (size_t i = 0; i < value->size(); ++i) items.push_back(read_one(r, (*value)[i], element(key, i)));
+  return items;
+}
+
+// ---- Top level ---------------------------------------------------------------------------------
+
+void read_space(Reader& r, const Json& doc, Scene& scene) {
+  scene.dimension = r.integer_in(r.require(doc, "", "dimension"), "dimension", 2, 3);
+  if (const Json* v = Reader::find(doc, "mode"))
+    scene.mode = r.choice(*v, "mode", {"liquid", "shallow_water"}) == 0 ? SimulationMode::Liquid
+                                                                          : SimulationMode::ShallowWater;
+  if (scene.mode == SimulationMode::ShallowWater && scene.dimension != 2)
+    r.fail("mode", "shallow_water requires dimension 2, got " + std::to_string(scene.dimension));
+  const Json& domain = r.require(doc, "", "domain");
+  const glm::vec3 extent = r.vector(domain, "domain", scene.dimension, double(FLT_MAX));
+  for (int a = 0; a < scene.dimension; ++a)
+    if (!(extent[a] > 0.0f && extent[a] <= k_max_domain_extent))
+      r.fail(element("domain", size_t(a)), "must be in (0, " + format_number(k_max_domain_extent) + "], got " +
+                                               format_number(extent[a]));
+  scene.domain = extent;
+  r.set_space(scene.dimension, extent);
+}
+
+void read_physics(const Reader& r, const Json& doc, Scene& scene) {
+  const bool shallow = scene.mode == SimulationMode::ShallowWater;
+  if (const Json* v = Reader::find(doc, "grid_resolution"))
+    scene.grid_resolution = r.integer_in(*v, "grid_resolution", k_min_grid_resolution, k_max_grid_resolution);
+  scene.gravity = glm::vec3(0.0f, -9.81f, 0.0f);  // [0, -9.81] in 2D
+  if (const Json* v = Reader::find(doc, "gravity")) scene.gravity = r.scene_vector(*v, "gravity", k_max_gravity);
+  if (shallow && glm::dot(scene.gravity, scene.gravity) == 0.0f)
+    r.fail("gravity", "must be nonzero in shallow_water mode (|g| sets the wave speed)");
+
+  float smallest = scene.domain.x;
+  for (int a = 1; a < scene.dimension; ++a) smallest = std::min(smallest, scene.domain[a]);
+  const double spacing = r.number(r.require(doc, "", "particle_spacing"), "particle_spacing");
+  if (!(spacing > 0.0) || spacing > 0.5 * smallest)
+    r.fail("particle_spacing", "must be in (0, " + format_number(0.5 * smallest) +
+                                   "] (at most half the smallest domain extent), got " + format_number(spacing));
+  scene.particle_spacing = float(spacing);
+
+  if (const Json* v = Reader::find(doc, "density")) scene.density = float(r.number_in(*v, "density", 1.0, 1e5));
+  if (const Json* v = Reader::find(doc, "rest_density")) {
+    if (v->is_string()) {
+      const std::string text = v->get<std::string>();
+      if (text != "auto") r.fail("rest_density", "must be a number or \"auto\", got \"" + text + "\"");
+    } else {
+      scene.rest_density = float(r.number_in(*v, "rest_density", 1.0, 1e5));
+    }
+  }
+  // Shallow water derives k and gamma (P = g h), so giving them would be silently ignored.
+  for (const char* key : {"stiffness", "gamma"})
+    if (shallow && Reader::find(doc, key))
+      r.fail(key, "not used in shallow_water mode (k = |gravity| * rest_depth, gamma = 1)");
+  if (const Json* v = Reader::find(doc, "stiffness"))
+    scene.stiffness = float(r.number_in(*v, "stiffness", 0.0, 1e6, true));
+  if (const Json* v = Reader::find(doc, "gamma")) scene.gamma = float(r.number_in(*v, "gamma", 1.0, 10.0));
+  if (const Json* v = Reader::find(doc, "kernel_radius_cells"))
+    scene.kernel_radius_cells = float(r.number_in(*v, "kernel_radius_cells", 1.0, 8.0));
+  if (const Json* v = Reader::find(doc, "pic_ratio")) scene.pic_ratio = float(r.number_in(*v, "pic_ratio", 0.0, 1.0));
+  if (const Json* v = Reader::find(doc, "time_step")) scene.time_step = float(r.number_in(*v, "time_step", 1e-6, 0.1));
+  if (const Json* v = Reader::find(doc, "substeps")) scene.substeps = r.integer_in(*v, "substeps", 1, 1000);
+  if (const Json* v = Reader::find(doc, "wall_margin_cells"))
+    scene.wall_margin_cells = float(r.number_in(*v, "wall_margin_cells", 0.0, 4.0));
+  if (const Json* v = Reader::find(doc, "splat_format"))
+    scene.splat_format = r.choice(*v, "splat_format", {"rgba32f", "rgba16f"}) == 0 ? SplatFormat::Rgba32f
+                                                                                   : SplatFormat::Rgba16f;
+  if (const Json* v = Reader::find(doc, "rest_depth")) {
+    if (!shallow) r.fail("rest_depth", "only allowed in shallow_water mode");
+    scene.rest_depth = float(r.number_in(*v, "rest_depth", 0.0, k_max_length, true));
+  }
+}
+
+void read_contents(const Reader& r, const Json& doc, Scene& scene) {
+  const bool shallow = scene.mode == SimulationMode::ShallowWater;
+  scene.fluid_blocks = read_array<FluidBlock>(r, doc, "fluid_blocks", 1 << 20, read_fluid_block);
+  scene.emitters = read_array<Emitter>(r, doc, "emitters", gpu::k_max_emitters, read_emitter);
+  scene.obstacles = read_array<Obstacle>(r, doc, "obstacles", gpu::k_max_obstacles, read_obstacle);
+  size_t balls = 0;
+  for (const Obstacle& o : scene.obstacles) balls += o.balls.size();
+  if (balls > size_t(gpu::k_max_balls))
+    r.fail("obstacles", "at most " + std::to_string(gpu::k_max_balls) + " metaballs in all are supported, got " +
+                            std::to_string(balls));
+  if (!shallow && Reader::find(doc, "ground")) r.fail("ground", "only allowed in shallow_water mode");
+  scene.ground = read_array<GroundHill>(r, doc, "ground", gpu::k_max_ground, read_ground_hill);
+  if (const Json* v = Reader::find(doc, "camera")) {
+    if (scene.dimension != 3) r.fail("camera", "only allowed in 3D scenes (dimension 3)");
+    scene.camera = read_camera(r, *v, "camera");
+  }
+  if (scene.fluid_blocks.empty() && scene.emitters.empty())
+    r.fail("fluid_blocks", "the scene needs at least one fluid block or one emitter");
+}
+
+Scene read_scene(const Json& doc, const std::string& source_name) {
+  Reader r(source_name);
+  if (!doc.is_object()) r.fail("(document)", std::string("must be a JSON object, got ") + doc.type_name());
+  r.check_keys(doc, "",
+               {"name", "dimension", "mode", "domain", "grid_resolution", "gravity", "particle_spacing", "density",
+                "rest_density", "stiffness", "gamma", "kernel_radius_cells", "pic_ratio", "time_step", "substeps",
+                "wall_margin_cells", "splat_format", "rest_depth", "fluid_blocks", "emitters", "obstacles", "ground",
+                "camera"});
+  Scene scene;
+  scene.name = std::filesystem::path(source_name).stem().string();
+  if (const Json* v = Reader::find(doc, "name")) {
+    scene.name = r.string(*v, "name");
+    if (scene.name.empty()) r.fail("name", "must not be empty");
+  }
+  read_space(r, doc, scene);
+  read_physics(r, doc, scene);
+  read_contents(r, doc, scene);
+  return scene;
+}
+
+// ---- JSON syntax -------------------------------------------------------------------------------
+
+// Tracks where the parser is ("fluid_blocks[1].min") so a repeated key, which nlohmann would
+// silently resolve to its last value, is reported by path.
+class DuplicateKeyCheck {
+ public:
+  explicit DuplicateKeyCheck(std::string source) : source_(std::move(source)) {}
+
+  bool operator()(int, Json::parse_event_t event, Json& parsed) {
+    using Event = Json::parse_event_t;
+    switch (event) {
+      case Event::object_start:
+      case Event::array_start:
+        count_element();
+        frames_.push_back({event == Event::array_start, -1, {}, {}});
+        break;
+      case Event::object_end:
+      case Event::array_end:
+        frames_.pop_back();
+        break;
+      case Event::key: {
+        Frame& top = frames_.back();
+        top.key = parsed.get<std::string>();
+        if (!top.keys.insert(top.key).second) throw SceneError(source_ + ": " + path() + ": duplicate key");
+        break;
+      }
+      case Event::value:
+        count_element();
+        break;
+    }
+    return true;
+  }
+
+ private:
+  struct Frame {
+    bool array;
+    int index;
+    std::string key;
+    std::set<std::string> keys;
+  };
+
+  void count_element() {
+    if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
+  }
+
+  std::string path() const {
+    std::string text;
+    for (const Frame& f : frames_)
+      text = f.array ? element(text, size_t(std::max(f.index, 0))) : child(text, f.key);
+    return text;
+  }
+
+  std::string source_;
+  std::vector<Frame> frames_;
+};
+
+// 1-based line of byte offset `byte` (nlohmann's 1-based position of the offending character).
+int line_of(const std::string& text, size_t byte) {
+  const size_t end = std::min(text.size(), byte > 0 ? byte - 1 : 0);
+  return 1 + int(std::count(text.begin(), text.begin() + std::ptrdiff_t(end), '\n'));
+}
+
+// nlohmann's "[json.exception.parse_error.101] parse error at line 3, column 7: syntax error while
+// parsing value - invalid literal; ..." reduced to "while parsing value - invalid literal; ...".
+std::string syntax_reason(const std::string& what) {
+  std::string reason = what;
+  if (reason.rfind("[json.exception", 0) == 0)
+    if (const size_t bracket = reason.find("] "); bracket != std::string::npos) reason = reason.substr(bracket + 2);
+  if (const size_t column = reason.find("column "); column != std::string::npos)
+    if (const size_t colon = reason.find(": ", column); colon != std::string::npos) reason = reason.substr(colon + 2);
+  const std::string prefix = "syntax error ";
+  if (reason.rfind(prefix, 0) == 0) reason = reason.substr(prefix.size());
+  return reason;
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& json_text, const std::string& source_name) {
+  Json doc;
+  try {
+    doc = Json::parse(json_text, DuplicateKeyCheck(source_name));
+  } catch (const Json::parse_error& e) {
+    throw SceneError(source_name + ": line " + std::to_string(line_of(json_text, e.byte)) +
+                     ": JSON syntax error: " + syntax_reason(e.what()));
+  } catch (const Json::exception& e) {  // e.g. a number literal too large for a double
+    throw SceneError(source_name + ": JSON error: " + syntax_reason(e.what()));
+  }
+  return read_scene(doc, source_name);
+}
+
+Scene load_scene(const std::filesystem::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw SceneError(path.string() + ": cannot open scene file");
+  std::ostringstream text;
+  text << file.rdbuf();
+  if (file.bad()) throw SceneError(path.string() + ": cannot read scene file");
+  return parse_scene(text.str(), path.string());
+}
+
+}  // namespace liquid

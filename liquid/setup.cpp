@@ -1,0 +1,272 @@
+#include "liquid/setup.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace liquid {
+namespace {
+
+constexpr int k_min_grid_cells = 8;
+// floor((max - min) / s + epsilon): a block whose extent is a whole number of spacings gets that
+// many particles even when the float division lands just below the integer.
+constexpr double k_lattice_epsilon = 1e-4;
+// Sub-cell offsets per axis averaged by the automatic rest density.
+constexpr int k_rest_density_offsets = 4;
+// Past this many lattice spacings per kernel radius the lattice sum equals the kernel integral to
+// far better than float precision, so the integral is used instead of a large sum.
+constexpr double k_max_summed_ratio = 16.0;
+// CPU memory guard: initial particles are held in two vec4 arrays (32 bytes each).
+constexpr std::int64_t k_max_initial_particles = std::int64_t(1) << 26;
+
+constexpr double k_pi = 3.14159265358979323846;
+
+std::string format_number(double value) {
+  if (value == std::floor(value) && std::abs(value) < 1e15) return std::to_string(std::int64_t(value));
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+[[noreturn]] void fail(const Scene& scene, const std::string& reason) { throw SceneError(scene.name + ": " + reason); }
+
+// The chapter's kernel w(d, r) = (1 - d^2/r^2)^3 for d < r, from the squared distance.
+double kernel_weight(double distance_squared, double radius) {
+  const double q = 1.0 - distance_squared / (radius * radius);
+  return q > 0.0 ? q * q * q : 0.0;
+}
+
+// Particles per axis of a block's lattice (z = 1 in 2D).
+glm::ivec3 lattice_counts(const FluidBlock& block, int dimension, double spacing) {
+  glm::ivec3 counts(1);
+  for (int a = 0; a < dimension; ++a) {
+    const double extent = double(block.max[a]) - double(block.min[a]);
+    counts[a] = int(std::min(std::floor(extent / spacing + k_lattice_epsilon), 1e9));
+  }
+  return counts;
+}
+
+std::int64_t lattice_size(glm::ivec3 counts) { return std::int64_t(counts.x) * counts.y * counts.z; }
+
+// The smallest power of two >= ceil(sqrt(n)) (at least 1) by ceil(n / W).
+glm::i64vec2 particle_texture_size(std::int64_t capacity) {
+  std::int64_t side = std::int64_t(std::ceil(std::sqrt(double(capacity))));
+  while (side * side < capacity) ++side;  // guard the square root's rounding
+  std::int64_t width = 1;
+  while (width < side) width *= 2;
+  return {width, std::max<std::int64_t>(1, (capacity + width - 1) / width)};
+}
+
+std::string describe_grid(glm::ivec3 cells) {
+  return std::to_string(cells.x) + " x " + std::to_string(cells.y) + " x " + std::to_string(cells.z);
+}
+
+// Chooses the cells per axis and the cell size; the longest axis gets the scene's resolution or
+// round(N^(1/d)) (section 7).
+void choose_grid(const Scene& scene, int capacity, SimulationSetup& setup) {
+  const int d = scene.dimension;
+  double longest = 0.0;
+  for (int a = 0; a < d; ++a) longest = std::max(longest, double(scene.domain[a]));
+  const int longest_cells = scene.grid_resolution
+                                ? *scene.grid_resolution
+                                : std::max(k_min_grid_cells, int(std::lround(std::pow(double(capacity), 1.0 / d))));
+  const double h = longest / longest_cells;
+  setup.grid_cells = glm::ivec3(1);
+  for (int a = 0; a < d; ++a)
+    setup.grid_cells[a] = int(std::max(1.0, std::min(std::round(double(scene.domain[a]) / h), 1e9)));
+  setup.cell_size = float(h);
+  // Cells are square/cubic, so the box is snapped to whole cells (the shorter axes may grow or
+  // shrink by up to half a cell). In 2D the z extent is the single cell's thickness (unused).
+  setup.domain = glm::vec3(setup.grid_cells) * float(h);
+}
+
+void check_grid_limits(const Scene& scene, const SimulationSetup& setup, const DeviceLimits& limits) {
+  const glm::ivec3 cells = setup.grid_cells;
+  const bool three_d = scene.dimension == 3;
+  const int per_axis = three_d ? limits.max_image_dimension_3d : limits.max_image_dimension_2d;
+  const char* limit_name = three_d ? "max_image_dimension_3d" : "max_image_dimension_2d";
+  for (int a = 0; a < scene.dimension; ++a)
+    if (cells[a] > per_axis)
+      fail(scene, "grid " + describe_grid(cells) + " exceeds the device limit of " + std::to_string(per_axis) +
+                      " texels per axis (" + limit_name + ")");
+  if (three_d && cells.z > limits.max_framebuffer_layers)
+    fail(scene, "grid " + describe_grid(cells) + " needs " + std::to_string(cells.z) +
+                    " framebuffer layers, past the device limit of " + std::to_string(limits.max_framebuffer_layers) +
+                    " (max_framebuffer_layers)");
+}
+
+// Fills one block's lattice: min + (i + 0.5) s per axis, no jitter, computed in double. A block
+// whose extent is a whole number of spacings is filled symmetrically, so mirrored blocks give
+// mirrored particles. Fails if the lattice pokes out of the snapped domain.
+void fill_block(const Scene& scene, size_t index, glm::ivec3 counts, SimulationSetup& setup) {
+  const FluidBlock& block = scene.fluid_blocks[index];
+  const double s = scene.particle_spacing;
+  for (int a = 0; a < scene.dimension; ++a) {
+    const double first = double(block.min[a]) + 0.5 * s, last = double(block.min[a]) + (counts[a] - 0.5) * s;
+    if (first < 0.0 || last > double(setup.domain[a]))
+      fail(scene, "fluid_blocks[" + std::to_string(index) + "]: particles span [" + format_number(first) + ", " +
+                      format_number(last) + "] m on axis " + std::to_string(a) +
+                      ", outside the domain snapped to whole cells [0, " + format_number(setup.domain[a]) + "] m");
+  }
+  const glm::vec4 velocity(block.velocity.x, block.velocity.y, scene.dimension == 3 ? block.velocity.z : 0.0f, 0.0f);
+  for (int k = 0; k < counts.z; ++k)
+    for (int j = 0; j < counts.y; ++j)
+      for (int i = 0; i < counts.x; ++i) {
+        const double x = double(block.min.x) + (i + 0.5) * s;
+        const double y = double(block.min.y) + (j + 0.5) * s;
+        const double z = scene.dimension == 3 ? double(block.min.z) + (k + 0.5) * s : 0.0;
+        setup.positions.emplace_back(float(x), float(y), float(z), 1.0f);
+        setup.velocities.push_back(velocity);
+      }
+}
+
+// Average over sub-cell offsets of sum_p w(|x_p - x_cell| / h, r) for an infinite lattice of
+// spacing `spacing_cells` (in cells): the summed weight a cell sees inside uniform liquid.
+double lattice_weight_sum(int dimension, double spacing_cells, double radius_cells) {
+  if (radius_cells / spacing_cells > k_max_summed_ratio)
+    return kernel_integral_cells(dimension, radius_cells) / std::pow(spacing_cells, dimension);
+  const int reach = int(std::ceil(radius_cells / spacing_cells)) + 1;
+  const int offsets_z = dimension == 3 ? k_rest_density_offsets : 1;
+  double total = 0.0;
+  int samples = 0;
+  for (int oz = 0; oz < offsets_z; ++oz)
+    for (int oy = 0; oy < k_rest_density_offsets; ++oy)
+      for (int ox = 0; ox < k_rest_density_offsets; ++ox) {
+        const glm::dvec3 offset = (glm::dvec3(ox, oy, oz) + 0.5) / double(k_rest_density_offsets);
+        const int kz_reach = dimension == 3 ? reach : 0;
+        double sum = 0.0;
+        for (int kz = -kz_reach; kz <= kz_reach; ++kz)
+          for (int ky = -reach; ky <= reach; ++ky)
+            for (int kx = -reach; kx <= reach; ++kx) {
+              const double dx = (kx + offset.x) * spacing_cells;
+              const double dy = (ky + offset.y) * spacing_cells;
+              const double dz = dimension == 3 ? (kz + offset.z) * spacing_cells : 0.0;
+              sum += kernel_weight(dx * dx + dy * dy + dz * dz, radius_cells);
+            }
+        total += sum;
+        ++samples;
+      }
+  return total / samples;
+}
+
+// Counts the initial particles and the capacity, failing on an empty block or too many particles.
+std::vector<glm::ivec3> count_particles(const Scene& scene, std::int64_t& initial, std::int64_t& capacity) {
+  std::vector<glm::ivec3> counts;
+  initial = 0;
+  for (size_t i = 0; i < scene.fluid_blocks.size(); ++i) {
+    counts.push_back(lattice_counts(scene.fluid_blocks[i], scene.dimension, scene.particle_spacing));
+    const std::int64_t n = lattice_size(counts.back());
+    if (n <= 0)
+      fail(scene, "fluid_blocks[" + std::to_string(i) + "]: produces no particle at spacing " +
+                      format_number(scene.particle_spacing) + " m (the block is thinner than one spacing)");
+    initial += n;
+  }
+  if (initial > k_max_initial_particles)
+    fail(scene, "fluid blocks hold " + std::to_string(initial) + " particles, more than the supported " +
+                    std::to_string(k_max_initial_particles) + "; increase particle_spacing");
+  capacity = initial;
+  for (const Emitter& e : scene.emitters) capacity += std::max(0, e.capacity);
+  if (capacity <= 0) fail(scene, "the scene has no particle: add a fluid block or an emitter");
+  if (capacity > std::numeric_limits<int>::max())
+    fail(scene, "capacity of " + std::to_string(capacity) + " particles does not fit a 32-bit index");
+  return counts;
+}
+
+void check_emitters(const Scene& scene, const SimulationSetup& setup) {
+  for (size_t i = 0; i < scene.emitters.size(); ++i)
+    for (int a = 0; a < scene.dimension; ++a)
+      if (scene.emitters[i].position[a] < 0.0f || scene.emitters[i].position[a] > setup.domain[a])
+        fail(scene, "emitters[" + std::to_string(i) + "]: position is outside the domain snapped to whole cells (" +
+                        format_number(setup.domain[a]) + " m on axis " + std::to_string(a) + ")");
+}
+
+}  // namespace
+
+double kernel_integral_cells(int dimension, double radius_cells) {
+  if (dimension == 2) return k_pi * radius_cells * radius_cells / 4.0;
+  if (dimension == 3) return 64.0 * k_pi * radius_cells * radius_cells * radius_cells / 315.0;
+  throw std::invalid_argument("kernel_integral_cells: dimension must be 2 or 3, got " + std::to_string(dimension));
+}
+
+SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
+  if (scene.dimension != 2 && scene.dimension != 3)
+    fail(scene, "dimension must be 2 or 3, got " + std::to_string(scene.dimension));
+  SimulationSetup setup;
+  setup.scene = scene;
+  setup.dimension = scene.dimension;
+  const int d = scene.dimension;
+
+  std::int64_t initial = 0, capacity = 0;
+  const std::vector<glm::ivec3> counts = count_particles(scene, initial, capacity);
+  const glm::i64vec2 texture = particle_texture_size(capacity);
+  if (texture.x > limits.max_image_dimension_2d || texture.y > limits.max_image_dimension_2d)
+    fail(scene, "capacity of " + std::to_string(capacity) + " particles needs a " + std::to_string(texture.x) + " x " +
+                    std::to_string(texture.y) + " particle texture, past the device limit of " +
+                    std::to_string(limits.max_image_dimension_2d) + " texels per axis (max_image_dimension_2d)");
+  setup.initial_particles = int(initial);
+  setup.capacity = int(capacity);
+  setup.particle_texture = glm::ivec2(texture);
+
+  choose_grid(scene, setup.capacity, setup);
+  check_grid_limits(scene, setup, limits);
+  const double h = setup.cell_size;
+  const double spacing = scene.particle_spacing;
+  const double radius = scene.kernel_radius_cells;
+  // Farther apart than the kernel radius, no particle would see another: no pressure at all.
+  if (spacing >= radius * h)
+    fail(scene, "particle_spacing " + format_number(spacing) + " m is not below the kernel radius (" +
+                    format_number(radius) + " cells of " + format_number(h) +
+                    " m); lower particle_spacing or grid_resolution");
+  check_emitters(scene, setup);
+
+  setup.positions.reserve(size_t(initial));
+  setup.velocities.reserve(size_t(initial));
+  for (size_t i = 0; i < scene.fluid_blocks.size(); ++i) fill_block(scene, i, counts[i], setup);
+
+  const double mass = scene.density * std::pow(spacing, d);
+  const double scale = mass / (std::pow(h, d) * kernel_integral_cells(d, radius));
+  setup.particle_mass = float(mass);
+  setup.density_scale = float(scale);
+  setup.rest_density = scene.rest_density ? *scene.rest_density
+                                          : float(scale * lattice_weight_sum(d, spacing / h, radius));
+
+  if (scene.mode == SimulationMode::ShallowWater) {
+    // P = k rho / rho0 = g * rest_depth * rho / rho0 = g * (water height); the plane is horizontal.
+    setup.gamma = 1.0f;
+    setup.stiffness = glm::length(scene.gravity) * scene.rest_depth;
+    setup.gravity = glm::vec3(0.0f);
+  } else {
+    setup.gamma = scene.gamma;
+    setup.stiffness = scene.stiffness;
+    setup.gravity = scene.gravity;  // z is 0 in 2D (the parser fills it so)
+  }
+  return setup;
+}
+
+double emitter_rate(const Emitter& emitter, int dimension, float particle_spacing) {
+  const double speed = glm::length(glm::dvec3(emitter.velocity));
+  const double r = emitter.radius;
+  const double s = particle_spacing;
+  return dimension == 3 ? k_pi * r * r * speed / (s * s * s) : 2.0 * r * speed / (s * s);
+}
+
+int emitted_by(const Emitter& emitter, int dimension, float particle_spacing, double time) {
+  const double elapsed = std::min(time, double(emitter.stop_time)) - double(emitter.start_time);
+  if (!(elapsed > 0.0)) return 0;
+  const double count = std::floor(emitter_rate(emitter, dimension, particle_spacing) * elapsed);
+  return int(std::clamp(count, 0.0, double(emitter.capacity)));
+}
+
+float ground_height(const Scene& scene, glm::vec2 xy) {
+  double height = 0.0;
+  for (const GroundHill& hill : scene.ground) {
+    const glm::vec2 d = xy - hill.center;
+    height += double(hill.height) * std::exp(-double(glm::dot(d, d)) / (2.0 * double(hill.width) * hill.width));
+  }
+  return float(height);
+}
+
+}  // namespace liquid

@@ -1,0 +1,28 @@
+// The solver's persistent GPU state: particle positions and velocities (RGBA32F, ping-ponged; a
+// W x H texture holds up to W * H particles, texels past the active count are inactive) and the
+// grids of the last step (splat, updated velocity, density). The graph imports these every frame.
+#pragma once
+
+#include "engine/vk/image.h"
+#include "liquid/setup.h"
+
+#include <array>
+
+namespace engine::vk {
+class Context;
+}
+
+namespace liquid {
+
+struct LiquidState {
+  LiquidState(engine::vk::Context& context, const SimulationSetup& setup, VkFormat splat_format);
+
+  std::array<engine::vk::Image, 2> positions;   // xyz (m), w = 1 active
+  std::array<engine::vk::Image, 2> velocities;  // xyz (m/s)
+  engine::vk::Image splat;                      // (sum w u, sum w)
+  engine::vk::Image grid_velocity;              // (u', fluid flag)
+  engine::vk::Image density;                    // rho / rho0
+  int current = 0;                              // which of the pair holds the latest particles
+};
+
+}  // namespace liquid

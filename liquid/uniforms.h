@@ -1,0 +1,44 @@
+// Fills the solver's per-step uniform block from the setup and the step's inputs (time, counts,
+// obstacle poses, brushes, emitter ranges). Pure CPU code.
+#pragma once
+
+#include "liquid/gpu_types.h"
+#include "liquid/obstacles.h"
+#include "liquid/setup.h"
+
+#include <vector>
+
+namespace liquid {
+
+// An external force brush (the paper's f_ext): an acceleration (m/s^2) at `position` falling
+// smoothly to zero at `radius`. A host maps mouse drags or gameplay forces to these.
+struct ForceBrush {
+  glm::vec3 position{0.0f};      // m
+  float radius = 0.1f;           // m
+  glm::vec3 acceleration{0.0f};  // m/s^2
+};
+
+struct EmissionRange {
+  int emitter = 0;  // index into the scene's emitters
+  int begin = 0;    // first particle index emitted this step
+  int end = 0;      // one past the last
+};
+
+struct StepInputs {
+  float dt = 0.0f;          // s
+  int active_before = 0;    // particles alive at the start of the step
+  int active_after = 0;     // after this step's emission
+  std::vector<ObstaclePose> obstacle_poses;  // one per scene obstacle, at the end of the step
+  std::vector<ForceBrush> brushes;
+  std::vector<EmissionRange> emissions;
+};
+
+// Throws std::invalid_argument when the scene has more obstacles, metaballs, hills, brushes or
+// emitters than the uniform block holds (limits in gpu_types.h).
+gpu::SolverUniforms make_uniforms(const SimulationSetup& setup, const StepInputs& step);
+
+// Wall clamp distance (m) and obstacle density band (m) the solver uses for this setup.
+float wall_margin(const SimulationSetup& setup);
+float obstacle_band(const SimulationSetup& setup);
+
+}  // namespace liquid

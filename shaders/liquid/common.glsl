@@ -1,0 +1,182 @@
+// Shared by the solver's passes: the per-step uniform block (mirrored by liquid/gpu_types.h, std140)
+// and the grid, obstacle and force helpers. DIM is 2 or 3 (compile-time define).
+#ifndef LIQUID_COMMON_GLSL
+#define LIQUID_COMMON_GLSL
+
+#define MAX_OBSTACLES 8
+#define MAX_BALLS 32
+#define MAX_GROUND 16
+#define MAX_BRUSHES 4
+#define MAX_EMITTERS 4
+
+#define OBSTACLE_SPHERE 0
+#define OBSTACLE_BOX 1
+#define OBSTACLE_METABALLS 2
+
+struct Obstacle {
+  vec4 center_kind;  // xyz centre (m) at the end of the step, w kind
+  vec4 size;         // sphere: x radius; box: xyz half extents; metaballs: x threshold, y first ball, z count
+  vec4 velocity;     // xyz (m/s)
+};
+
+struct Brush {
+  vec4 position_radius;  // xyz centre (m), w radius (m)
+  vec4 acceleration;     // xyz (m/s^2) at the centre, falling smoothly to zero at the radius
+};
+
+struct EmitterRange {
+  vec4 position_radius;  // nozzle centre (m), w radius (m)
+  vec4 velocity;         // xyz (m/s)
+  ivec4 range;           // x first particle index emitted this step, y one past the last
+};
+
+layout(std140, set = 0, binding = 0) uniform SolverUniforms {
+  vec4 domain_h;      // xyz domain size (m), w cell size h (m)
+  ivec4 grid_dim;     // xyz cells, w dimension
+  vec4 gravity_dt;    // xyz gravity (m/s^2), w time step (s)
+  vec4 pressure;      // x stiffness k (m^2/s^2), y gamma, z rest density rho0, w density scale (kg/m^3 per weight)
+  vec4 kernel;        // x splat radius r (cells), y PIC ratio, z wall margin (m), w obstacle band (m)
+  ivec4 counts;       // x particle texture width, y active before the step, z active after emission, w obstacles
+  ivec4 counts2;      // x ground hills, y brushes, z emitters, w pressure form (0 clamped Tait, 1 printed: shallow water, 'chapter')
+  vec4 shallow;       // x rest depth (m)
+  Obstacle obstacles[MAX_OBSTACLES];
+  vec4 balls[MAX_BALLS];   // metaballs: xyz centre relative to the obstacle centre (m), w radius (m)
+  vec4 ground[MAX_GROUND];  // shallow water hills: xy centre (m), z height (m), w width (m)
+  Brush brushes[MAX_BRUSHES];
+  EmitterRange emitters[MAX_EMITTERS];
+} u;
+
+#if DIM == 3
+#define GRID_SAMPLER sampler3D
+#define GRID_COORD ivec3
+#else
+#define GRID_SAMPLER sampler2D
+#define GRID_COORD ivec2
+#endif
+
+ivec3 grid_cells() { return u.grid_dim.xyz; }
+float cell_size() { return u.domain_h.w; }
+
+// World position (m) of the centre of cell c.
+vec3 cell_center(ivec3 c) {
+  vec3 p = (vec3(c) + 0.5) * cell_size();
+#if DIM == 2
+  p.z = 0.0;
+#endif
+  return p;
+}
+
+vec4 fetch_grid(GRID_SAMPLER s, ivec3 c) {
+  c = clamp(c, ivec3(0), grid_cells() - 1);
+#if DIM == 3
+  return texelFetch(s, c, 0);
+#else
+  return texelFetch(s, c.xy, 0);
+#endif
+}
+
+// ---- Obstacles (section 6): analytic signed distances, negative inside -------------------------
+
+float sd_box(vec3 p, vec3 half_extent) {
+  vec3 q = abs(p) - half_extent;
+  return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0);
+}
+
+// Metaballs: field F = sum (1 - d^2/R^2)^2 (inside R); surface at F = threshold. The distance is
+// the first-order estimate (threshold - F) / |grad F|, exact enough near the surface.
+float sd_metaballs(vec3 p, Obstacle o) {
+  float field = 0.0;
+  vec3 gradient = vec3(0.0);
+  int first = int(o.size.y), count = int(o.size.z);
+  float reach = 0.0;
+  for (int i = 0; i < count; ++i) {
+    vec4 ball = u.balls[first + i];
+    vec3 d = p - ball.xyz;
+    float q = dot(d, d) / (ball.w * ball.w);
+    reach = max(reach, length(ball.xyz) + ball.w);
+    if (q < 1.0) {
+      field += (1.0 - q) * (1.0 - q);
+      gradient += -4.0 * (1.0 - q) * d / (ball.w * ball.w);
+    }
+  }
+  float threshold = o.size.x;
+  if (field <= 0.0) return max(length(p) - reach, 1e-3) + 1e-3;  // outside every ball
+  return (threshold - field) / max(length(gradient), 1e-4);
+}
+
+float obstacle_distance(int index, vec3 p) {
+  Obstacle o = u.obstacles[index];
+  vec3 local = p - o.center_kind.xyz;
+#if DIM == 2
+  local.z = 0.0;
+#endif
+  int kind = int(o.center_kind.w);
+  if (kind == OBSTACLE_SPHERE) return length(local) - o.size.x;
+  if (kind == OBSTACLE_BOX) return sd_box(local, o.size.xyz);
+  return sd_metaballs(local, o);
+}
+
+// Outward normal by central differences (works for every kind, metaballs included).
+vec3 obstacle_normal(int index, vec3 p) {
+  float e = 0.25 * cell_size();
+  vec3 n = vec3(obstacle_distance(index, p + vec3(e, 0, 0)) - obstacle_distance(index, p - vec3(e, 0, 0)),
+                obstacle_distance(index, p + vec3(0, e, 0)) - obstacle_distance(index, p - vec3(0, e, 0)), 0.0);
+#if DIM == 3
+  n.z = obstacle_distance(index, p + vec3(0, 0, e)) - obstacle_distance(index, p - vec3(0, 0, e));
+#endif
+  float len = length(n);
+  return len > 1e-12 ? n / len : vec3(0.0, 1.0, 0.0);
+}
+
+// Artificial obstacle density (section 6): rho0 at the surface, rising linearly inside and
+// falling to zero one band outside. Added to the fluid density before the pressure, so the
+// pressure gradient pushes liquid away from the obstacle.
+float obstacle_density(vec3 p) {
+  float band = u.kernel.w;
+  float total = 0.0;
+  for (int i = 0; i < u.counts.w; ++i) {
+    float d = obstacle_distance(i, p);
+    total += clamp(1.0 - d / band, 0.0, 2.0);
+  }
+  return total * u.pressure.z;
+}
+
+// Shallow water (section 6, figure 4): ground height b(x, y) in metres; read as extra density
+// rho0 * b / rest_depth so that P = g (h + b).
+float ground_height(vec2 p) {
+  float b = 0.0;
+  for (int i = 0; i < u.counts2.x; ++i) {
+    vec4 hill = u.ground[i];
+    vec2 d = p - hill.xy;
+    b += hill.z * exp(-dot(d, d) / (2.0 * hill.w * hill.w));
+  }
+  return b;
+}
+
+// External forces f_ext (eq. 2): brushes with a smooth (1 - d^2/R^2)^2 falloff.
+vec3 external_acceleration(vec3 p) {
+  vec3 a = vec3(0.0);
+  for (int i = 0; i < u.counts2.y; ++i) {
+    Brush b = u.brushes[i];
+    vec3 d = p - b.position_radius.xyz;
+#if DIM == 2
+    d.z = 0.0;
+#endif
+    float q = dot(d, d) / (b.position_radius.w * b.position_radius.w);
+    if (q < 1.0) a += b.acceleration.xyz * (1.0 - q) * (1.0 - q);
+  }
+  return a;
+}
+
+// Keeps a position inside the domain, `margin` metres from every wall.
+vec3 clamp_to_domain(vec3 p) {
+  vec3 lo = vec3(u.kernel.z);
+  vec3 hi = u.domain_h.xyz - u.kernel.z;
+  p = clamp(p, lo, hi);
+#if DIM == 2
+  p.z = 0.0;
+#endif
+  return p;
+}
+
+#endif

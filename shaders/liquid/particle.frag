@@ -1,0 +1,153 @@
+#version 450
+// Particle pass (section 5): one fragment per particle texel, two render targets (position,
+// velocity). Velocity by the PIC/FLIP blend
+//   u_p' = r u'(x_p) + (1 - r) (u_p + u'(x_p) - u(x_p))
+// where u is the splatted grid velocity and u' the grid pass's result; position by RK2 (midpoint)
+// through u', clamped inside the domain at each stage:
+//   x_mid = x_p + dt/2 u'(x_p),  x_p' = x_p + dt u'(x_mid)
+// (the chapter's printed formula drops x_p from both lines). Texels past the active count are
+// inactive (w = 0); texels in an emitter's range this step are spawned at its nozzle.
+#extension GL_GOOGLE_include_directive : require
+#include "liquid/common.glsl"
+
+layout(set = 0, binding = 1) uniform sampler2D u_positions;
+layout(set = 0, binding = 2) uniform sampler2D u_velocities;
+layout(set = 0, binding = 3) uniform GRID_SAMPLER u_splat;     // (sum w u, sum w)
+layout(set = 0, binding = 4) uniform GRID_SAMPLER u_velocity;  // (u', fluid flag)
+
+layout(location = 0) in vec2 v_uv;
+layout(location = 0) out vec4 out_position;
+layout(location = 1) out vec4 out_velocity;
+
+const float k_fluid_epsilon = 1e-6;
+
+// Trilinear (bilinear in 2D) interpolation between cell centres over the cells that hold liquid,
+// so empty cells (no splatted velocity) do not drag the particle. Returns u' and, optionally, u.
+void sample_grid(vec3 x, bool with_splatted, out vec3 u_new, out vec3 u_old) {
+  vec3 g = x / cell_size() - 0.5;
+  ivec3 base = ivec3(floor(g));
+  vec3 f = g - vec3(base);
+  u_new = vec3(0.0);
+  u_old = vec3(0.0);
+  float total = 0.0;
+#if DIM == 3
+  const int corners = 8;
+#else
+  const int corners = 4;
+  f.z = 0.0;
+  base.z = 0;
+#endif
+  for (int i = 0; i < corners; ++i) {
+    ivec3 o = ivec3(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+    vec3 t = mix(1.0 - f, f, vec3(o));
+    float weight = t.x * t.y * t.z;
+    if (weight <= 0.0) continue;
+    vec4 cell = fetch_grid(u_velocity, base + o);
+    if (cell.a < 0.5) continue;  // no liquid in this cell
+    total += weight;
+    u_new += weight * cell.rgb;
+    if (with_splatted) {
+      vec4 s = fetch_grid(u_splat, base + o);
+      u_old += weight * s.rgb / max(s.a, k_fluid_epsilon);
+    }
+  }
+  if (total > 0.0) {
+    u_new /= total;
+    u_old /= total;
+  }
+}
+
+vec3 grid_velocity(vec3 x) {
+  vec3 u_new, unused;
+  sample_grid(x, false, u_new, unused);
+  return u_new;
+}
+
+uint hash(uint x) {
+  x ^= x >> 16;
+  x *= 0x7feb352dU;
+  x ^= x >> 15;
+  x *= 0x846ca68bU;
+  x ^= x >> 16;
+  return x;
+}
+float random01(uint seed) { return float(hash(seed) >> 8) * (1.0 / 16777216.0); }
+
+// A new particle of an emitter: a random point of the nozzle disc (segment in 2D), pushed a
+// random fraction of one step along the jet so a step's particles do not stack in one plane.
+void emit(int index, EmitterRange e) {
+  vec3 axis = normalize(e.velocity.xyz);
+  uint seed = uint(index) * 9781U + 12345U;
+  float along = random01(seed + 1U) * length(e.velocity.xyz) * u.gravity_dt.w;
+#if DIM == 3
+  vec3 side = normalize(abs(axis.y) < 0.9 ? cross(axis, vec3(0, 1, 0)) : cross(axis, vec3(1, 0, 0)));
+  vec3 up = cross(axis, side);
+  float radius = e.position_radius.w * sqrt(random01(seed + 2U));
+  float angle = 6.2831853 * random01(seed + 3U);
+  vec3 offset = radius * (cos(angle) * side + sin(angle) * up);
+#else
+  vec3 side = vec3(-axis.y, axis.x, 0.0);
+  vec3 offset = side * e.position_radius.w * (2.0 * random01(seed + 2U) - 1.0);
+#endif
+  out_position = vec4(clamp_to_domain(e.position_radius.xyz + offset + axis * along), 1.0);
+  out_velocity = vec4(e.velocity.xyz, 0.0);
+}
+
+void main() {
+  ivec2 texel = ivec2(gl_FragCoord.xy);
+  int index = texel.y * u.counts.x + texel.x;
+  if (index >= u.counts.z) {  // inactive texel
+    out_position = vec4(0.0);
+    out_velocity = vec4(0.0);
+    return;
+  }
+  if (index >= u.counts.y) {  // emitted this step
+    for (int i = 0; i < u.counts2.z; ++i)
+      if (index >= u.emitters[i].range.x && index < u.emitters[i].range.y) {
+        emit(index, u.emitters[i]);
+        return;
+      }
+    out_position = vec4(0.0);
+    out_velocity = vec4(0.0);
+    return;
+  }
+
+  float dt = u.gravity_dt.w;
+  float pic = u.kernel.y;
+  vec3 x = texelFetch(u_positions, texel, 0).xyz;
+  vec3 v = texelFetch(u_velocities, texel, 0).xyz;
+
+  // Section 5.1: PIC/FLIP blend.
+  vec3 u_new, u_old;
+  sample_grid(x, true, u_new, u_old);
+  v = pic * u_new + (1.0 - pic) * (v + u_new - u_old);
+
+  // Section 5.2: RK2 (midpoint) through the updated grid, clamped inside the domain at each stage.
+  vec3 x_mid = clamp_to_domain(x + 0.5 * dt * u_new);
+  vec3 x_new = clamp_to_domain(x + dt * grid_velocity(x_mid));
+
+  // Obstacles: a particle that ended inside (or within half a cell of) an obstacle is moved back
+  // to its surface and loses its velocity into it, relative to the obstacle.
+  float skin = 0.5 * cell_size();
+  for (int pass = 0; pass < 2; ++pass)
+    for (int i = 0; i < u.counts.w; ++i) {
+      float d = obstacle_distance(i, x_new);
+      if (d >= skin) continue;
+      vec3 normal = obstacle_normal(i, x_new);
+      x_new = clamp_to_domain(x_new + (skin - d) * normal);
+      float into = dot(v - u.obstacles[i].velocity.xyz, normal);
+      if (into < 0.0) v -= into * normal;
+    }
+
+  // Walls: no velocity into a wall the particle was clamped against.
+  vec3 lo = vec3(u.kernel.z), hi = u.domain_h.xyz - u.kernel.z;
+  for (int a = 0; a < DIM; ++a) {
+    if (x_new[a] <= lo[a] && v[a] < 0.0) v[a] = 0.0;
+    if (x_new[a] >= hi[a] && v[a] > 0.0) v[a] = 0.0;
+  }
+#if DIM == 2
+  v.z = 0.0;
+#endif
+  out_position = vec4(x_new, 1.0);
+  out_velocity = vec4(v, 0.0);
+}

@@ -1,0 +1,45 @@
+#version 450
+// Splat pass (section 3), vertex stage: one point per active particle, fetched from the particle
+// textures by gl_VertexIndex (no vertex buffer). In 3D each particle is drawn once per slice it
+// can touch (instance i = slice offset) and routed to that slice with gl_Layer; the point size is
+// the kernel's chord in that slice, so the rasterizer visits exactly the cells within radius r.
+#if DIM == 3
+#extension GL_ARB_shader_viewport_layer_array : require
+#endif
+#extension GL_GOOGLE_include_directive : require
+#include "liquid/common.glsl"
+
+layout(set = 0, binding = 1) uniform sampler2D u_positions;
+layout(set = 0, binding = 2) uniform sampler2D u_velocities;
+
+layout(location = 0) flat out vec2 v_center;      // particle in grid units (cells), xy
+layout(location = 1) flat out float v_dz2;        // squared slice offset (cells^2), 0 in 2D
+layout(location = 2) flat out vec3 v_velocity;    // m/s
+
+void main() {
+  int width = u.counts.x;
+  ivec2 texel = ivec2(gl_VertexIndex % width, gl_VertexIndex / width);
+  vec3 position = texelFetch(u_positions, texel, 0).xyz;
+  v_velocity = texelFetch(u_velocities, texel, 0).xyz;
+  vec3 g = position / cell_size();  // cell c spans [c, c + 1), centre c + 0.5
+  float r = u.kernel.x;
+  float chord = r;
+  v_dz2 = 0.0;
+#if DIM == 3
+  int layer = int(floor(g.z)) + gl_InstanceIndex - int(ceil(r));
+  float dz = float(layer) + 0.5 - g.z;
+  if (layer < 0 || layer >= u.grid_dim.z || abs(dz) >= r) {
+    gl_Position = vec4(-4.0, -4.0, 0.5, 1.0);  // outside the clip volume: the point is dropped
+    gl_PointSize = 1.0;
+    v_center = vec2(0.0);
+    return;
+  }
+  gl_Layer = layer;
+  v_dz2 = dz * dz;
+  chord = sqrt(r * r - v_dz2);
+#endif
+  v_center = g.xy;
+  gl_Position = vec4(g.xy / vec2(u.grid_dim.xy) * 2.0 - 1.0, 0.5, 1.0);
+  // Pixel centres within `chord` of the particle on both axes are covered.
+  gl_PointSize = 2.0 * chord;
+}

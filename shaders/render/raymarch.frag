@@ -1,0 +1,248 @@
+#version 450
+// Raymarch of the density volume (section 7, figure 3): the liquid surface is where rho / rho0
+// crosses the iso level. Rays skip empty bricks with a 3D DDA over the occupancy volume, march
+// occupied bricks in sub-cell steps, refine the crossing by bisection, and take the normal from the
+// density gradient. Shading: Fresnel reflection of a sky, refraction onto the floor tinted by
+// Beer-Lambert absorption over the liquid's thickness, and a sun highlight. Obstacles (the solver's
+// analytic shapes) and a tiled floor are ray traced in the same pass. Writes colour and depth.
+#extension GL_GOOGLE_include_directive : require
+#define DIM 3
+#include "liquid/common.glsl"
+
+layout(set = 0, binding = 1) uniform RenderUniforms {
+  mat4 inverse_view_projection;
+  mat4 view_projection;
+  vec4 camera_position;  // xyz
+  vec4 sun_direction;    // xyz towards the sun
+  vec4 params;           // x iso level, y fine step (cells), z brick size (cells), w bisection steps
+  ivec4 bricks;          // xyz occupancy volume size
+} r;
+layout(set = 0, binding = 2) uniform sampler3D u_density;    // rho / rho0, linear filtering
+layout(set = 0, binding = 3) uniform sampler3D u_occupancy;  // per-brick max, nearest
+
+layout(location = 0) in vec2 v_uv;
+layout(location = 0) out vec4 out_color;
+
+const float k_no_hit = 1e30;
+const vec3 k_absorption = vec3(6.0, 1.6, 0.9);  // 1/m: red is absorbed first, so depth reads blue-green
+
+float density_at(vec3 p) { return textureLod(u_density, p / u.domain_h.xyz, 0.0).r; }
+
+vec2 intersect_box(vec3 origin, vec3 inv_dir, vec3 lo, vec3 hi) {
+  vec3 t0 = (lo - origin) * inv_dir, t1 = (hi - origin) * inv_dir;
+  vec3 tmin = min(t0, t1), tmax = max(t0, t1);
+  return vec2(max(max(tmin.x, tmin.y), tmin.z), min(min(tmax.x, tmax.y), tmax.z));
+}
+
+vec3 sky(vec3 dir) {
+  float up = clamp(dir.y * 0.5 + 0.5, 0.0, 1.0);
+  vec3 color = mix(vec3(0.78, 0.80, 0.82), vec3(0.30, 0.52, 0.85), pow(up, 0.8));
+  float sun = max(dot(dir, r.sun_direction.xyz), 0.0);
+  return color + vec3(1.0, 0.95, 0.85) * (pow(sun, 400.0) * 6.0 + pow(sun, 12.0) * 0.15);
+}
+
+// Tiled floor at y = 0, darker inside the tank's footprint.
+vec3 floor_color(vec3 p) {
+  vec2 tile = floor(p.xz / 0.1);
+  float checker = mod(tile.x + tile.y, 2.0);
+  vec3 color = mix(vec3(0.55, 0.53, 0.50), vec3(0.68, 0.66, 0.62), checker);
+  bool inside = all(greaterThanEqual(p.xz, vec2(0.0))) && all(lessThanEqual(p.xz, u.domain_h.xz));
+  if (inside) color *= vec3(0.82, 0.86, 0.9);
+  float fade = exp(-0.15 * length(p.xz - 0.5 * u.domain_h.xz));
+  return mix(vec3(0.7, 0.72, 0.75), color, fade) * (0.55 + 0.45 * max(r.sun_direction.y, 0.0));
+}
+
+// Nearest obstacle hit along the ray: analytic for spheres and boxes, sphere tracing for metaballs.
+float trace_obstacles(vec3 origin, vec3 dir, out int hit_index) {
+  float best = k_no_hit;
+  hit_index = -1;
+  for (int i = 0; i < u.counts.w; ++i) {
+    Obstacle o = u.obstacles[i];
+    int kind = int(o.center_kind.w);
+    vec3 c = o.center_kind.xyz;
+    float t = k_no_hit;
+    if (kind == OBSTACLE_SPHERE) {
+      vec3 oc = origin - c;
+      float b = dot(oc, dir), q = dot(oc, oc) - o.size.x * o.size.x, disc = b * b - q;
+      if (disc >= 0.0) {
+        float s = -b - sqrt(disc);
+        if (s > 0.0) t = s;
+      }
+    } else if (kind == OBSTACLE_BOX) {
+      vec2 span = intersect_box(origin, 1.0 / dir, c - o.size.xyz, c + o.size.xyz);
+      if (span.x <= span.y && span.x > 0.0) t = span.x;
+    } else {
+      float reach = 0.0;
+      for (int b = 0; b < int(o.size.z); ++b) {
+        vec4 ball = u.balls[int(o.size.y) + b];
+        reach = max(reach, length(ball.xyz) + ball.w);
+      }
+      vec3 oc = origin - c;
+      float bq = dot(oc, dir), disc = bq * bq - (dot(oc, oc) - reach * reach);
+      if (disc >= 0.0) {
+        float s = max(-bq - sqrt(disc), 0.0), s_end = -bq + sqrt(disc);
+        for (int k = 0; k < 48 && s < s_end; ++k) {
+          float d = obstacle_distance(i, origin + dir * s);
+          if (d < 1e-3) {
+            t = s;
+            break;
+          }
+          s += max(d * 0.8, 1e-3);
+        }
+      }
+    }
+    if (t < best) {
+      best = t;
+      hit_index = i;
+    }
+  }
+  return best;
+}
+
+vec3 shade_obstacle(int index, vec3 p, vec3 view_dir) {
+  vec3 n = obstacle_normal(index, p);
+  vec3 l = r.sun_direction.xyz;
+  float diffuse = max(dot(n, l), 0.0);
+  float spec = pow(max(dot(n, normalize(l - view_dir)), 0.0), 48.0);
+  vec3 base = vec3(0.62, 0.6, 0.58);
+  return base * (0.25 + 0.75 * diffuse) + vec3(0.35) * spec + 0.08 * sky(reflect(view_dir, n));
+}
+
+// What a ray sees when it does not hit the liquid: an obstacle, the floor or the sky.
+vec3 background(vec3 origin, vec3 dir, out float depth_t) {
+  int obstacle;
+  float t_obstacle = trace_obstacles(origin, dir, obstacle);
+  float t_floor = dir.y < -1e-5 ? -origin.y / dir.y : k_no_hit;
+  if (t_obstacle < t_floor && t_obstacle < k_no_hit) {
+    depth_t = t_obstacle;
+    return shade_obstacle(obstacle, origin + dir * t_obstacle, dir);
+  }
+  if (t_floor < k_no_hit) {
+    depth_t = t_floor;
+    return floor_color(origin + dir * t_floor);
+  }
+  depth_t = k_no_hit;
+  return sky(dir);
+}
+
+// First crossing of the iso level inside [t_enter, t_exit], or k_no_hit.
+float march_liquid(vec3 origin, vec3 dir, float t_enter, float t_exit) {
+  float h = cell_size();
+  float iso = r.params.x;
+  float fine = r.params.y * h;
+  float brick_size = r.params.z * h;
+  ivec3 bricks = r.bricks.xyz;
+
+  // 3D DDA over the bricks (Amanatides and Woo).
+  vec3 p = origin + dir * (t_enter + 1e-5);
+  ivec3 brick = clamp(ivec3(floor(p / brick_size)), ivec3(0), bricks - 1);
+  ivec3 step_dir = ivec3(sign(dir));
+  vec3 inv_dir = 1.0 / dir;
+  vec3 next_boundary = (vec3(brick) + max(vec3(step_dir), 0.0)) * brick_size;
+  vec3 t_max = mix(vec3(k_no_hit), (next_boundary - origin) * inv_dir, notEqual(dir, vec3(0.0)));
+  vec3 t_delta = abs(brick_size * inv_dir);
+  float t = t_enter;
+  float previous_t = -1.0, previous_d = 0.0;
+  for (int i = 0; i < 512; ++i) {
+    float t_leave = min(min(t_max.x, t_max.y), min(t_max.z, t_exit));
+    if (texelFetch(u_occupancy, brick, 0).r > iso) {
+      if (previous_t < 0.0 || previous_t < t - 1.5 * fine) {
+        previous_t = t;
+        previous_d = density_at(origin + dir * t);
+        if (previous_d > iso) return t;  // entered the box inside the liquid
+      }
+      for (float s = previous_t + fine; s <= t_leave + fine; s += fine) {
+        float d = density_at(origin + dir * s);
+        if (d > iso) {
+          // Bisection between the last sample outside and this one inside.
+          float a = previous_t, b = s;
+          for (int k = 0; k < int(r.params.w); ++k) {
+            float m = 0.5 * (a + b);
+            if (density_at(origin + dir * m) > iso) b = m;
+            else a = m;
+          }
+          return b;
+        }
+        previous_t = s;
+        previous_d = d;
+      }
+    }
+    t = t_leave;
+    if (t >= t_exit) break;
+    if (t_max.x <= t_max.y && t_max.x <= t_max.z) {
+      brick.x += step_dir.x;
+      t_max.x += t_delta.x;
+    } else if (t_max.y <= t_max.z) {
+      brick.y += step_dir.y;
+      t_max.y += t_delta.y;
+    } else {
+      brick.z += step_dir.z;
+      t_max.z += t_delta.z;
+    }
+    if (any(lessThan(brick, ivec3(0))) || any(greaterThanEqual(brick, bricks))) break;
+  }
+  return k_no_hit;
+}
+
+vec3 density_normal(vec3 p) {
+  float e = cell_size();
+  vec3 g = vec3(density_at(p + vec3(e, 0, 0)) - density_at(p - vec3(e, 0, 0)),
+                density_at(p + vec3(0, e, 0)) - density_at(p - vec3(0, e, 0)),
+                density_at(p + vec3(0, 0, e)) - density_at(p - vec3(0, 0, e)));
+  float len = length(g);
+  return len > 1e-6 ? -g / len : vec3(0.0, 1.0, 0.0);
+}
+
+float clip_depth(vec3 p) {
+  vec4 clip = r.view_projection * vec4(p, 1.0);
+  return clamp(clip.z / clip.w, 0.0, 1.0);
+}
+
+void main() {
+  vec2 ndc = v_uv * 2.0 - 1.0;
+  vec4 far_point = r.inverse_view_projection * vec4(ndc, 1.0, 1.0);
+  vec3 origin = r.camera_position.xyz;
+  vec3 dir = normalize(far_point.xyz / far_point.w - origin);
+
+  vec2 span = intersect_box(origin, 1.0 / dir, vec3(0.0), u.domain_h.xyz);
+  float t_liquid = k_no_hit;
+  if (span.x <= span.y && span.y > 0.0) {
+    // Do not march past an obstacle in front of the liquid.
+    int ignored;
+    float t_obstacle = trace_obstacles(origin, dir, ignored);
+    t_liquid = march_liquid(origin, dir, max(span.x, 0.0), min(span.y, t_obstacle));
+  }
+
+  vec3 color;
+  float depth_t;
+  if (t_liquid < k_no_hit) {
+    vec3 p = origin + dir * t_liquid;
+    vec3 n = density_normal(p);
+    float cos_theta = clamp(dot(-dir, n), 0.0, 1.0);
+    float fresnel = 0.02 + 0.98 * pow(1.0 - cos_theta, 5.0);  // Schlick, water F0 = 0.02
+    vec3 reflected = sky(reflect(dir, n));
+    // Refraction: thickness along the refracted ray (a few coarse steps), then what lies behind.
+    vec3 refracted_dir = refract(dir, n, 1.0 / 1.33);
+    if (dot(refracted_dir, refracted_dir) < 1e-6) refracted_dir = dir;
+    float thickness = 0.0, step_length = 2.0 * cell_size();
+    vec3 q = p;
+    for (int k = 0; k < 16; ++k) {
+      q += refracted_dir * step_length;
+      if (any(lessThan(q, vec3(0.0))) || any(greaterThan(q, u.domain_h.xyz))) break;
+      if (density_at(q) > r.params.x) thickness += step_length;
+    }
+    float behind_t;
+    vec3 behind = background(p + refracted_dir * 1e-3, refracted_dir, behind_t);
+    vec3 transmitted = behind * exp(-k_absorption * (thickness + 0.02)) + vec3(0.01, 0.05, 0.08) * (1.0 - exp(-2.0 * thickness));
+    float spec = pow(max(dot(n, normalize(r.sun_direction.xyz - dir)), 0.0), 180.0);
+    color = mix(transmitted, reflected, fresnel) + vec3(1.0, 0.97, 0.9) * spec * 1.5;
+    depth_t = t_liquid;
+  } else {
+    color = background(origin, dir, depth_t);
+  }
+
+  gl_FragDepth = depth_t < k_no_hit ? clip_depth(origin + dir * depth_t) : 1.0;
+  // Filmic-ish tone curve and display encoding (the target is UNORM, written as sRGB values).
+  color = color / (1.0 + 0.15 * color);
+  out_color = vec4(pow(clamp(color, 0.0, 1.0), vec3(1.0 / 2.2)), 1.0);
+}

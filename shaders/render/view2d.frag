@@ -1,0 +1,110 @@
+#version 450
+// 2D view of the liquid: the domain fitted into the frame (y up), the liquid where the bilinearly
+// filtered rho / rho0 exceeds the iso level, with a one-pixel anti-aliased surface taken from the
+// field's screen-space gradient; water darkens with depth below the surface and with compression,
+// and has a light rim at the surface. Obstacles (the solver's analytic distances) are grey, and
+// the tank's walls frame the domain on the left, right and bottom.
+#extension GL_GOOGLE_include_directive : require
+#include "liquid/common.glsl"
+
+layout(set = 0, binding = 1) uniform sampler2D u_density;  // rho / rho0, linear filtering
+
+layout(push_constant) uniform View2dPush {
+  vec2 origin;             // framebuffer pixel of the domain's (0, 0) corner (its bottom left)
+  float pixels_per_metre;  // domain scale on screen
+  float iso_level;         // surface where rho / rho0 crosses this
+  vec2 frame;              // framebuffer size, pixels
+  float wall_pixels;       // tank wall thickness, pixels
+  float depth_cells;       // how far (cells) the depth search looks up for the surface
+} pc;
+
+layout(location = 0) in vec2 v_uv;
+layout(location = 0) out vec4 out_color;
+
+const vec3 k_letterbox = vec3(0.075, 0.085, 0.105);
+const vec3 k_background = vec3(0.125, 0.140, 0.175);
+const vec3 k_water_shallow = vec3(0.22, 0.56, 0.90);
+const vec3 k_water_deep = vec3(0.03, 0.17, 0.48);
+const vec3 k_water_rim = vec3(0.72, 0.90, 1.00);
+const vec3 k_obstacle = vec3(0.50, 0.50, 0.52);
+const vec3 k_obstacle_outline = vec3(0.30, 0.30, 0.32);
+const vec3 k_wall = vec3(0.62, 0.66, 0.72);
+
+float density_at(vec2 p) { return textureLod(u_density, p / u.domain_h.xy, 0.0).r; }
+
+// Coverage of the region {d < 0} for a field d measured in pixels: a one-pixel linear ramp.
+float coverage(float d_pixels) { return clamp(0.5 - d_pixels, 0.0, 1.0); }
+
+// Signed distance (pixels, y up) to the tank: left, right and bottom walls of thickness
+// wall_pixels just outside the domain, open at the top.
+float tank_distance(vec2 q) {
+  vec2 size = u.domain_h.xy * pc.pixels_per_metre;
+  float t = pc.wall_pixels;
+  float left = sd_box(vec3(q - vec2(-0.5 * t, 0.5 * (size.y - t)), 0.0), vec3(0.5 * t, 0.5 * (size.y + t), 1.0));
+  float right = sd_box(vec3(q - vec2(size.x + 0.5 * t, 0.5 * (size.y - t)), 0.0), vec3(0.5 * t, 0.5 * (size.y + t), 1.0));
+  float bottom = sd_box(vec3(q - vec2(0.5 * size.x, -0.5 * t), 0.0), vec3(0.5 * size.x + t, 0.5 * t, 1.0));
+  return min(min(left, right), bottom);
+}
+
+// Signed distance (m) to obstacle i in the plane. A box's half extent along z is 0 in a 2D scene,
+// which makes common.glsl's 3D box distance 0 everywhere inside; the 2D box distance avoids that.
+float obstacle_distance_2d(int i, vec2 p) {
+  Obstacle o = u.obstacles[i];
+  if (int(o.center_kind.w) == OBSTACLE_BOX) return sd_box(vec3(p - o.center_kind.xy, 0.0), vec3(o.size.xy, 1.0));
+  return obstacle_distance(i, vec3(p, 0.0));
+}
+
+void main() {
+  // Domain coordinates: q in pixels from the domain's bottom-left corner (y up), p in metres.
+  vec2 q = vec2(gl_FragCoord.x - pc.origin.x, pc.origin.y - gl_FragCoord.y);
+  vec2 p = q / pc.pixels_per_metre;
+  vec2 domain = u.domain_h.xy;
+  float h = cell_size();
+
+  // Everything below that uses derivatives runs in uniform control flow.
+  float rho = density_at(p);
+  float f = rho - pc.iso_level;
+  float f_gradient = length(vec2(dFdx(f), dFdy(f)));
+  float f_pixels = f / max(f_gradient, 1e-6);  // signed pixels from the surface, > 0 inside
+
+  // Half a pixel of softness at the domain's edge, where the liquid meets the walls.
+  vec2 to_edge = min(q, domain * pc.pixels_per_metre - q);
+  float in_domain = clamp(min(to_edge.x, to_edge.y) + 0.5, 0.0, 1.0);
+  vec3 color = mix(k_letterbox, k_background, in_domain);
+
+  float liquid = clamp(f_pixels + 0.5, 0.0, 1.0) * in_domain;
+  if (liquid > 0.0) {
+    // Depth below the surface: march up one cell at a time to the first cell under the iso level.
+    float depth = pc.depth_cells;
+    float below = rho;
+    for (float k = 1.0; k <= pc.depth_cells; k += 1.0) {
+      vec2 above = p + vec2(0.0, k * h);
+      float next = above.y > domain.y ? 0.0 : density_at(above);
+      if (next < pc.iso_level) {
+        depth = k - 1.0 + clamp((below - pc.iso_level) / max(below - next, 1e-4), 0.0, 1.0);
+        break;
+      }
+      below = next;
+    }
+    float deep = clamp(depth / pc.depth_cells, 0.0, 1.0);
+    float compressed = clamp((rho - 1.0) * 2.0, 0.0, 1.0);  // rho above rho0: denser, darker
+    vec3 water = mix(k_water_shallow, k_water_deep, clamp(0.85 * sqrt(deep) + 0.35 * compressed, 0.0, 1.0));
+    // Light rim about half a cell (at least 1.5 pixels) wide just inside the surface.
+    float rim_width = max(1.5, 0.6 * h * pc.pixels_per_metre);
+    float rim = 1.0 - smoothstep(0.5 * rim_width, 1.5 * rim_width, f_pixels);
+    water = mix(water, k_water_rim, 0.75 * rim);
+    color = mix(color, water, liquid);
+  }
+
+  // Obstacles: solid grey with a darker outline, anti-aliased over one pixel of the distance.
+  // The distance is metric near every surface (metaballs: a first-order estimate), so pixels are
+  // metres times the scale; screen derivatives would break on the metaballs' field discontinuity.
+  for (int i = 0; i < u.counts.w; ++i) {
+    float d_pixels = obstacle_distance_2d(i, p) * pc.pixels_per_metre;
+    vec3 shade = mix(k_obstacle, k_obstacle_outline, smoothstep(-2.0, -1.0, d_pixels));
+    color = mix(color, shade, coverage(d_pixels));
+  }
+
+  color = mix(color, k_wall, coverage(tank_distance(q)));
+  out_color = vec4(color, 1.0);
+}

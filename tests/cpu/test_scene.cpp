@@ -1,0 +1,338 @@
+// Scene loading with no GPU: every shipped scene parses, defaults and conversions are right, and
+// each kind of malformed scene is rejected with a message naming the file and the field.
+#include "liquid/scene.h"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+using namespace liquid;
+using Catch::Contains;
+using Json = nlohmann::json;
+
+namespace {
+
+const std::filesystem::path k_scene_dir = std::filesystem::path(LIQUID_ASSET_DIR) / "scenes";
+
+const std::vector<std::string> k_shipped_scenes = {
+    "dam_break_2d.json", "dam_break_3d.json", "paper_2d_16k.json", "paper_2d_32k.json",
+    "paper_2d_64k.json", "paper_3d.json",     "shallow_water.json", "obstacles_2d.json",
+    "rest_pool_2d.json", "symmetric_2d.json", "small_3d.json",      "jet_2d.json"};
+
+// A small valid 2D scene; each malformed case changes one thing.
+Json valid_2d() {
+  return Json::parse(R"({
+    "dimension": 2,
+    "domain": [1.0, 0.6],
+    "particle_spacing": 0.01,
+    "fluid_blocks": [{ "min": [0.0, 0.0], "max": [0.3, 0.45] }]
+  })");
+}
+
+Json valid_3d() {
+  Json j = valid_2d();
+  j["dimension"] = 3;
+  j["domain"] = {1.0, 0.6, 0.5};
+  j["fluid_blocks"][0] = {{"min", {0.0, 0.0, 0.0}}, {"max", {0.3, 0.45, 0.5}}};
+  return j;
+}
+
+Scene parse(const Json& j) { return parse_scene(j.dump(2), "dam.json"); }
+
+}  // namespace
+
+TEST_CASE("every shipped scene loads", "[scene]") {
+  for (const std::string& file : k_shipped_scenes) {
+    INFO(file);
+    const Scene scene = load_scene(k_scene_dir / file);
+    CHECK_FALSE(scene.name.empty());
+    CHECK((scene.dimension == 2 || scene.dimension == 3));
+    CHECK((!scene.fluid_blocks.empty() || !scene.emitters.empty()));
+  }
+  // Nothing shipped is left out of the list above (the setup tests walk it too).
+  for (const auto& entry : std::filesystem::directory_iterator(k_scene_dir))
+    if (entry.path().extension() == ".json") {
+      INFO(entry.path().filename().string());
+      CHECK(std::find(k_shipped_scenes.begin(), k_shipped_scenes.end(), entry.path().filename().string()) !=
+            k_shipped_scenes.end());
+    }
+}
+
+TEST_CASE("shipped scenes carry what their names promise", "[scene]") {
+  const Scene obstacles = load_scene(k_scene_dir / "obstacles_2d.json");
+  REQUIRE(obstacles.obstacles.size() == 3);
+  CHECK(obstacles.obstacles[0].shape == ObstacleShape::Sphere);
+  CHECK(obstacles.obstacles[1].shape == ObstacleShape::Box);
+  CHECK(obstacles.obstacles[2].shape == ObstacleShape::Metaballs);
+  CHECK(obstacles.grid_resolution == 128);
+
+  const Scene shallow = load_scene(k_scene_dir / "shallow_water.json");
+  CHECK(shallow.mode == SimulationMode::ShallowWater);
+  CHECK(shallow.dimension == 2);
+  CHECK(shallow.grid_resolution == 256);
+  CHECK_FALSE(shallow.ground.empty());
+  CHECK(shallow.rest_depth == Approx(0.05f));
+
+  const Scene paper = load_scene(k_scene_dir / "paper_3d.json");
+  CHECK(paper.dimension == 3);
+  CHECK(paper.grid_resolution == 96);
+  CHECK(paper.camera.has_value());
+  CHECK(paper.emitters.size() == 1);
+  CHECK(paper.obstacles.size() >= 2);
+  for (const Obstacle& o : paper.obstacles) CHECK(o.shape == ObstacleShape::Sphere);
+
+  CHECK(load_scene(k_scene_dir / "dam_break_3d.json").camera.has_value());
+  CHECK(load_scene(k_scene_dir / "jet_2d.json").emitters.size() == 1);
+}
+
+TEST_CASE("omitted fields take their documented defaults", "[scene]") {
+  const Scene scene = parse_scene(valid_2d().dump(), "scenes/my_tank.json");
+  CHECK(scene.name == "my_tank");
+  CHECK(scene.dimension == 2);
+  CHECK(scene.mode == SimulationMode::Liquid);
+  CHECK(scene.domain == glm::vec3(1.0f, 0.6f, 0.0f));
+  CHECK_FALSE(scene.grid_resolution.has_value());
+  CHECK(scene.gravity == glm::vec3(0.0f, -9.81f, 0.0f));
+  CHECK(scene.density == 1000.0f);
+  CHECK_FALSE(scene.rest_density.has_value());
+  CHECK(scene.kernel_radius_cells == 3.0f);
+  CHECK(scene.splat_format == SplatFormat::Rgba32f);
+  REQUIRE(scene.fluid_blocks.size() == 1);
+  CHECK(scene.fluid_blocks[0].max == glm::vec3(0.3f, 0.45f, 0.0f));
+  CHECK(scene.fluid_blocks[0].velocity == glm::vec3(0.0f));
+  CHECK_FALSE(scene.camera.has_value());
+}
+
+TEST_CASE("given fields are read in physical units", "[scene]") {
+  Json j = valid_3d();
+  j["name"] = "tank";
+  j["grid_resolution"] = 64;
+  j["gravity"] = {0.0, -3.7, 0.0};
+  j["rest_density"] = 998.5;
+  j["stiffness"] = 120;
+  j["gamma"] = 7;
+  j["substeps"] = 64.0;  // an integral float is an integer
+  j["splat_format"] = "rgba16f";
+  j["fluid_blocks"][0]["velocity"] = {1.0, 0.0, -0.5};
+  j["emitters"] = Json::array({{{"position", {0.5, 0.5, 0.25}},
+                                {"velocity", {0.0, -1.0, 0.0}},
+                                {"radius", 0.02},
+                                {"start_time", 0.5},
+                                {"stop_time", 2.0},
+                                {"capacity", 1000}}});
+  j["camera"] = {{"position", {0.5, 1.0, 2.0}}, {"target", {0.5, 0.2, 0.25}}};
+  const Scene scene = parse(j);
+  CHECK(scene.name == "tank");
+  CHECK(scene.grid_resolution == 64);
+  CHECK(scene.gravity == glm::vec3(0.0f, -3.7f, 0.0f));
+  CHECK(scene.rest_density == 998.5f);
+  CHECK(scene.stiffness == 120.0f);
+  CHECK(scene.gamma == 7.0f);
+  CHECK(scene.substeps == 64);
+  CHECK(scene.splat_format == SplatFormat::Rgba16f);
+  CHECK(scene.fluid_blocks[0].velocity == glm::vec3(1.0f, 0.0f, -0.5f));
+  REQUIRE(scene.emitters.size() == 1);
+  CHECK(scene.emitters[0].start_time == 0.5f);
+  CHECK(scene.emitters[0].stop_time == 2.0f);
+  CHECK(scene.emitters[0].capacity == 1000);
+  REQUIRE(scene.camera.has_value());
+  CHECK(scene.camera->fov_y_degrees == 45.0f);
+  CHECK(scene.camera->target == glm::vec3(0.5f, 0.2f, 0.25f));
+}
+
+TEST_CASE("rest_density \"auto\" leaves it to the setup", "[scene]") {
+  Json j = valid_2d();
+  j["rest_density"] = "auto";
+  CHECK_FALSE(parse(j).rest_density.has_value());
+}
+
+TEST_CASE("obstacles are read per shape, metaballs relative to their centroid", "[scene]") {
+  Json j = valid_2d();
+  j["obstacles"] = Json::parse(R"([
+    { "shape": "sphere", "center": [0.5, 0.2], "radius": 0.1, "velocity": [0.1, 0.0] },
+    { "shape": "box", "center": [0.7, 0.2], "half_extent": [0.05, 0.1],
+      "oscillation": { "amplitude": [0.0, 0.05], "frequency": 2 } },
+    { "shape": "metaballs", "balls": [ { "center": [0.4, 0.1], "radius": 0.05 },
+                                       { "center": [0.6, 0.3], "radius": 0.07 } ], "threshold": 0.3 }
+  ])");
+  const Scene scene = parse(j);
+  REQUIRE(scene.obstacles.size() == 3);
+  CHECK(scene.obstacles[0].radius == 0.1f);
+  CHECK(scene.obstacles[0].velocity == glm::vec3(0.1f, 0.0f, 0.0f));
+  CHECK(scene.obstacles[1].half_extent == glm::vec3(0.05f, 0.1f, 0.0f));
+  CHECK(scene.obstacles[1].oscillation_amplitude == glm::vec3(0.0f, 0.05f, 0.0f));
+  CHECK(scene.obstacles[1].oscillation_frequency == 2.0f);
+  const Obstacle& blob = scene.obstacles[2];
+  CHECK(blob.threshold == 0.3f);
+  CHECK(blob.center.x == Approx(0.5f));
+  CHECK(blob.center.y == Approx(0.2f));
+  REQUIRE(blob.balls.size() == 2);
+  CHECK(blob.balls[0].center.x == Approx(-0.1f));
+  CHECK(blob.balls[1].center.y == Approx(0.1f));
+  CHECK(blob.balls[1].radius == 0.07f);
+}
+
+TEST_CASE("shallow water reads its rest depth and ground", "[scene]") {
+  Json j = valid_2d();
+  j["mode"] = "shallow_water";
+  j["rest_depth"] = 0.05;
+  j["ground"] = Json::parse(R"([{ "center": [0.5, 0.3], "height": 0.02, "width": 0.1 }])");
+  const Scene scene = parse(j);
+  CHECK(scene.mode == SimulationMode::ShallowWater);
+  CHECK(scene.rest_depth == 0.05f);
+  REQUIRE(scene.ground.size() == 1);
+  CHECK(scene.ground[0].center == glm::vec2(0.5f, 0.3f));
+}
+
+TEST_CASE("malformed scenes are rejected naming the file and field", "[scene]") {
+  SECTION("unknown key at the top level") {
+    Json j = valid_2d();
+    j["stiffnes"] = 50;
+    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: stiffnes: unknown key"));
+  }
+  SECTION("unknown key in a nested object") {
+    Json j = valid_2d();
+    j["fluid_blocks"][0]["veloctiy"] = {1.0, 0.0};
+    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: fluid_blocks[0].veloctiy: unknown key"));
+  }
+  SECTION("a key of another obstacle shape") {
+    Json j = valid_2d();
+    j["obstacles"] = Json::parse(R"([{ "shape": "sphere", "center": [0.5, 0.2], "radius": 0.1,
+                                       "half_extent": [0.1, 0.1] }])");
+    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: obstacles[0].half_extent: unknown key"));
+  }
+  SECTION("wrong type") {
+    Json j = valid_2d();
+    j["gamma"] = "5";
+    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: gamma: must be a number, got string"));
+  }
+  SECTION("wrong type inside a vector") {
+    Json j = valid_2d();
+    j["gravity"] = {0.0, "down"};
+    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: gravity[1]: must be a number, got string"));
+  }
+  SECTION("gamma out of range") {
+    Json j = valid_2d();
+    j["gamma"] = 12;
+    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: gamma: must be in [1, 10], got 12"));
+  }
+  SECTION("negative particle spacing") {
+    Json j = valid_2d();
+    j["particle_spacing"] = -0.01;
+    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: particle_spacing: must be in (0, 0.3]") && Contains("got -0.01"));
+  }
+  SECTION("fluid block outside the domain") {
+    Json j = valid_2d();
+    j["fluid_blocks"][0]["max"] = {0.3, 0.7};
+    REQUIRE_THROWS_WITH(parse(j),
+                        Contains("dam.json: fluid_blocks[0].max: must be inside the domain [0, 1] x [0, 0.6]"));
+  }
+  SECTION("fluid block with min >= max") {
+    Json j = valid_2d();
+    j["fluid_blocks"][0]["min"] = {0.3, 0.0};
+    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: fluid_blocks[0].max: must be greater than min"));
+  }
+  SECTION("vector of the wrong length") {
+    Json j = valid_2d();
+    j["domain"] = {1.0, 0.6, 0.5};
+    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: domain: must have 2 components, got 3"));
+  }
+  SECTION("missing dimension") {
+    Json j = valid_2d();
+    j.erase("dimension");
+    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: dimension: missing required key"));
+  }
+  SECTION("dimension other than 2 or 3") {
+    Json j = valid_2d();
+    j["dimension"] = 4;
+    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: dimension: must be in [2, 3], got 4"));
+  }
+  SECTION("malformed JSON") {
+    const std::string text = "{\n  \"dimension\": 2,\n  \"domain\": [1.0, 0.6,\n}\n";
+    REQUIRE_THROWS_WITH(parse_scene(text, "dam.json"), Contains("dam.json: line 4: JSON syntax error"));
+  }
+  SECTION("number too large for a double") {
+    REQUIRE_THROWS_WITH(parse_scene(R"({"dimension": 2, "gamma": 1e999})", "dam.json"),
+                        Contains("dam.json: JSON error: number overflow"));
+  }
+  SECTION("duplicate key") {
+    const std::string text = R"({"dimension": 2, "fluid_blocks": [{"min": [0, 0], "max": [1, 1], "min": [0, 0]}]})";
+    REQUIRE_THROWS_WITH(parse_scene(text, "dam.json"), Contains("dam.json: fluid_blocks[0].min: duplicate key"));
+  }
+  SECTION("document is not an object") {
+    REQUIRE_THROWS_WITH(parse_scene("[1, 2]", "dam.json"), Contains("dam.json: (document): must be a JSON object"));
+  }
+  SECTION("shallow water in 3D") {
+    Json j = valid_3d();
+    j["mode"] = "shallow_water";
+    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: mode: shallow_water requires dimension 2, got 3"));
+  }
+  SECTION("unknown mode") {
+    Json j = valid_2d();
+    j["mode"] = "lava";
+    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: mode: must be one of \"liquid\", \"shallow_water\""));
+  }
+  SECTION("stiffness in shallow water") {
+    Json j = valid_2d();
+    j["mode"] = "shallow_water";
+    j["stiffness"] = 10;
+    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: stiffness: not used in shallow_water mode"));
+  }
+  SECTION("ground in liquid mode") {
+    Json j = valid_2d();
+    j["ground"] = Json::parse(R"([{ "center": [0.5, 0.3], "height": 0.02, "width": 0.1 }])");
+    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: ground: only allowed in shallow_water mode"));
+  }
+  SECTION("emitter with zero velocity") {
+    Json j = valid_2d();
+    j["emitters"] = Json::parse(R"([{ "position": [0.5, 0.5], "velocity": [0, 0], "radius": 0.02,
+                                      "capacity": 100 }])");
+    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: emitters[0].velocity: must be nonzero"));
+  }
+  SECTION("emitter stopping before it starts") {
+    Json j = valid_2d();
+    j["emitters"] = Json::parse(R"([{ "position": [0.5, 0.5], "velocity": [1, 0], "radius": 0.02,
+                                      "start_time": 1.0, "stop_time": 0.5, "capacity": 100 }])");
+    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: emitters[0].stop_time: must be greater than start_time"));
+  }
+  SECTION("emitter capacity that is not an integer") {
+    Json j = valid_2d();
+    j["emitters"] = Json::parse(R"([{ "position": [0.5, 0.5], "velocity": [1, 0], "radius": 0.02,
+                                      "capacity": 10.5 }])");
+    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: emitters[0].capacity: must be an integer, got 10.5"));
+  }
+  SECTION("camera in 2D") {
+    Json j = valid_2d();
+    j["camera"] = {{"position", {0.5, 1.0, 2.0}}, {"target", {0.5, 0.2, 0.25}}};
+    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: camera: only allowed in 3D scenes"));
+  }
+  SECTION("metaballs threshold outside (0, 1)") {
+    Json j = valid_2d();
+    j["obstacles"] = Json::parse(R"([{ "shape": "metaballs", "balls": [{ "center": [0.5, 0.2], "radius": 0.1 }],
+                                       "threshold": 1 }])");
+    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: obstacles[0].threshold: must be in (0, 1), got 1"));
+  }
+  SECTION("rest density that is neither a number nor auto") {
+    Json j = valid_2d();
+    j["rest_density"] = "automatic";
+    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: rest_density: must be a number or \"auto\""));
+  }
+  SECTION("no fluid block and no emitter") {
+    Json j = valid_2d();
+    j.erase("fluid_blocks");
+    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: fluid_blocks: the scene needs at least one fluid block"));
+  }
+  SECTION("missing file") {
+    const std::filesystem::path missing = k_scene_dir / "no_such_scene.json";
+    REQUIRE_THROWS_WITH(load_scene(missing), Contains(missing.string() + ": cannot open scene file"));
+  }
+  SECTION("every error is a SceneError") {
+    Json j = valid_2d();
+    j["time_step"] = 1.0;
+    REQUIRE_THROWS_AS(parse(j), SceneError);
+  }
+}

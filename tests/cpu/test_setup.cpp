@@ -1,0 +1,376 @@
+// Derived setup with no GPU: grid sizing (section 7's N^(1/d) rule), the deterministic particle
+// lattice, kernel normalisation and rest density, emitters, device limits, and the physical
+// sanity of every shipped scene.
+#include "liquid/setup.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <set>
+#include <string>
+#include <tuple>
+#include <vector>
+
+using namespace liquid;
+using Catch::Contains;
+
+namespace {
+
+const std::filesystem::path k_scene_dir = std::filesystem::path(LIQUID_ASSET_DIR) / "scenes";
+constexpr double k_pi = 3.14159265358979323846;
+
+std::vector<std::filesystem::path> shipped_scenes() {
+  std::vector<std::filesystem::path> paths;
+  for (const auto& entry : std::filesystem::directory_iterator(k_scene_dir))
+    if (entry.path().extension() == ".json") paths.push_back(entry.path());
+  std::sort(paths.begin(), paths.end());
+  return paths;
+}
+
+SimulationSetup setup_of(const char* file, const DeviceLimits& limits = {}) {
+  return make_setup(load_scene(k_scene_dir / file), limits);
+}
+
+// A liquid scene with one block, built in code.
+Scene block_scene(int dimension, glm::vec3 domain, FluidBlock block, float spacing) {
+  Scene scene;
+  scene.name = "test";
+  scene.dimension = dimension;
+  scene.domain = domain;
+  scene.particle_spacing = spacing;
+  scene.fluid_blocks = {block};
+  return scene;
+}
+
+// Composite Simpson rule of f over [a, b] with n (even) intervals.
+template <typename F>
+double simpson(F f, double a, double b, int n) {
+  const double step = (b - a) / n;
+  double sum = f(a) + f(b);
+  for (int i = 1; i < n; ++i) sum += f(a + i * step) * (i % 2 ? 4.0 : 2.0);
+  return sum * step / 3.0;
+}
+
+}  // namespace
+
+TEST_CASE("kernel integral matches a numeric quadrature", "[setup]") {
+  for (double r : {1.0, 2.0, 3.0, 4.5, 8.0}) {
+    INFO("r = " << r);
+    const auto w = [r](double d) { return std::pow(1.0 - d * d / (r * r), 3.0); };
+    const double area = simpson([&](double d) { return w(d) * 2.0 * k_pi * d; }, 0.0, r, 2000);
+    const double volume = simpson([&](double d) { return w(d) * 4.0 * k_pi * d * d; }, 0.0, r, 2000);
+    CHECK(kernel_integral_cells(2, r) == Approx(area).epsilon(1e-9));
+    CHECK(kernel_integral_cells(3, r) == Approx(volume).epsilon(1e-9));
+  }
+  // And against a plain 2D Riemann sum over cells of a fine grid (no radial symmetry assumed).
+  const double r = 3.0, step = 0.01;
+  double sum = 0.0;
+  for (double x = -r + step / 2; x < r; x += step)
+    for (double y = -r + step / 2; y < r; y += step) {
+      const double q = 1.0 - (x * x + y * y) / (r * r);
+      if (q > 0.0) sum += q * q * q * step * step;
+    }
+  CHECK(kernel_integral_cells(2, r) == Approx(sum).epsilon(1e-4));
+  CHECK_THROWS(kernel_integral_cells(1, 3.0));
+}
+
+TEST_CASE("dam_break_2d gives the expected particles and grid", "[setup]") {
+  const SimulationSetup setup = setup_of("dam_break_2d.json");
+  const Scene& scene = setup.scene;
+  // 0.3 / 0.0029 = 103.4 and 0.45 / 0.0029 = 155.2 spacings.
+  CHECK(setup.initial_particles == 103 * 155);
+  CHECK(setup.capacity == setup.initial_particles);
+  CHECK(setup.positions.size() == size_t(setup.initial_particles));
+  CHECK(setup.velocities.size() == size_t(setup.initial_particles));
+  // No grid_resolution: round(sqrt(15965)) = 126 cells along x; y gets round(0.6 * 126) = 76.
+  CHECK(setup.grid_cells == glm::ivec3(126, 76, 1));
+  CHECK(setup.cell_size == Approx(1.0 / 126.0));
+  CHECK(setup.domain.x == Approx(1.0f));
+  CHECK(setup.domain.y == Approx(76.0 / 126.0));
+  CHECK(setup.particle_texture == glm::ivec2(128, 125));
+  CHECK(setup.particle_mass == Approx(1000.0 * 0.0029 * 0.0029));
+  CHECK(setup.density_scale ==
+        Approx(setup.particle_mass / (std::pow(setup.cell_size, 2) * kernel_integral_cells(2, 3.0))));
+  CHECK(setup.stiffness == scene.stiffness);
+  CHECK(setup.gamma == scene.gamma);
+  CHECK(setup.gravity == glm::vec3(0.0f, -9.81f, 0.0f));
+
+  CHECK(setup.positions.front().x == Approx(0.00145f));
+  CHECK(setup.positions.front().y == Approx(0.00145f));
+  for (size_t i = 0; i < setup.positions.size(); ++i) {
+    const glm::vec4 p = setup.positions[i];
+    INFO("particle " << i);
+    REQUIRE((p.x > 0.0f && p.x < 0.3f && p.y > 0.0f && p.y < 0.45f));
+    REQUIRE(p.z == 0.0f);
+    REQUIRE(p.w == 1.0f);
+    REQUIRE(setup.velocities[i] == glm::vec4(0.0f));
+  }
+}
+
+TEST_CASE("the default grid follows N^(1/d) with at least 8 cells", "[setup]") {
+  // 3D: 20 x 20 x 20 = 8000 particles -> round(8000^(1/3)) = 20 cells along the longest axis.
+  Scene cube = block_scene(3, {1.0f, 0.5f, 0.25f}, {{0.0f, 0.0f, 0.0f}, {0.2f, 0.2f, 0.2f}, {}}, 0.01f);
+  SimulationSetup setup = make_setup(cube, {});
+  REQUIRE(setup.capacity == 8000);
+  CHECK(setup.grid_cells == glm::ivec3(20, 10, 5));
+  CHECK(setup.cell_size == Approx(0.05f));
+
+  // Few particles: clamped to 8 cells.
+  Scene few = block_scene(2, {1.0f, 1.0f, 0.0f}, {{0.0f, 0.0f, 0.0f}, {0.1f, 0.1f, 0.0f}, {}}, 0.02f);
+  CHECK(make_setup(few, {}).grid_cells == glm::ivec3(8, 8, 1));
+
+  // An emitter's capacity counts in N.
+  few.emitters = {Emitter{{0.5f, 0.5f, 0.0f}, {1.0f, 0.0f, 0.0f}, 0.01f, 0.0f, 1e30f, 10000 - 25}};
+  setup = make_setup(few, {});
+  CHECK(setup.capacity == 10000);
+  CHECK(setup.grid_cells == glm::ivec3(100, 100, 1));
+
+  // Shorter axes are rounded to whole cells and the box snapped to them.
+  few.emitters.clear();
+  few.domain = {1.0f, 0.337f, 0.0f};
+  few.grid_resolution = 10;
+  setup = make_setup(few, {});
+  CHECK(setup.grid_cells == glm::ivec3(10, 3, 1));
+  CHECK(setup.domain.y == Approx(0.3f));
+}
+
+TEST_CASE("the lattice of symmetric_2d is mirror-symmetric", "[setup]") {
+  const SimulationSetup setup = setup_of("symmetric_2d.json");
+  const float length = setup.domain.x;
+  REQUIRE(length == setup.scene.domain.x);
+  // The scene's numbers are dyadic, so mirroring is exact in float.
+  std::set<std::pair<float, float>> points;
+  for (const glm::vec4& p : setup.positions) points.insert({p.x, p.y});
+  REQUIRE(points.size() == setup.positions.size());
+  for (const glm::vec4& p : setup.positions) REQUIRE(points.count({length - p.x, p.y}) == 1);
+}
+
+TEST_CASE("mirrored blocks give mirrored particles", "[setup]") {
+  // Blocks 30 spacings wide (the lattice starts at min + s/2, so it mirrors when the extent is a
+  // whole number of spacings), with decimal bounds that are not exact in binary.
+  Scene scene = block_scene(2, {1.0f, 0.6f, 0.0f}, {{0.1f, 0.05f, 0.0f}, {0.31f, 0.3f, 0.0f}, {}}, 0.007f);
+  scene.fluid_blocks.push_back({{0.69f, 0.05f, 0.0f}, {0.9f, 0.3f, 0.0f}, {}});
+  const SimulationSetup setup = make_setup(scene, {});
+  REQUIRE(setup.initial_particles % 2 == 0);
+  const size_t half = setup.positions.size() / 2;
+  std::vector<std::pair<float, float>> left, mirrored;
+  for (size_t i = 0; i < half; ++i) left.push_back({setup.positions[i].x, setup.positions[i].y});
+  for (size_t i = half; i < setup.positions.size(); ++i)
+    mirrored.push_back({1.0f - setup.positions[i].x, setup.positions[i].y});
+  std::sort(left.begin(), left.end());
+  std::sort(mirrored.begin(), mirrored.end());
+  for (size_t i = 0; i < half; ++i) {
+    REQUIRE(left[i].first == Approx(mirrored[i].first).margin(1e-6));
+    REQUIRE(left[i].second == mirrored[i].second);
+  }
+}
+
+TEST_CASE("the setup is deterministic", "[setup]") {
+  const SimulationSetup a = setup_of("obstacles_2d.json");
+  const SimulationSetup b = setup_of("obstacles_2d.json");
+  CHECK(a.positions == b.positions);
+  CHECK(a.velocities == b.velocities);
+}
+
+TEST_CASE("auto rest density is within 5% of the liquid's density", "[setup]") {
+  for (const auto& path : shipped_scenes()) {
+    INFO(path.filename().string());
+    const Scene scene = load_scene(path);
+    if (scene.rest_density) continue;
+    CHECK(make_setup(scene, {}).rest_density == Approx(scene.density).epsilon(0.05));
+  }
+  // Also at spacings from a quarter cell to one and a half cells, in 2D and 3D.
+  for (int d : {2, 3})
+    for (float spacing_cells : {0.25f, 0.5f, 0.75f, 1.0f, 1.5f}) {
+      INFO("dimension " << d << ", spacing " << spacing_cells << " cells");
+      const float h = 0.02f;
+      Scene scene = block_scene(d, {1.0f, 1.0f, d == 3 ? 1.0f : 0.0f},
+                                {{0.0f, 0.0f, 0.0f}, {0.2f, 0.2f, d == 3 ? 0.2f : 0.0f}, {}}, spacing_cells * h);
+      scene.grid_resolution = 50;
+      scene.density = 800.0f;
+      CHECK(make_setup(scene, {}).rest_density == Approx(800.0f).epsilon(0.05));
+    }
+}
+
+TEST_CASE("a given rest density is kept", "[setup]") {
+  Scene scene = load_scene(k_scene_dir / "rest_pool_2d.json");
+  scene.rest_density = 1234.0f;
+  CHECK(make_setup(scene, {}).rest_density == 1234.0f);
+}
+
+TEST_CASE("shallow water derives P = g h", "[setup]") {
+  const SimulationSetup setup = setup_of("shallow_water.json");
+  const Scene& scene = setup.scene;
+  CHECK(setup.gamma == 1.0f);
+  CHECK(setup.stiffness == Approx(glm::length(scene.gravity) * scene.rest_depth));
+  CHECK(setup.gravity == glm::vec3(0.0f));
+  CHECK(setup.rest_density == Approx(scene.density).epsilon(0.05));
+  CHECK(setup.grid_cells == glm::ivec3(256, 256, 1));
+}
+
+TEST_CASE("emitters add particles monotonically up to their capacity", "[setup]") {
+  const Scene scene = load_scene(k_scene_dir / "jet_2d.json");
+  REQUIRE(scene.emitters.size() == 1);
+  const Emitter& jet = scene.emitters[0];
+  const double rate = emitter_rate(jet, 2, scene.particle_spacing);
+  CHECK(rate == Approx(2.0 * jet.radius * glm::length(jet.velocity) / std::pow(scene.particle_spacing, 2)));
+  int previous = 0;
+  for (double t = 0.0; t <= 20.0; t += 0.01) {
+    const int n = emitted_by(jet, 2, scene.particle_spacing, t);
+    REQUIRE(n >= previous);
+    REQUIRE(n <= jet.capacity);
+    previous = n;
+  }
+  CHECK(previous == jet.capacity);
+  CHECK(emitted_by(jet, 2, scene.particle_spacing, 0.0) == 0);
+  CHECK(emitted_by(jet, 2, scene.particle_spacing, 1.0) == int(std::floor(rate)));
+
+  // A start and stop time: nothing before the start, no growth after the stop.
+  Emitter timed = jet;
+  timed.start_time = 1.0f;
+  timed.stop_time = 1.5f;
+  timed.capacity = 1 << 20;
+  CHECK(emitted_by(timed, 2, scene.particle_spacing, 0.5) == 0);
+  CHECK(emitted_by(timed, 2, scene.particle_spacing, 1.25) == int(std::floor(rate * 0.25)));
+  CHECK(emitted_by(timed, 2, scene.particle_spacing, 1.5) == emitted_by(timed, 2, scene.particle_spacing, 100.0));
+
+  // 3D flux through a disc.
+  const Emitter nozzle{{0.5f, 0.5f, 0.5f}, {0.0f, -2.0f, 0.0f}, 0.03f, 0.0f, 1e30f, 1000};
+  CHECK(emitter_rate(nozzle, 3, 0.01f) == Approx(k_pi * 0.03 * 0.03 * 2.0 / 1e-6).epsilon(1e-5));
+}
+
+TEST_CASE("particle texture is the smallest power-of-two width that fits", "[setup]") {
+  for (const auto& path : shipped_scenes()) {
+    INFO(path.filename().string());
+    const SimulationSetup setup = make_setup(load_scene(path), {});
+    const glm::ivec2 t = setup.particle_texture;
+    const int side = int(std::ceil(std::sqrt(double(setup.capacity))));
+    CHECK((t.x & (t.x - 1)) == 0);
+    CHECK(t.x >= side);
+    CHECK(t.x / 2 < side);
+    CHECK(std::int64_t(t.x) * t.y >= setup.capacity);
+    CHECK(std::int64_t(t.x) * (t.y - 1) < setup.capacity);
+  }
+}
+
+TEST_CASE("scenes past the device limits are rejected naming the limit", "[setup]") {
+  DeviceLimits small_2d;
+  small_2d.max_image_dimension_2d = 100;
+  // dam_break_2d: 15965 particles need a 128-wide particle texture.
+  REQUIRE_THROWS_WITH(setup_of("dam_break_2d.json", small_2d),
+                      Contains("Dam break 2D: capacity of 15965 particles") && Contains("max_image_dimension_2d") &&
+                          Contains("100"));
+  small_2d.max_image_dimension_2d = 128;
+  Scene wide = load_scene(k_scene_dir / "rest_pool_2d.json");
+  wide.grid_resolution = 200;
+  REQUIRE_THROWS_WITH(make_setup(wide, small_2d),
+                      Contains("grid 200 x 200 x 1 exceeds the device limit of 128 texels per axis") &&
+                          Contains("max_image_dimension_2d"));
+
+  DeviceLimits small_3d;
+  small_3d.max_image_dimension_3d = 48;
+  REQUIRE_THROWS_WITH(setup_of("dam_break_3d.json", small_3d),
+                      Contains("grid 64 x 38 x 32 exceeds the device limit of 48") &&
+                          Contains("max_image_dimension_3d"));
+  small_3d = {};
+  small_3d.max_framebuffer_layers = 16;
+  REQUIRE_THROWS_WITH(setup_of("dam_break_3d.json", small_3d),
+                      Contains("32 framebuffer layers") && Contains("16 (max_framebuffer_layers)"));
+  CHECK_NOTHROW(setup_of("dam_break_3d.json", {2048, 64, 32}));
+}
+
+TEST_CASE("fluid blocks that cannot be filled are rejected", "[setup]") {
+  Scene scene = block_scene(2, {1.0f, 0.6f, 0.0f}, {{0.0f, 0.0f, 0.0f}, {0.3f, 0.3f, 0.0f}, {}}, 0.01f);
+  scene.fluid_blocks.push_back({{0.5f, 0.0f, 0.0f}, {0.505f, 0.3f, 0.0f}, {}});
+  REQUIRE_THROWS_WITH(make_setup(scene, {}), Contains("test: fluid_blocks[1]: produces no particle"));
+
+  // y = 0.603 m snaps down to 6 cells of 0.1 m; the block's top row lands above 0.6 m.
+  Scene tall = block_scene(2, {1.0f, 0.603f, 0.0f}, {{0.0f, 0.0f, 0.0f}, {0.5f, 0.603f, 0.0f}, {}}, 0.003f);
+  tall.grid_resolution = 10;
+  REQUIRE_THROWS_WITH(make_setup(tall, {}), Contains("test: fluid_blocks[0]") && Contains("snapped to whole cells"));
+
+  // Particles farther apart than the kernel radius would never interact.
+  Scene sparse = block_scene(2, {1.0f, 1.0f, 0.0f}, {{0.0f, 0.0f, 0.0f}, {0.5f, 0.5f, 0.0f}, {}}, 0.05f);
+  sparse.grid_resolution = 256;
+  REQUIRE_THROWS_WITH(make_setup(sparse, {}), Contains("test: particle_spacing") && Contains("kernel radius"));
+}
+
+TEST_CASE("ground height sums the Gaussian hills", "[setup]") {
+  Scene scene;
+  scene.ground = {{{0.3f, 0.4f}, 0.05f, 0.1f}, {{0.8f, 0.8f}, -0.02f, 0.05f}};
+  CHECK(ground_height(scene, {0.3f, 0.4f}) == Approx(0.05 + -0.02 * std::exp(-(0.25 + 0.16) / (2 * 0.0025))));
+  CHECK(ground_height(scene, {0.4f, 0.4f}) == Approx(0.05 * std::exp(-0.5)).epsilon(1e-4));
+  CHECK(ground_height(scene, {0.8f, 0.8f}) == Approx(-0.02 + 0.05 * std::exp(-(0.25 + 0.16) / 0.02)));
+  CHECK(ground_height(Scene{}, {0.5f, 0.5f}) == 0.0f);
+}
+
+TEST_CASE("shipped scenes have the particle counts and grids they promise", "[setup]") {
+  const auto count_near = [](const char* file, int expected) {
+    INFO(file);
+    const SimulationSetup setup = setup_of(file);
+    CHECK(std::abs(setup.capacity - expected) <= expected / 50);
+    return setup;
+  };
+  CHECK(count_near("paper_2d_16k.json", 16000).grid_cells == glm::ivec3(256, 256, 1));
+  CHECK(count_near("paper_2d_32k.json", 32000).grid_cells == glm::ivec3(256, 256, 1));
+  CHECK(count_near("paper_2d_64k.json", 64000).grid_cells == glm::ivec3(256, 256, 1));
+  CHECK(count_near("paper_3d.json", 125000).grid_cells.x == 96);
+  CHECK(count_near("shallow_water.json", 42000).grid_cells == glm::ivec3(256, 256, 1));
+  CHECK(count_near("dam_break_3d.json", 60000).grid_cells.x == 64);
+  CHECK(count_near("dam_break_2d.json", 16000).initial_particles > 0);
+  CHECK(count_near("rest_pool_2d.json", 4096).grid_cells == glm::ivec3(64, 64, 1));
+  CHECK(count_near("symmetric_2d.json", 4096).grid_cells == glm::ivec3(64, 64, 1));
+  CHECK(count_near("small_3d.json", 8300).grid_cells.x == 24);
+  CHECK(count_near("obstacles_2d.json", 8160).grid_cells.x == 128);
+  CHECK(count_near("jet_2d.json", 6000).initial_particles == 0);
+}
+
+TEST_CASE("shipped scenes start every particle inside the wall margin", "[setup]") {
+  // The solver clamps particles `wall_margin_cells` inside the walls; a particle starting closer
+  // would be jolted on the first step.
+  for (const auto& path : shipped_scenes()) {
+    INFO(path.filename().string());
+    const SimulationSetup setup = make_setup(load_scene(path), {});
+    const float margin = setup.scene.wall_margin_cells * setup.cell_size;
+    for (const glm::vec4& p : setup.positions)
+      for (int a = 0; a < setup.dimension; ++a) {
+        INFO("axis " << a << " at " << p[a]);
+        REQUIRE(p[a] >= margin);
+        REQUIRE(p[a] <= setup.domain[a] - margin);
+      }
+  }
+}
+
+TEST_CASE("shipped scenes are in the stable weakly compressible regime", "[setup]") {
+  for (const auto& path : shipped_scenes()) {
+    INFO(path.filename().string());
+    const SimulationSetup setup = make_setup(load_scene(path), {});
+    const Scene& scene = setup.scene;
+    const double g = glm::length(scene.gravity);
+    double sound = std::sqrt(double(setup.stiffness) * setup.gamma);
+    if (scene.mode == SimulationMode::ShallowWater) {
+      // Waves travel at sqrt(g depth); the raised water of the shipped scene doubles the depth.
+      sound *= std::sqrt(2.0);
+    } else {
+      // Fastest expected flow: the initial or jet speed plus a free fall from the highest liquid.
+      double top = 0.0, speed = 0.0;
+      for (const FluidBlock& b : scene.fluid_blocks) {
+        top = std::max(top, double(b.max.y));
+        speed = std::max(speed, double(glm::length(b.velocity)));
+      }
+      for (const Emitter& e : scene.emitters) {
+        top = std::max(top, double(e.position.y));
+        speed = std::max(speed, double(glm::length(e.velocity)));
+      }
+      const double fastest = std::sqrt(speed * speed + 2.0 * g * top);
+      // Mach number at most 0.45: density varies by a few percent in the fastest flow.
+      CHECK(sound >= 2.2 * fastest);
+    }
+    // Acoustic CFL of 0.16: measured on rest_pool_2d, FLIP velocity noise grows steadily above ~0.2.
+    CHECK(scene.time_step <= 0.16 * setup.cell_size / sound);
+    // A rendered frame covers about 1/30 s of simulated time.
+    CHECK(scene.time_step * scene.substeps == Approx(1.0 / 30.0).epsilon(0.05));
+  }
+}

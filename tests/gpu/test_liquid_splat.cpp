@@ -1,0 +1,101 @@
+// Splat pass (section 3): the grid holds exactly the sum of the kernel over the particles.
+#include "liquid/node.h"
+#include "tests/gpu/liquid_helpers.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+namespace {
+
+double kernel(double d2, double r) {
+  const double t = std::max(1.0 - d2 / (r * r), 0.0);
+  return t * t * t;
+}
+
+// sum_p w(|x_cell - x_p|, r) on the CPU for every cell, in double precision.
+std::vector<double> analytic_weights(const liquid::SimulationSetup& s, const std::vector<glm::vec4>& positions) {
+  const glm::ivec3 n = s.grid_cells;
+  std::vector<double> w(size_t(n.x) * n.y * n.z, 0.0);
+  const double r = s.scene.kernel_radius_cells;
+  for (const glm::vec4& p : positions) {
+    const glm::dvec3 g = glm::dvec3(p) / double(s.cell_size);
+    for (int z = 0; z < n.z; ++z)
+      for (int y = 0; y < n.y; ++y)
+        for (int x = 0; x < n.x; ++x) {
+          const double dx = x + 0.5 - g.x, dy = y + 0.5 - g.y, dz = s.dimension == 3 ? z + 0.5 - g.z : 0.0;
+          w[(size_t(z) * n.y + y) * n.x + x] += kernel(dx * dx + dy * dy + dz * dz, r);
+        }
+  }
+  return w;
+}
+
+liquid::Scene single_particle_scene(int dimension, glm::vec3 at) {
+  liquid::Scene scene;
+  scene.name = "single_particle";
+  scene.dimension = dimension;
+  scene.domain = glm::vec3(0.32f);
+  scene.grid_resolution = 16;
+  scene.particle_spacing = 0.004f;
+  scene.gravity = glm::vec3(0.0f);
+  scene.substeps = 1;
+  scene.fluid_blocks.push_back({at - glm::vec3(0.0025f), at + glm::vec3(0.0025f), glm::vec3(0.5f, -0.25f, 0.125f)});
+  return scene;
+}
+
+void check_splat_matches(liquid::LiquidNode& node) {
+  const auto initial = node.setup().positions;
+  const auto velocities = node.setup().velocities;
+  test::run_steps(node, 1);  // the step's splat is of the initial positions
+  const std::vector<glm::vec4> splat = node.read_splat();
+  const std::vector<double> expected = analytic_weights(node.setup(), initial);
+  REQUIRE(splat.size() == expected.size());
+  double total = 0.0, total_expected = 0.0, worst = 0.0;
+  for (size_t i = 0; i < splat.size(); ++i) {
+    total += splat[i].a;
+    total_expected += expected[i];
+    worst = std::max(worst, std::abs(double(splat[i].a) - expected[i]));
+  }
+  INFO("total weight " << total << ", analytic " << total_expected << ", worst cell error " << worst);
+  REQUIRE(total_expected > 0.0);
+  CHECK(std::abs(total - total_expected) / total_expected < 1e-4);
+  CHECK(worst < 1e-4 * std::max(1.0, *std::max_element(expected.begin(), expected.end())));
+  REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+}  // namespace
+
+TEST_CASE("splat of one 2D particle is the kernel's shape with its velocity", "[gpu][liquid][splat]") {
+  liquid::LiquidNode node(test::gpu(), single_particle_scene(2, {0.1313f, 0.1777f, 0.0f}));
+  REQUIRE(node.active_particles() == 1);
+  check_splat_matches(node);
+  // rgb = w u: the velocity recovered from any covered cell is the particle's.
+  for (const glm::vec4& cell : node.read_splat())
+    if (cell.a > 1e-3f) {
+      CHECK(cell.r / cell.a == Approx(0.5f).epsilon(1e-4));
+      CHECK(cell.g / cell.a == Approx(-0.25f).epsilon(1e-4));
+    }
+}
+
+TEST_CASE("splat of one 3D particle reaches every slice of the kernel", "[gpu][liquid][splat]") {
+  liquid::LiquidNode node(test::gpu(), single_particle_scene(3, {0.1313f, 0.1777f, 0.1522f}));
+  REQUIRE(node.active_particles() == 1);
+  check_splat_matches(node);
+}
+
+TEST_CASE("splat of a 2D block sums every particle's kernel", "[gpu][liquid][splat]") {
+  liquid::Scene scene = single_particle_scene(2, {});
+  scene.fluid_blocks = {{{0.05f, 0.03f, 0.0f}, {0.17f, 0.13f, 0.0f}, {}}};
+  liquid::LiquidNode node(test::gpu(), scene);
+  REQUIRE(node.active_particles() > 500);
+  check_splat_matches(node);
+}
+
+TEST_CASE("splat of a 3D block sums every particle's kernel", "[gpu][liquid][splat]") {
+  liquid::Scene scene = single_particle_scene(3, {});
+  scene.particle_spacing = 0.012f;
+  scene.fluid_blocks = {{{0.05f, 0.03f, 0.07f}, {0.17f, 0.13f, 0.2f}, {}}};
+  liquid::LiquidNode node(test::gpu(), scene);
+  REQUIRE(node.active_particles() > 500);
+  check_splat_matches(node);
+}
