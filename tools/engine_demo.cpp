@@ -17,13 +17,6 @@
 
 namespace {
 
-engine::vk::Rgba8Image to_rgba8(const engine::graph::Readback& readback) {
-  const auto bytes = readback.bytes();
-  engine::vk::Rgba8Image image{readback.desc.width, readback.desc.height, std::vector<uint8_t>(bytes.size())};
-  std::memcpy(image.pixels.data(), bytes.data(), bytes.size());
-  return image;
-}
-
 int run(const std::filesystem::path& out_dir, uint32_t size, bool validation) {
   using namespace engine;
   std::filesystem::create_directories(out_dir);
@@ -48,8 +41,8 @@ int run(const std::filesystem::path& out_dir, uint32_t size, bool validation) {
   vk::CommandBuffer cmd(context);
   graph.execute(cmd.begin());
   cmd.submit_and_wait();
-  vk::write_png(out_dir / "pattern.png", to_rgba8(raw));
-  vk::write_png(out_dir / "pattern_fxaa.png", to_rgba8(final_image));
+  vk::write_png(out_dir / "pattern.png", raw.rgba8());
+  vk::write_png(out_dir / "pattern_fxaa.png", final_image.rgba8());
   std::printf("engine_demo: %s, wrote %s/pattern.png and pattern_fxaa.png\n", context.device_name().c_str(),
               out_dir.string().c_str());
   for (const auto& t : graph.read_timings()) std::printf("  %-16s %8.3f ms\n", t.name.c_str(), t.milliseconds);

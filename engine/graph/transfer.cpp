@@ -28,6 +28,15 @@ vk::Context& require_context(RenderGraph& graph, const std::string& pass) {
 
 }  // namespace
 
+vk::Rgba8Image Readback::rgba8() const {
+  if (desc.format != VK_FORMAT_R8G8B8A8_UNORM && desc.format != VK_FORMAT_R8G8B8A8_SRGB)
+    throw std::logic_error("Readback::rgba8: the image is not RGBA8");
+  const auto texels = bytes();
+  vk::Rgba8Image image{desc.width, desc.height, std::vector<uint8_t>(texels.size())};
+  std::memcpy(image.pixels.data(), texels.data(), texels.size());
+  return image;
+}
+
 std::span<const std::byte> Readback::bytes() const {
   buffer->invalidate();
   return {static_cast<const std::byte*>(buffer->mapped()), static_cast<size_t>(image_bytes(desc))};

@@ -5,6 +5,7 @@
 
 #include "engine/graph/render_graph.h"
 #include "engine/vk/buffer.h"
+#include "engine/vk/png.h"
 
 #include <cstddef>
 #include <memory>
@@ -19,6 +20,9 @@ struct Readback {
   vk::ImageDesc desc;
   // Tightly packed texels: width * height * depth_or_layers * texel size bytes.
   std::span<const std::byte> bytes() const;
+  // The texels as an 8-bit RGBA picture (for PNG output); throws std::logic_error unless the
+  // image is R8G8B8A8.
+  vk::Rgba8Image rgba8() const;
 };
 
 // Adds a pass copying the whole image into a new host-visible buffer.

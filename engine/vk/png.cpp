@@ -1,5 +1,7 @@
 #include "engine/vk/png.h"
 
+#include "engine/io/atomic_file.h"
+
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
@@ -7,7 +9,6 @@
 #include <stb_image_write.h>
 
 #include <cstdio>
-#include <fstream>
 #include <stdexcept>
 #include <string>
 
@@ -25,20 +26,7 @@ void write_png(const std::filesystem::path& path, const Rgba8Image& image) {
   if (!stbi_write_png_to_func(append, &encoded, int(image.width), int(image.height), 4, image.pixels.data(),
                               int(image.width) * 4))
     throw std::runtime_error(path.string() + ": PNG encoding failed");
-  std::filesystem::path temporary = path;
-  temporary += ".partial";
-  {
-    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-    if (!file) throw std::runtime_error(path.parent_path().string() + ": cannot write (" + path.filename().string() + ")");
-    file.write(reinterpret_cast<const char*>(encoded.data()), std::streamsize(encoded.size()));
-    file.close();
-    if (!file) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      throw std::runtime_error(path.string() + ": write failed (disk full?)");
-    }
-  }
-  std::filesystem::rename(temporary, path);
+  io::write_file_atomically(path, std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()));
 }
 
 Rgba8Image read_png(const std::filesystem::path& path) {

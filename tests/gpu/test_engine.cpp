@@ -23,13 +23,6 @@ namespace {
 
 constexpr uint32_t k_size = 192;
 
-vk::Rgba8Image to_rgba8(const graph::Readback& readback) {
-  const auto bytes = readback.bytes();
-  vk::Rgba8Image image{readback.desc.width, readback.desc.height, std::vector<uint8_t>(bytes.size())};
-  std::memcpy(image.pixels.data(), bytes.data(), bytes.size());
-  return image;
-}
-
 // Draws the aliased test pattern, then (optionally) FXAA, and reads both back.
 struct PatternFrames {
   vk::Rgba8Image pattern;
@@ -58,7 +51,7 @@ PatternFrames render_pattern(vk::Context& context, const std::string& drop_barri
   vk::CommandBuffer cmd(context);
   graph.execute(cmd.begin());
   cmd.submit_and_wait();
-  return {to_rgba8(pattern_back), to_rgba8(fxaa_back)};
+  return {pattern_back.rgba8(), fxaa_back.rgba8()};
 }
 
 }  // namespace

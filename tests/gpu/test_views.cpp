@@ -28,13 +28,6 @@ namespace {
 constexpr uint32_t k_width = 256;
 constexpr uint32_t k_height = 192;
 
-Rgba8Image to_rgba8(const engine::graph::Readback& readback) {
-  const auto bytes = readback.bytes();
-  Rgba8Image image{readback.desc.width, readback.desc.height, std::vector<uint8_t>(bytes.size())};
-  std::memcpy(image.pixels.data(), bytes.data(), bytes.size());
-  return image;
-}
-
 // Imports the node's current state (0 steps), adds `view`, reads its output back.
 Rgba8Image render(liquid::LiquidNode& node,
                   const std::function<ImageHandle(engine::graph::RenderGraph&, const liquid::LiquidImages&)>& view) {
@@ -46,7 +39,7 @@ Rgba8Image render(liquid::LiquidNode& node,
   engine::vk::CommandBuffer cmd(context);
   graph.execute(cmd.begin());
   cmd.submit_and_wait();
-  return to_rgba8(readback);
+  return readback.rgba8();
 }
 
 glm::ivec3 pixel(const Rgba8Image& image, int x, int y) {

@@ -1,0 +1,44 @@
+#include "engine/io/atomic_file.h"
+
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+
+namespace engine::io {
+
+void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
+  std::filesystem::path temporary = path;
+  temporary += ".partial";
+  {
+    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
+    if (!file) throw std::runtime_error(path.string() + ": cannot write (is the folder there and writable?)");
+    file.write(bytes.data(), std::streamsize(bytes.size()));
+    file.close();
+    if (!file) {
+      std::error_code ignored;
+      std::filesystem::remove(temporary, ignored);
+      throw std::runtime_error(path.string() + ": write failed (disk full?)");
+    }
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, path, error);
+  if (error) {
+    std::filesystem::remove(temporary, error);
+    throw std::runtime_error(path.string() + ": cannot rename into place");
+  }
+}
+
+void ensure_writable_folder(const std::filesystem::path& folder) {
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error) throw std::runtime_error(folder.string() + ": cannot create the output folder (" + error.message() + ")");
+  const std::filesystem::path probe = folder / ".write_probe";
+  {
+    std::ofstream file(probe, std::ios::trunc);
+    if (!file) throw std::runtime_error(folder.string() + ": the output folder is not writable");
+  }
+  std::filesystem::remove(probe, error);
+}
+
+}  // namespace engine::io
