@@ -44,6 +44,7 @@ struct SolverUniforms {
   glm::ivec4 counts;
   glm::ivec4 counts2;
   glm::vec4 shallow;
+  glm::vec4 wall_kernel_beyond[2];  // kernel mass beyond a wall k + 0.5 cells away, k = 0..7
   Obstacle obstacles[k_max_obstacles];
   glm::vec4 balls[k_max_balls];
   glm::vec4 ground[k_max_ground];
@@ -53,8 +54,8 @@ struct SolverUniforms {
 
 static_assert(sizeof(Obstacle) == 48);
 static_assert(sizeof(EmitterRange) == 48);
-static_assert(offsetof(SolverUniforms, obstacles) == 128);
-static_assert(offsetof(SolverUniforms, balls) == 128 + 48 * k_max_obstacles);
-static_assert(sizeof(SolverUniforms) == 128 + 48 * 8 + 16 * 32 + 16 * 16 + 32 * 4 + 48 * 4);
+static_assert(offsetof(SolverUniforms, obstacles) == 160);
+static_assert(offsetof(SolverUniforms, balls) == 160 + 48 * k_max_obstacles);
+static_assert(sizeof(SolverUniforms) == 160 + 48 * 8 + 16 * 32 + 16 * 16 + 32 * 4 + 48 * 4);
 
 }  // namespace liquid::gpu

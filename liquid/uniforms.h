@@ -37,6 +37,11 @@ struct StepInputs {
 // emitters than the uniform block holds (limits in gpu_types.h).
 gpu::SolverUniforms make_uniforms(const SimulationSetup& setup, const StepInputs& step);
 
+// Fraction of the kernel w = (1 - d^2/r^2)^3's mass that lies more than `distance_cells` beyond a
+// plane: its profile across a plane is (1 - z^2/r^2)^(3 + (d - 1)/2). The grid pass divides the
+// splatted density by the share inside the domain, so walls do not read as low density.
+double kernel_mass_beyond_wall(int dimension, double radius_cells, double distance_cells);
+
 // Wall clamp distance (m) and obstacle density band (m) the solver uses for this setup.
 float wall_margin(const SimulationSetup& setup);
 float obstacle_band(const SimulationSetup& setup);

@@ -39,6 +39,7 @@ layout(std140, set = 0, binding = 0) uniform SolverUniforms {
   ivec4 counts;       // x particle texture width, y active before the step, z active after emission, w obstacles
   ivec4 counts2;      // x ground hills, y brushes, z emitters, w pressure form (0 clamped Tait, 1 printed: shallow water, 'chapter')
   vec4 shallow;       // x rest depth (m)
+  vec4 wall_kernel_beyond[2];  // [k / 4][k % 4]: fraction of the kernel's mass beyond a wall k + 0.5 cells away
   Obstacle obstacles[MAX_OBSTACLES];
   vec4 balls[MAX_BALLS];   // metaballs: xyz centre relative to the obstacle centre (m), w radius (m)
   vec4 ground[MAX_GROUND];  // shallow water hills: xy centre (m), z height (m), w width (m)

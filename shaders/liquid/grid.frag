@@ -20,21 +20,13 @@ layout(location = 1) out float out_density;
 
 const float k_fluid_epsilon = 1e-6;
 
-// Fraction of the kernel's mass that lies more than `a` cells beyond a plane (a wall), for
-// w = (1 - d^2/r^2)^3: its profile across a plane is (1 - z^2/r^2)^(3 + (d - 1)/2).
+// Fraction of the kernel's mass beyond a wall `a` cells from a cell centre. Cell centres sit
+// k + 0.5 cells from a wall, so the CPU tabulates the eight values k = 0..7 (r is at most 8 cells)
+// once per step (liquid/uniforms.cpp) instead of integrating here for every neighbour.
 float kernel_mass_beyond(float a) {
-  float r = u.kernel.x;
-  if (a >= r) return 0.0;
-  float exponent = DIM == 3 ? 4.0 : 3.5;
-  float beyond = 0.0, total = 0.0;
-  const int n = 16;
-  for (int i = 0; i < n; ++i) {
-    float z = -r + (float(i) + 0.5) * (2.0 * r / float(n));
-    float profile = pow(max(1.0 - z * z / (r * r), 0.0), exponent);
-    total += profile;
-    if (z > a) beyond += profile;
-  }
-  return beyond / total;
+  int k = int(a);
+  if (k >= 8 || a >= u.kernel.x) return 0.0;
+  return u.wall_kernel_beyond[k / 4][k % 4];
 }
 
 // Near a wall the kernel is cut off and the splatted density reads low, which would pull liquid

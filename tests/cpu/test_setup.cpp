@@ -2,6 +2,7 @@
 // lattice, kernel normalisation and rest density, emitters, device limits, and the physical
 // sanity of every shipped scene.
 #include "liquid/setup.h"
+#include "liquid/uniforms.h"
 
 #include <catch2/catch.hpp>
 
@@ -373,4 +374,31 @@ TEST_CASE("shipped scenes are in the stable weakly compressible regime", "[setup
     // A rendered frame covers about 1/30 s of simulated time.
     CHECK(scene.time_step * scene.substeps == Approx(1.0 / 30.0).epsilon(0.05));
   }
+}
+
+TEST_CASE("the wall table holds the kernel's mass beyond a plane", "[setup][uniforms]") {
+  for (int dimension : {2, 3}) {
+    for (double r : {1.5, 3.0, 8.0}) {
+      // A plane through the centre cuts the symmetric kernel in half; none is beyond r.
+      CHECK(liquid::kernel_mass_beyond_wall(dimension, r, 0.0) == Approx(0.5).margin(1e-3));
+      CHECK(liquid::kernel_mass_beyond_wall(dimension, r, r) == 0.0);
+      double previous = 0.5;
+      for (double a = 0.5; a < r; a += 1.0) {
+        const double beyond = liquid::kernel_mass_beyond_wall(dimension, r, a);
+        CHECK(beyond <= previous);
+        CHECK(beyond >= 0.0);
+        previous = beyond;
+      }
+    }
+  }
+  // 2D, r = 3, half a cell away: the share of (1 - z^2/9)^3.5 beyond z = 0.5 is 0.3121; the
+  // solver's 16-interval rule gives 0.3565 (see uniforms.cpp for why it is kept).
+  CHECK(liquid::kernel_mass_beyond_wall(2, 3.0, 0.5) == Approx(0.3565).margin(1e-3));
+  // The uniform block carries the table for k + 0.5 cells, k = 0..7.
+  liquid::SimulationSetup setup;
+  setup.dimension = 3;
+  setup.scene.kernel_radius_cells = 3.0f;
+  const liquid::gpu::SolverUniforms u = liquid::make_uniforms(setup, {});
+  CHECK(u.wall_kernel_beyond[0][1] == Approx(liquid::kernel_mass_beyond_wall(3, 3.0, 1.5)));
+  CHECK(u.wall_kernel_beyond[0][3] == 0.0f);
 }

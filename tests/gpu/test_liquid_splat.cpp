@@ -99,3 +99,29 @@ TEST_CASE("splat of a 3D block sums every particle's kernel", "[gpu][liquid][spl
   REQUIRE(node.active_particles() > 500);
   check_splat_matches(node);
 }
+
+TEST_CASE("splat into RGBA16F (the paper's format) loses a bounded share of the density", "[gpu][liquid][splat]") {
+  // The chapter splats into 16-bit floats. Each blend rounds the running sum to 11 significant
+  // bits (on lavapipe, toward zero), so the summed density reads low, against 1e-4 for RGBA32F
+  // (the default). The loss grows with the particles per cell: measured 5.1% for this block (about
+  // 25 particles per cell, sums near 70); this keeps it bounded and shows the rounding is real.
+  liquid::Scene scene = single_particle_scene(2, {});
+  scene.fluid_blocks = {{{0.05f, 0.03f, 0.0f}, {0.17f, 0.13f, 0.0f}, {}}};
+  scene.splat_format = liquid::SplatFormat::Rgba16f;
+  liquid::LiquidNode node(test::gpu(), scene);
+  const auto initial = node.setup().positions;
+  test::run_steps(node, 1);
+  const std::vector<glm::vec4> splat = node.read_splat();
+  const std::vector<double> expected = analytic_weights(node.setup(), initial);
+  REQUIRE(splat.size() == expected.size());
+  double total = 0.0, total_expected = 0.0;
+  for (size_t i = 0; i < splat.size(); ++i) {
+    total += splat[i].a;
+    total_expected += expected[i];
+  }
+  const double relative_error = (total - total_expected) / total_expected;
+  WARN("RGBA16F splat: summed density off by " << relative_error * 100.0 << "% (RGBA32F: under 0.01%)");
+  CHECK(std::abs(relative_error) < 0.08);
+  CHECK(std::abs(relative_error) > 1e-5);  // 16-bit rounding is really in effect
+  REQUIRE_NO_VALIDATION_MESSAGES();
+}
