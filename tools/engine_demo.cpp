@@ -9,6 +9,8 @@
 #include "engine/vk/context.h"
 #include "engine/vk/png.h"
 
+#include "tools/cli.h"
+
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -63,7 +65,7 @@ int main(int argc, char** argv) {
   app.add_option("-o,--out", out_dir, "output folder");
   app.add_option("--size", size, "image size in pixels")->check(CLI::Range(16u, 4096u));
   app.add_flag("--validation", validation, "enable the Vulkan validation layer");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto exit_code = tools::parse_arguments(app, argc, argv, "engine_demo")) return *exit_code;
   try {
     return run(out_dir, size, validation);
   } catch (const std::exception& error) {

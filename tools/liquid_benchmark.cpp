@@ -3,6 +3,7 @@
 // Reports wall time per frame and step, the GPU time of every pass, steps and particles per
 // second, beside the paper's Quadro 2000M figures: a table on the terminal and a JSON file that
 // tools/plot_benchmark.py turns into charts.
+#include "engine/io/atomic_file.h"
 #include "engine/graph/render_graph.h"
 #include "engine/vk/commands.h"
 #include "engine/vk/context.h"
@@ -11,6 +12,8 @@
 #include "liquid/render/renderer.h"
 #include "liquid/scene.h"
 #include "liquid/setup.h"
+
+#include "tools/cli.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -521,25 +524,6 @@ std::string utc_now() {
   return text;
 }
 
-// Writes next to the target and renames, so a crash never leaves a half-written file behind.
-void write_json_atomically(const fs::path& path, const json& document) {
-  if (path.has_parent_path()) fs::create_directories(path.parent_path());
-  fs::path temporary = path;
-  temporary += ".partial";
-  {
-    std::ofstream file(temporary, std::ios::trunc);
-    if (!file) throw std::runtime_error(path.string() + ": cannot write");
-    file << document.dump(2) << '\n';
-    file.close();
-    if (!file) {
-      std::error_code ignored;
-      fs::remove(temporary, ignored);
-      throw std::runtime_error(path.string() + ": write failed (disk full?)");
-    }
-  }
-  fs::rename(temporary, path);
-}
-
 // ---------------------------------------------------------------------------------------------
 
 void print_plan(const std::vector<Configuration>& plan, const Options& o) {
@@ -564,6 +548,8 @@ int run(const Options& o, const std::string& command_line) {
     list_plan(plan, o);
     return 0;
   }
+  // Fail now, not after minutes of measuring, when the JSON cannot be written.
+  engine::io::ensure_writable_folder(o.json_path.has_parent_path() ? o.json_path.parent_path() : fs::path("."));
   engine::vk::Context context(engine::vk::ContextOptions{.validation = o.validation});
   std::printf("device: %s; driver: %s; host: %u hardware threads\n", context.device_name().c_str(),
               context.driver_description().c_str(), std::thread::hardware_concurrency());
@@ -607,7 +593,7 @@ int run(const Options& o, const std::string& command_line) {
   for (const Result& r : results) document["results"].push_back(result_json(r, o));
   const uint32_t messages = context.validation_message_count();
   document["validation_messages"] = messages;
-  write_json_atomically(o.json_path, document);
+  engine::io::write_file_atomically(o.json_path, document.dump(2) + "\n");
   std::printf("\nwrote %s; total wall time %.1f s\n", o.json_path.string().c_str(), wall_s);
   if (o.validation) std::printf("validation messages: %u\n", messages);
 
@@ -651,14 +637,7 @@ int main(int argc, char** argv) {
   app.add_flag("--no-scaling", o.no_scaling, "skip the scaling set")->excludes(scaling);
   app.add_flag("--list", o.list, "list the configurations and their estimated times, run nothing");
   app.add_flag("--validation", o.validation, "enable the Vulkan validation layer (exit 1 on any message)");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::Success& help) {  // --help
-    return app.exit(help);
-  } catch (const CLI::ParseError& error) {
-    std::fprintf(stderr, "liquid_benchmark: error: %s\n", error.what());
-    return 2;
-  }
+  if (const auto exit_code = tools::parse_arguments(app, argc, argv, "liquid_benchmark")) return *exit_code;
   if (o.quick) {
     if (warmup->count() == 0) o.warmup = 1;
     if (runs->count() == 0) o.runs = 2;

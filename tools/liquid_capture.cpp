@@ -14,6 +14,8 @@
 #include "liquid/scene.h"
 #include "tools/progress.h"
 
+#include "tools/cli.h"
+
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -185,7 +187,7 @@ int main(int argc, char** argv) {
   app.add_flag("--draw-particles", options.draw_particles, "2D views: draw the particles as points over the liquid");
   app.add_flag("--export-particles", options.export_particles, "write particles_NNNNN.ply (binary PLY) per frame");
   app.add_flag("--validation", options.validation, "enable the Vulkan validation layer; any message fails the run");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto exit_code = tools::parse_arguments(app, argc, argv, "liquid_capture")) return *exit_code;
   try {
     return run(options);
   } catch (const std::exception& error) {

@@ -1,10 +1,13 @@
 // liquid_run: runs a scene headless for N simulation steps (no rendering) and prints the solver's
 // diagnostics as it goes and the median GPU time of each pass at the end.
 #include "engine/graph/render_graph.h"
+#include "engine/io/atomic_file.h"
 #include "engine/vk/commands.h"
 #include "engine/vk/context.h"
 #include "liquid/node.h"
 #include "liquid/scene.h"
+
+#include "tools/cli.h"
 
 #include <CLI/CLI.hpp>
 
@@ -64,14 +67,15 @@ int run(const std::string& scene_path, int steps, int report_every, bool validat
     if (done / report_every > reports_before || done == steps) print_diagnostics(node.diagnose());
   }
   if (!dump_path.empty()) {
-    std::FILE* f = std::fopen(dump_path.c_str(), "w");
-    if (!f) throw std::runtime_error(dump_path + ": cannot write");
     const auto snapshot = node.read_particles();
-    std::fprintf(f, "x,y,z,vx,vy,vz\n");
-    for (size_t i = 0; i < snapshot.positions.size(); ++i)
-      std::fprintf(f, "%g,%g,%g,%g,%g,%g\n", snapshot.positions[i].x, snapshot.positions[i].y, snapshot.positions[i].z,
-                   snapshot.velocities[i].x, snapshot.velocities[i].y, snapshot.velocities[i].z);
-    std::fclose(f);
+    std::string csv = "x,y,z,vx,vy,vz\n";
+    char line[192];
+    for (size_t i = 0; i < snapshot.positions.size(); ++i) {
+      const glm::vec4 &p = snapshot.positions[i], &v = snapshot.velocities[i];
+      std::snprintf(line, sizeof line, "%g,%g,%g,%g,%g,%g\n", p.x, p.y, p.z, v.x, v.y, v.z);
+      csv += line;
+    }
+    engine::io::write_file_atomically(dump_path, csv);
   }
   std::printf("median GPU time per pass (ms):");
   for (const auto& [name, values] : pass_ms) std::printf("  %s %.3f", name.c_str(), median(values));
@@ -96,7 +100,7 @@ int main(int argc, char** argv) {
   app.add_option("-n,--steps", steps, "simulation steps")->check(CLI::Range(1, 10000000));
   app.add_option("-r,--report-every", report_every, "steps between diagnostics lines")->check(CLI::Range(1, 1000000));
   app.add_flag("--validation", validation, "enable the Vulkan validation layer");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto exit_code = tools::parse_arguments(app, argc, argv, "liquid_run")) return *exit_code;
   try {
     return run(scene, steps, report_every, validation, dump_path);
   } catch (const std::exception& error) {
