@@ -1,5 +1,7 @@
 #include "liquid/setup.h"
 
+#include "liquid/obstacles.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -98,9 +100,20 @@ void check_grid_limits(const Scene& scene, const SimulationSetup& setup, const D
                     " (max_framebuffer_layers)");
 }
 
-// Fills one block's lattice: min + (i + 0.5) s per axis, no jitter, computed in double. A block
-// whose extent is a whole number of spacings is filled symmetrically, so mirrored blocks give
-// mirrored particles. Fails if the lattice pokes out of the snapped domain.
+// Whether a lattice point lies inside (or within half a spacing of) an obstacle at t = 0. Such a
+// particle would start inside the obstacle's artificial pressure (section 6) and be blasted out at
+// tens of m/s on the first step, so the block is carved around the obstacles instead.
+bool inside_any_obstacle(const Scene& scene, glm::vec3 p) {
+  for (const Obstacle& o : scene.obstacles)
+    if (obstacle_distance(o, scripted_pose(o, 0.0).center, p, scene.dimension) < 0.5f * scene.particle_spacing)
+      return true;
+  return false;
+}
+
+// Fills one block's lattice: min + (i + 0.5) s per axis, no jitter, computed in double, leaving
+// out the points inside obstacles. A block whose extent is a whole number of spacings is filled
+// symmetrically, so mirrored blocks give mirrored particles. Fails if the lattice pokes out of the
+// snapped domain.
 void fill_block(const Scene& scene, size_t index, glm::ivec3 counts, SimulationSetup& setup) {
   const FluidBlock& block = scene.fluid_blocks[index];
   const double s = scene.particle_spacing;
@@ -118,6 +131,7 @@ void fill_block(const Scene& scene, size_t index, glm::ivec3 counts, SimulationS
         const double x = double(block.min.x) + (i + 0.5) * s;
         const double y = double(block.min.y) + (j + 0.5) * s;
         const double z = scene.dimension == 3 ? double(block.min.z) + (k + 0.5) * s : 0.0;
+        if (inside_any_obstacle(scene, glm::vec3(float(x), float(y), float(z)))) continue;
         setup.positions.emplace_back(float(x), float(y), float(z), 1.0f);
         setup.velocities.push_back(velocity);
       }
@@ -225,6 +239,12 @@ SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
   setup.positions.reserve(size_t(initial));
   setup.velocities.reserve(size_t(initial));
   for (size_t i = 0; i < scene.fluid_blocks.size(); ++i) fill_block(scene, i, counts[i], setup);
+  // Obstacles may have carved lattice points out: the counts are those actually placed (the
+  // texture and the default grid were sized from the full lattice, which only leaves spare texels).
+  const int carved = setup.initial_particles - int(setup.positions.size());
+  setup.initial_particles -= carved;
+  setup.capacity -= carved;
+  if (setup.capacity <= 0) fail(scene, "the obstacles cover every particle of the fluid blocks");
 
   const double mass = scene.density * std::pow(spacing, d);
   const double scale = mass / (std::pow(h, d) * kernel_integral_cells(d, radius));

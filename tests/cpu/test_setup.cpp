@@ -402,3 +402,17 @@ TEST_CASE("the wall table holds the kernel's mass beyond a plane", "[setup][unif
   CHECK(u.wall_kernel_beyond[0][1] == Approx(liquid::kernel_mass_beyond_wall(3, 3.0, 1.5)));
   CHECK(u.wall_kernel_beyond[0][3] == 0.0f);
 }
+
+TEST_CASE("fluid blocks are carved around the obstacles they overlap", "[setup]") {
+  const Scene scene = parse_scene(R"({
+    "name": "carved", "dimension": 2, "domain": [1.0, 0.5], "grid_resolution": 64,
+    "particle_spacing": 0.01, "fluid_blocks": [ { "min": [0.0, 0.0], "max": [1.0, 0.2] } ],
+    "obstacles": [ { "shape": "sphere", "center": [0.5, 0.1], "radius": 0.08 } ] })",
+                                  "carved.json");
+  const SimulationSetup setup = make_setup(scene, {});
+  // 100 x 20 lattice points; a disc of radius 0.08 + half a spacing covers about pi 0.085^2 / 0.01^2.
+  CHECK(setup.initial_particles == int(setup.positions.size()));
+  CHECK(setup.capacity == setup.initial_particles);
+  CHECK(2000 - setup.initial_particles == Approx(3.14159 * 85 * 85 / 100).epsilon(0.1));
+  for (const glm::vec4& p : setup.positions) REQUIRE(glm::length(glm::vec2(p) - glm::vec2(0.5f, 0.1f)) >= 0.085f);
+}
