@@ -7,7 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
+#include <vector>
 
 namespace liquid {
 
@@ -90,7 +92,22 @@ HeightFieldPass::HeightFieldPass(engine::vk::Context& context, const LiquidNode&
                                  {2, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
                     .push_constant_size = sizeof(HeightFieldPush)}),
       linear_(context, VK_FILTER_LINEAR),
-      uniforms_(context, 4096, 3) {}
+      uniforms_(context, 4096, 3) {
+  // Vertex g = (x, y) of the (cells + 2)^2 grid (cells plus the edge ring) has index y (n.x + 2) + x.
+  const glm::ivec2 n(node.setup().grid_cells.x, node.setup().grid_cells.y);
+  const uint32_t row = uint32_t(n.x + 2);
+  static constexpr glm::uvec2 k_corners[6] = {{0, 0}, {1, 0}, {0, 1}, {1, 0}, {1, 1}, {0, 1}};
+  std::vector<uint32_t> indices;
+  indices.reserve(6u * uint32_t(n.x + 1) * uint32_t(n.y + 1));
+  for (uint32_t y = 0; y <= uint32_t(n.y); ++y)
+    for (uint32_t x = 0; x <= uint32_t(n.x); ++x)
+      for (const glm::uvec2& c : k_corners) indices.push_back((y + c.y) * row + x + c.x);
+  index_count_ = uint32_t(indices.size());
+  indices_ = engine::vk::Buffer(context, indices.size() * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                                engine::vk::MemoryUsage::HostVisible, "liquid.height_field.indices");
+  std::memcpy(indices_.mapped(), indices.data(), indices.size() * sizeof(uint32_t));
+  indices_.flush();
+}
 
 ImageHandle HeightFieldPass::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
                                     const RenderSettings& settings, const CameraView& camera) {
@@ -113,10 +130,6 @@ ImageHandle HeightFieldPass::add_to(engine::graph::RenderGraph& graph, const Liq
                                  glm::vec4(rest_depth, k_dry_fraction * rest_depth, k_vertical_scale, base)};
   const engine::vk::UniformSlice view_slice = uniforms_.push(view);
 
-  // 6 vertices per quad between neighbouring vertices of the (cells + 2)^2 grid with its edge ring.
-  const glm::ivec2 cells(setup.grid_cells.x, setup.grid_cells.y);
-  const uint32_t vertex_count = 6u * uint32_t(cells.x + 1) * uint32_t(cells.y + 1);
-
   struct Data {
     ImageHandle color;
     ImageHandle depth;
@@ -137,17 +150,18 @@ ImageHandle HeightFieldPass::add_to(engine::graph::RenderGraph& graph, const Liq
             d.depth = b.write(b.create("liquid.height_field.depth", depth_desc), Access::DepthAttachmentWrite,
                               engine::graph::clear_depth(1.0f));
           },
-          [this, solver, view_slice, density, vertex_count](PassContext& ctx, const Data&) {
+          [this, solver, view_slice, density](PassContext& ctx, const Data&) {
             pipeline_.bind(ctx.cmd, ctx.width, ctx.height);
             pipeline_.push_uniform(ctx.cmd, 0, solver.buffer, solver.offset, solver.size);
             pipeline_.push_uniform(ctx.cmd, 1, view_slice.buffer, view_slice.offset, view_slice.size);
             pipeline_.push_image(ctx.cmd, 2, ctx.image(density).sampled_view(), linear_.handle());
             // Ground first (opaque), then the water over it; rows run from far (scene y = 0) to
             // near for the default camera, so the blended water is drawn back to front.
+            vkCmdBindIndexBuffer(ctx.cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
             pipeline_.push_constants(ctx.cmd, HeightFieldPush{k_ground_layer});
-            vkCmdDraw(ctx.cmd, vertex_count, 1, 0, 0);
+            vkCmdDrawIndexed(ctx.cmd, index_count_, 1, 0, 0, 0);
             pipeline_.push_constants(ctx.cmd, HeightFieldPush{k_water_layer});
-            vkCmdDraw(ctx.cmd, vertex_count, 1, 0, 0);
+            vkCmdDrawIndexed(ctx.cmd, index_count_, 1, 0, 0, 0);
           })
       .color;
 }

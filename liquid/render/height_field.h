@@ -4,6 +4,7 @@
 #pragma once
 
 #include "engine/graph/render_graph.h"
+#include "engine/vk/buffer.h"
 #include "engine/vk/pipeline.h"
 #include "engine/vk/uniform_arena.h"
 #include "engine/vk/sampler.h"
@@ -18,7 +19,8 @@ namespace liquid {
 CameraView default_height_field_camera(const SimulationSetup& setup);
 
 // Draws a shallow-water node's ground and water as two meshes of one vertex per grid cell, made in
-// the vertex shader from gl_VertexIndex, with depth testing.
+// the vertex shader from gl_VertexIndex, with depth testing. An index buffer shares each vertex
+// between its six triangles, so the vertex work (five surface lookups each) is done once per vertex.
 class HeightFieldPass {
  public:
   // Throws std::invalid_argument when the node is not a 2D shallow-water simulation.
@@ -36,6 +38,8 @@ class HeightFieldPass {
   engine::vk::GraphicsPipeline pipeline_;
   engine::vk::Sampler linear_;
   engine::vk::UniformArena uniforms_;
+  engine::vk::Buffer indices_;  // 6 per quad of the (cells + 2)^2 vertex grid, far rows first
+  uint32_t index_count_ = 0;
 };
 
 }  // namespace liquid

@@ -1,6 +1,7 @@
 #version 450
 // Shallow-water view (section 6, figure 4), vertex stage: one vertex per grid cell, generated from
-// gl_VertexIndex (6 per quad, no vertex buffer), on the horizontal plane (scene x -> world x,
+// gl_VertexIndex (vertex (x, y) of the grid with its edge ring is index y (n.x + 2) + x; an index
+// buffer makes the triangles), on the horizontal plane (scene x -> world x,
 // scene y -> world z, up = world y). Layer 0 is the ground b(x, y); layer 1 the water surface
 // b + h with h = rest_depth * rho / rho0. An extra ring of vertices on the domain's edge drops to
 // a base height (ground) or to the ground (water), so both meshes get side walls.
@@ -24,8 +25,6 @@ layout(location = 1) out vec3 v_normal;
 layout(location = 2) out float v_depth;  // water depth h (m)
 layout(location = 3) out vec2 v_outward;  // side walls: outward direction (x, z); 0 on the top
 
-const ivec2 k_corners[6] = ivec2[](ivec2(0, 0), ivec2(1, 0), ivec2(0, 1), ivec2(1, 0), ivec2(1, 1), ivec2(0, 1));
-
 // h at cell c (clamped to the grid), m. The lookup is at the texel centre: exactly the cell.
 float water_depth(ivec2 c) {
   ivec2 n = grid_cells().xy;
@@ -44,9 +43,8 @@ void main() {
   ivec2 n = grid_cells().xy;
   float h = cell_size();
   float scale = r.params.z;
-  int quad = gl_VertexIndex / 6;
   // Vertex g in [0, n + 1]^2: g - 1 is the cell, 0 and n + 1 are the edge ring.
-  ivec2 g = ivec2(quad % (n.x + 1), quad / (n.x + 1)) + k_corners[gl_VertexIndex % 6];
+  ivec2 g = ivec2(gl_VertexIndex % (n.x + 2), gl_VertexIndex / (n.x + 2));
   ivec2 c = clamp(g - 1, ivec2(0), n - 1);
   vec2 xy = clamp((vec2(g) - 0.5) * h, vec2(0.0), u.domain_h.xy);
   bool edge = any(equal(g, ivec2(0))) || any(equal(g, n + 1));
