@@ -4,7 +4,8 @@
 // occupied bricks in sub-cell steps, refine the crossing by bisection, and take the normal from the
 // density gradient. Shading: Fresnel reflection of a sky, refraction onto the floor tinted by
 // Beer-Lambert absorption over the liquid's thickness, and a sun highlight. Obstacles (the solver's
-// analytic shapes) and a tiled floor are ray traced in the same pass. Writes colour and depth.
+// analytic shapes), a tiled floor and the tank's frame (the domain box's edges) are ray traced in the
+// same pass. Writes colour and depth.
 #extension GL_GOOGLE_include_directive : require
 #define DIM 3
 #include "liquid/common.glsl"
@@ -193,6 +194,35 @@ vec3 density_normal(vec3 p) {
   return len > 1e-6 ? -g / len : vec3(0.0, 1.0, 0.0);
 }
 
+// The tank's frame: the 12 edges of the domain box as thin bars (radius in metres), so the walls
+// the liquid rests against are visible. Returns the nearest hit distance along the ray, or k_no_hit.
+float trace_tank_frame(vec3 origin, vec3 dir, float radius) {
+  vec3 d = u.domain_h.xyz;
+  float best = k_no_hit;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int corner = 0; corner < 4; ++corner) {
+      // Edge along `axis` at the corner of the other two axes picked by the two bits of `corner`.
+      vec3 a = vec3(0.0);
+      int u_axis = (axis + 1) % 3, v_axis = (axis + 2) % 3;
+      a[u_axis] = (corner & 1) != 0 ? d[u_axis] : 0.0;
+      a[v_axis] = (corner & 2) != 0 ? d[v_axis] : 0.0;
+      vec3 e = vec3(0.0);
+      e[axis] = d[axis];
+      // Closest approach of the ray o + t dir and the segment a + s e, s in [0, 1].
+      vec3 w = origin - a;
+      float b = dot(dir, e), c = dot(e, e), dd = dot(dir, w), ee = dot(e, w);
+      float denom = c - b * b;
+      if (abs(denom) < 1e-9) continue;
+      float t = (b * ee - c * dd) / denom;
+      float s = clamp((ee + t * b) / c, 0.0, 1.0);
+      t = dot(a + s * e - origin, dir);
+      if (t <= 0.0) continue;
+      if (length(origin + t * dir - (a + s * e)) < radius && t < best) best = t;
+    }
+  }
+  return best;
+}
+
 float clip_depth(vec3 p) {
   vec4 clip = r.view_projection * vec4(p, 1.0);
   return clamp(clip.z / clip.w, 0.0, 1.0);
@@ -239,6 +269,14 @@ void main() {
     depth_t = t_liquid;
   } else {
     color = background(origin, dir, depth_t);
+  }
+
+  // The tank frame, in front of whatever else this pixel shows.
+  float frame_radius = 0.004 * max(max(u.domain_h.x, u.domain_h.y), u.domain_h.z);
+  float t_frame = trace_tank_frame(origin, dir, frame_radius);
+  if (t_frame < depth_t) {
+    color = vec3(0.16, 0.17, 0.19) * (0.6 + 0.4 * max(r.sun_direction.y, 0.0));
+    depth_t = t_frame;
   }
 
   gl_FragDepth = depth_t < k_no_hit ? clip_depth(origin + dir * depth_t) : 1.0;
