@@ -150,9 +150,11 @@ std::vector<glm::vec4> LiquidNode::read_splat() {
   return out;
 }
 
-Diagnostics LiquidNode::diagnose() {
+Diagnostics LiquidNode::diagnose() { return diagnose(read_particles()); }
+
+Diagnostics LiquidNode::diagnose(const ParticleSnapshot& particles) {
   const Diagnostics d =
-      compute_diagnostics(setup_, read_particles(), read_density_ratio(), obstacle_poses(time_), step_, time_);
+      compute_diagnostics(setup_, particles, read_density_ratio(), obstacle_poses(time_), step_, time_);
   check_stable(d, energy_bound_);
   return d;
 }

@@ -71,6 +71,8 @@ class LiquidNode {
   std::vector<glm::vec4> read_splat();
   // Diagnostics of the current state; throws SimulationError when the state is unstable.
   Diagnostics diagnose();
+  // The same from particles the host already read back (read_particles()), saving a download.
+  Diagnostics diagnose(const ParticleSnapshot& particles);
   double energy_bound() const { return energy_bound_; }
 
   LiquidState& state() { return *state_; }

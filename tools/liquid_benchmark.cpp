@@ -130,8 +130,9 @@ std::string fill_emitters_up_front(liquid::Scene& scene) {
   const float top = d.y - 0.05f * d.y;
   scene.fluid_blocks.push_back({glm::vec3(0.5f * (d.x - edge), top - edge, 0.5f * (d.z - edge)),
                                 glm::vec3(0.5f * (d.x + edge), top, 0.5f * (d.z + edge)), glm::vec3(0.0f)});
-  return "the emitter's " + std::to_string(capacity) + " particles are placed up front as a " + std::to_string(side) +
-         "^3 block above the spheres, so the scene runs at capacity from the first frame";
+  return "the emitter's " + std::to_string(capacity) + " particles are replaced by a " + std::to_string(side) +
+         "^3 block (" + std::to_string(side * side * side) +
+         " particles) above the spheres, so the scene runs at capacity from the first frame";
 }
 
 // A 2D scene with one block of about `count` particles on its lattice (the block's shape kept).

@@ -12,9 +12,8 @@
 #include "liquid/node.h"
 #include "liquid/render/renderer.h"
 #include "liquid/scene.h"
-#include "tools/progress.h"
-
 #include "tools/cli.h"
+#include "tools/progress.h"
 
 #include <CLI/CLI.hpp>
 
@@ -22,8 +21,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
-#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -53,28 +52,54 @@ struct FrameStats {
   std::map<std::string, double> pass_ms;  // summed over the frame's passes of that name
 };
 
-std::string format_stats(const std::vector<FrameStats>& rows) {
-  std::set<std::string> passes;
-  for (const auto& r : rows)
-    for (const auto& [name, ms] : r.pass_ms) passes.insert(name);
+// stats.csv: a header naming the passes of the first frame (every frame declares the same ones),
+// then one row per frame.
+std::string stats_header(const FrameStats& first) {
+  std::string header =
+      "frame,step,time_s,active_particles,outside_domain,inside_obstacles,non_finite,max_density_ratio,mass_kg,"
+      "kinetic_energy_J,max_speed_m_s,wall_ms";
+  for (const auto& [name, ms] : first.pass_ms) header += ",gpu_ms." + name;
+  return header + "\n";
+}
+
+std::string stats_row(const FrameStats& row, const FrameStats& first) {
+  const liquid::Diagnostics& d = row.diagnostics;
   std::ostringstream out;
-  out << "frame,step,time_s,active_particles,outside_domain,inside_obstacles,non_finite,max_density_ratio,mass_kg,"
-         "kinetic_energy_J,max_speed_m_s,wall_ms";
-  for (const auto& name : passes) out << ",gpu_ms." << name;
-  out << "\n";
-  for (const auto& r : rows) {
-    const liquid::Diagnostics& d = r.diagnostics;
-    out << r.frame << ',' << d.step << ',' << d.time << ',' << d.active_particles << ',' << d.outside_domain << ','
-        << d.inside_obstacles << ',' << d.non_finite << ',' << d.max_density_ratio << ',' << d.mass << ','
-        << d.kinetic_energy << ',' << d.max_speed << ',' << r.wall_ms;
-    for (const auto& name : passes) {
-      const auto it = r.pass_ms.find(name);
-      out << ',' << (it == r.pass_ms.end() ? 0.0 : it->second);
-    }
-    out << "\n";
+  out << row.frame << ',' << d.step << ',' << d.time << ',' << d.active_particles << ',' << d.outside_domain << ','
+      << d.inside_obstacles << ',' << d.non_finite << ',' << d.max_density_ratio << ',' << d.mass << ','
+      << d.kinetic_energy << ',' << d.max_speed << ',' << row.wall_ms;
+  for (const auto& [name, unused] : first.pass_ms) {
+    const auto it = row.pass_ms.find(name);
+    out << ',' << (it == row.pass_ms.end() ? 0.0 : it->second);
   }
+  out << "\n";
   return out.str();
 }
+
+// Appends rows to "<path>.partial", flushed after each frame so a long run can be watched, and
+// renames it to <path> once the run has finished: an interrupted run leaves only the .partial file.
+class StatsFile {
+ public:
+  explicit StatsFile(std::filesystem::path path) : path_(std::move(path)) {}
+  void append(const std::string& text) {
+    if (!file_.is_open()) {
+      file_.open(partial(), std::ios::trunc);
+      if (!file_) throw std::runtime_error(partial().string() + ": cannot write");
+    }
+    file_ << text;
+    file_.flush();
+    if (!file_) throw std::runtime_error(partial().string() + ": write failed (disk full?)");
+  }
+  void finish() {
+    file_.close();
+    std::filesystem::rename(partial(), path_);
+  }
+
+ private:
+  std::filesystem::path partial() const { return std::filesystem::path(path_.string() + ".partial"); }
+  std::filesystem::path path_;
+  std::ofstream file_;
+};
 
 std::string numbered(const char* stem, int frame, const char* extension) {
   char name[64];
@@ -94,10 +119,17 @@ liquid::CameraView camera_from(const CaptureOptions& options, const liquid::Simu
   return camera;
 }
 
+constexpr int k_max_steps_per_frame = 100000;
+
 int steps_per_frame(const CaptureOptions& options, const liquid::Scene& scene) {
   if (options.steps_per_frame > 0) return options.steps_per_frame;
-  if (options.fps > 0.0) return std::max(1, int(std::lround(1.0 / (options.fps * scene.time_step))));
-  return scene.substeps;
+  if (options.fps <= 0.0) return scene.substeps;
+  const double steps = std::round(1.0 / (options.fps * scene.time_step));
+  if (steps > k_max_steps_per_frame)
+    throw std::invalid_argument("--fps " + std::to_string(options.fps) + " needs " + std::to_string(steps) +
+                                " steps of " + std::to_string(scene.time_step) + " s per frame, more than " +
+                                std::to_string(k_max_steps_per_frame));
+  return std::max(1, int(steps));
 }
 
 int run(const CaptureOptions& options) {
@@ -123,35 +155,40 @@ int run(const CaptureOptions& options) {
 
   engine::graph::RenderGraph graph(&context);
   engine::vk::CommandBuffer cmd(context);
-  std::vector<FrameStats> rows;
+  StatsFile stats(options.out_dir / "stats.csv");
+  FrameStats first;
   tools::Progress progress(options.frames);
   // Every frame advances the simulation by `steps` steps, then draws the state it reached (the
   // density the raymarch reads comes from the last step's grid pass).
   for (int frame = 0; frame < options.frames; ++frame) {
-    graph.reset();
-    const liquid::LiquidImages images = node.add_to(graph, steps);
-    const liquid::RenderOutputs rendered = renderer.add_to(graph, images, camera);
-    const engine::graph::Readback readback = engine::graph::add_readback(graph, rendered.final, "capture.readback");
-    graph.compile();
-    const auto start = std::chrono::steady_clock::now();
-    graph.execute(cmd.begin());
-    cmd.submit_and_wait();
-    FrameStats row{frame, {}, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(), {}};
-    for (const auto& t : graph.read_timings()) row.pass_ms[t.name] += t.milliseconds;
-
     try {
-      row.diagnostics = node.diagnose();  // throws SimulationError on an unstable state
+      graph.reset();
+      const liquid::LiquidImages images = node.add_to(graph, steps);
+      const liquid::RenderOutputs rendered = renderer.add_to(graph, images, camera);
+      const engine::graph::Readback readback = engine::graph::add_readback(graph, rendered.final, "capture.readback");
+      graph.compile();
+      const auto start = std::chrono::steady_clock::now();
+      graph.execute(cmd.begin());
+      cmd.submit_and_wait();
+      FrameStats row{frame, {}, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(), {}};
+      for (const auto& t : graph.read_timings()) row.pass_ms[t.name] += t.milliseconds;
+
+      const liquid::ParticleSnapshot particles = node.read_particles();
+      row.diagnostics = node.diagnose(particles);  // throws SimulationError on an unstable state
+      engine::vk::write_png(options.out_dir / numbered("frame", frame, "png"), readback.rgba8());
+      if (options.export_particles) liquid::write_ply(options.out_dir / numbered("particles", frame, "ply"), particles);
+      if (frame == 0) {
+        first = row;
+        stats.append(stats_header(first));
+      }
+      stats.append(stats_row(row, first));
+      progress.update(frame + 1, steps / std::max(row.wall_ms * 1e-3, 1e-9), "steps");
     } catch (...) {
-      progress.interrupt();
+      progress.interrupt();  // the error message starts on its own line
       throw;
     }
-    engine::vk::write_png(options.out_dir / numbered("frame", frame, "png"), readback.rgba8());
-    if (options.export_particles)
-      liquid::write_ply(options.out_dir / numbered("particles", frame, "ply"), node.read_particles());
-    rows.push_back(std::move(row));
-    engine::io::write_file_atomically(options.out_dir / "stats.csv", format_stats(rows));
-    progress.update(frame + 1, steps / std::max(rows.back().wall_ms * 1e-3, 1e-9), "steps");
   }
+  stats.finish();
   std::printf("liquid_capture: wrote %d frames to %s\n", options.frames, options.out_dir.string().c_str());
   if (options.validation && context.validation_message_count() > 0) {
     std::fprintf(stderr, "liquid_capture: error: %u validation message(s)\n", context.validation_message_count());
@@ -166,9 +203,9 @@ int main(int argc, char** argv) {
   CLI::App app{"Runs a liquid scene and writes numbered PNG frames, per-frame statistics and, optionally, particles"};
   CaptureOptions options;
   app.add_option("scene", options.scene, "scene JSON file")->required();
-  app.add_option("-o,--out", options.out_dir, "output folder (frame_NNNNN.png, stats.csv, particles_NNNNN.ply)");
-  app.add_option("-n,--frames", options.frames, "frames to write")
-      ->check(CLI::Range(1, 1000000));
+  app.add_option("-o,--out", options.out_dir, "output folder (frame_NNNNN.png, stats.csv, particles_NNNNN.ply)")
+      ->take_last();
+  app.add_option("-n,--frames", options.frames, "frames to write")->check(CLI::Range(1, 1000000))->take_last();
   app.add_option("--fps", options.fps, "simulated frames per second (steps per frame = 1 / (fps dt)); "
                                        "default: the scene's substeps per frame")
       ->check(CLI::Range(0.001, 10000.0));

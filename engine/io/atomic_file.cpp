@@ -1,5 +1,8 @@
 #include "engine/io/atomic_file.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -21,11 +24,17 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view b
       throw std::runtime_error(path.string() + ": write failed (disk full?)");
     }
   }
+  // Make the bytes durable before the rename, so a crash cannot leave an empty file in place.
+  if (const int fd = ::open(temporary.c_str(), O_RDONLY); fd >= 0) {
+    ::fsync(fd);
+    ::close(fd);
+  }
   std::error_code error;
   std::filesystem::rename(temporary, path, error);
   if (error) {
+    const std::string reason = error.message();
     std::filesystem::remove(temporary, error);
-    throw std::runtime_error(path.string() + ": cannot rename into place");
+    throw std::runtime_error(path.string() + ": cannot rename into place (" + reason + ")");
   }
 }
 

@@ -1,5 +1,6 @@
 #include "liquid/render/camera.h"
 
+#include "liquid/render/height_field.h"
 #include "liquid/setup.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -9,6 +10,7 @@
 namespace liquid {
 
 CameraView default_camera(const SimulationSetup& setup) {
+  if (setup.scene.mode == SimulationMode::ShallowWater) return default_height_field_camera(setup);
   if (setup.scene.camera) {
     const Camera& c = *setup.scene.camera;
     return {c.position, c.target, {0.0f, 1.0f, 0.0f}, c.fov_y_degrees};

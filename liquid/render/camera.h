@@ -15,7 +15,8 @@ struct CameraView {
   float fov_y_degrees = 45.0f;
 };
 
-// The scene's camera, or one that frames the whole domain from the front, slightly above.
+// The scene's camera, or one that frames the whole domain from the front, slightly above; for
+// shallow water, the height-field view's camera (default_height_field_camera).
 CameraView default_camera(const SimulationSetup& setup);
 
 // Vulkan clip space (y down, depth 0..1): projection * view.

@@ -124,6 +124,6 @@ TEST_CASE("splat into RGBA16F (the paper's format) loses a bounded share of the 
   const double relative_error = measure_splat(node).relative();
   INFO("RGBA16F splat: summed density off by " << relative_error * 100.0 << "% (RGBA32F: under 0.01%)");
   CHECK(std::abs(relative_error) < 0.08);
-  CHECK(std::abs(relative_error) > 1e-5);  // 16-bit rounding is really in effect
+  CHECK(std::abs(relative_error) > 0.01);  // 16-bit rounding is really in effect (RGBA32F: < 1e-4)
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
