@@ -41,12 +41,40 @@ float wall_coverage(ivec3 c) {
   return coverage;
 }
 
-// Total density (kg/m^3) seen by the pressure at cell c: liquid plus obstacle or ground.
-float total_density(ivec3 c) {
-  c = clamp(c, ivec3(0), grid_cells() - 1);
-  float rho = u.pressure.w * fetch_grid(u_splat, c).a / wall_coverage(c);
+// Which of the position-dependent terms of total_density() can be non-zero around a cell, decided
+// once per cell instead of for each of its 2d neighbours: away from the walls and obstacles (most
+// of the grid) the wall correction is exactly 1 and the obstacle density exactly 0.
+struct Surroundings {
+  bool near_wall;
+  bool near_obstacle;
+};
+
+Surroundings surroundings(ivec3 c) {
+  Surroundings s;
+  // A neighbour is one cell closer to a wall; the correction is 1 from r cells on (cell centres).
+  vec3 to_wall = min(vec3(c), vec3(grid_cells() - 1 - c)) + 0.5;
+#if DIM == 2
+  to_wall.z = 1e9;
+#endif
+  s.near_wall = any(lessThan(to_wall, vec3(u.kernel.x + 1.0)));
+  // Spheres and boxes have exact distances (1-Lipschitz): a neighbour, h away, is at most h closer.
+  // The metaballs' first-order estimate is not, so they always count as near.
+  s.near_obstacle = false;
   vec3 p = cell_center(c);
-  rho += obstacle_density(p);
+  for (int i = 0; i < u.counts.w; ++i)
+    if (int(u.obstacles[i].center_kind.w) == OBSTACLE_METABALLS ||
+        obstacle_distance(i, p) < u.kernel.w + 1.5 * cell_size())
+      s.near_obstacle = true;
+  return s;
+}
+
+// Total density (kg/m^3) seen by the pressure at cell c: liquid plus obstacle or ground.
+float total_density(ivec3 c, Surroundings s) {
+  c = clamp(c, ivec3(0), grid_cells() - 1);
+  float rho = u.pressure.w * fetch_grid(u_splat, c).a;
+  if (s.near_wall) rho /= wall_coverage(c);
+  vec3 p = cell_center(c);
+  if (s.near_obstacle) rho += obstacle_density(p);
   if (u.counts2.w == 1) rho += u.pressure.z * ground_height(p.xy) / u.shallow.x;
   return rho;
 }
@@ -56,8 +84,8 @@ float total_density(ivec3 c) {
 // wherever rho > rho0, but below rest density (the free surface, empty cells) it exerts no pull
 // and no push, so the surface stays sharp instead of boiling off. Shallow water and the 'chapter'
 // option use the printed form (with gamma = 1 it is the SWE's P = g (h + b)).
-float pressure_at(ivec3 c) {
-  float ratio_pow = pow(max(total_density(c) / u.pressure.z, 0.0), u.pressure.y);
+float pressure_at(ivec3 c, Surroundings s) {
+  float ratio_pow = pow(max(total_density(c, s) / u.pressure.z, 0.0), u.pressure.y);
   return u.counts2.w == 0 ? u.pressure.x * max(ratio_pow - 1.0, 0.0) : u.pressure.x * ratio_pow;
 }
 
@@ -74,12 +102,13 @@ void main() {
   vec3 velocity = fluid ? splat.rgb / splat.a : vec3(0.0);
 
   // Eq. 3: central differences of the pressure (one-sided at the walls via the clamped fetch).
+  Surroundings around = surroundings(c);
   vec3 grad_p;
-  grad_p.x = pressure_at(c + ivec3(1, 0, 0)) - pressure_at(c - ivec3(1, 0, 0));
-  grad_p.y = pressure_at(c + ivec3(0, 1, 0)) - pressure_at(c - ivec3(0, 1, 0));
+  grad_p.x = pressure_at(c + ivec3(1, 0, 0), around) - pressure_at(c - ivec3(1, 0, 0), around);
+  grad_p.y = pressure_at(c + ivec3(0, 1, 0), around) - pressure_at(c - ivec3(0, 1, 0), around);
   grad_p.z = 0.0;
 #if DIM == 3
-  grad_p.z = pressure_at(c + ivec3(0, 0, 1)) - pressure_at(c - ivec3(0, 0, 1));
+  grad_p.z = pressure_at(c + ivec3(0, 0, 1), around) - pressure_at(c - ivec3(0, 0, 1), around);
 #endif
   grad_p /= 2.0 * h;
 
