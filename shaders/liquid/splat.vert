@@ -1,7 +1,7 @@
 #version 450
 // Splat pass (section 3), vertex stage: one point per active particle, fetched from the particle
 // textures by gl_VertexIndex (no vertex buffer). In 3D each particle is drawn once per slice it
-// can touch (instance i = slice offset) and routed to that slice with gl_Layer; the point size is
+// can touch (instance i = the i-th such slice) and routed to that slice with gl_Layer; the point size is
 // the kernel's chord in that slice, so the rasterizer visits exactly the cells within radius r.
 #if DIM == 3
 #extension GL_ARB_shader_viewport_layer_array : require
@@ -26,7 +26,9 @@ void main() {
   float chord = r;
   v_dz2 = 0.0;
 #if DIM == 3
-  int layer = int(floor(g.z)) + gl_InstanceIndex - int(ceil(r));
+  // Slices whose centre L + 0.5 lies within r of the particle: L in (g.z - r - 0.5, g.z + r - 0.5),
+  // at most ceil(2 r) consecutive layers starting here (6 for r = 3).
+  int layer = int(floor(g.z - r - 0.5)) + 1 + gl_InstanceIndex;
   float dz = float(layer) + 0.5 - g.z;
   if (layer < 0 || layer >= u.grid_dim.z || abs(dz) >= r) {
     gl_Position = vec4(-4.0, -4.0, 0.5, 1.0);  // outside the clip volume: the point is dropped
