@@ -21,8 +21,6 @@ using engine::vk::DescriptorKind;
 
 namespace {
 
-constexpr VkFormat k_view_format = VK_FORMAT_R8G8B8A8_UNORM;
-constexpr VkFormat k_view_depth_format = VK_FORMAT_D32_SFLOAT;
 constexpr float k_camera_elevation_degrees = 50.0f;
 constexpr float k_camera_fov_degrees = 40.0f;
 // Heights are drawn at their true scale.
@@ -80,10 +78,10 @@ HeightFieldPass::HeightFieldPass(engine::vk::Context& context, const LiquidNode&
                     .name = "liquid.height_field",
                     .vertex = shaders::height_field_vert,
                     .fragment = shaders::height_field_frag,
-                    .color_formats = {k_view_format},
+                    .color_formats = {k_color_format},
                     // The ground writes alpha 1, so one blended pipeline draws both layers.
                     .blend = {engine::vk::BlendMode::Alpha},
-                    .depth_format = k_view_depth_format,
+                    .depth_format = k_depth_format,
                     .depth_test = true,
                     .depth_write = true,
                     .bindings = {{0, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_VERTEX_BIT},
@@ -136,9 +134,9 @@ ImageHandle HeightFieldPass::add_to(engine::graph::RenderGraph& graph, const Liq
   };
   const ImageHandle density = images.density;
   const engine::vk::ImageDesc color_desc{engine::vk::ImageKind::Image2D, settings.width, settings.height, 1,
-                                         k_view_format, 0};
+                                         k_color_format, 0};
   const engine::vk::ImageDesc depth_desc{engine::vk::ImageKind::Image2D, settings.width, settings.height, 1,
-                                         k_view_depth_format, 0};
+                                         k_depth_format, 0};
   return graph
       .add_pass<Data>(
           "liquid.height_field",

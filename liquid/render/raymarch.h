@@ -12,9 +12,6 @@
 
 namespace liquid {
 
-constexpr VkFormat k_color_format = VK_FORMAT_R8G8B8A8_UNORM;
-constexpr VkFormat k_depth_format = VK_FORMAT_D32_SFLOAT;
-
 class RaymarchPass {
  public:
   RaymarchPass(engine::vk::Context& context, const LiquidNode& node);

@@ -16,6 +16,11 @@ class Context;
 
 namespace liquid {
 
+// What every view writes (the FXAA pass reads the colour in the same format): RGBA8 colour and,
+// where the view has depth, D32 depth.
+constexpr VkFormat k_color_format = VK_FORMAT_R8G8B8A8_UNORM;
+constexpr VkFormat k_depth_format = VK_FORMAT_D32_SFLOAT;
+
 struct RenderSettings {
   uint32_t width = 1024;   // the paper's frame: 1024 x 768
   uint32_t height = 768;

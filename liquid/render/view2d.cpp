@@ -18,7 +18,6 @@ using engine::vk::DescriptorKind;
 
 namespace {
 
-constexpr VkFormat k_view_format = VK_FORMAT_R8G8B8A8_UNORM;
 // How far up (cells) a liquid pixel looks for the surface; depth below this is the deepest blue.
 constexpr float k_depth_search_cells = 24.0f;
 
@@ -70,7 +69,7 @@ View2dPass::View2dPass(engine::vk::Context& context, const LiquidNode& node)
                            .name = "liquid.view2d",
                            .vertex = engine::passes::fullscreen_vertex_shader(),
                            .fragment = shaders::view2d_frag,
-                           .color_formats = {k_view_format},
+                           .color_formats = {k_color_format},
                            .bindings = {{0, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
                                         {1, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
                            .push_constant_size = sizeof(View2dPush)}),
@@ -79,7 +78,7 @@ View2dPass::View2dPass(engine::vk::Context& context, const LiquidNode& node)
                               .vertex = shaders::particles2d_vert,
                               .fragment = shaders::particles2d_frag,
                               .topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST,
-                              .color_formats = {k_view_format},
+                              .color_formats = {k_color_format},
                               .blend = {engine::vk::BlendMode::Alpha},
                               .bindings = {{0, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
                               .push_constant_size = sizeof(Particles2dPush)}),
@@ -105,7 +104,7 @@ ImageHandle View2dPass::add_to(engine::graph::RenderGraph& graph, const LiquidIm
   };
   const ImageHandle density = images.density;
   const engine::vk::ImageDesc color_desc{engine::vk::ImageKind::Image2D, settings.width, settings.height, 1,
-                                         k_view_format, 0};
+                                         k_color_format, 0};
   ImageHandle color =
       graph
           .add_pass<Data>(
