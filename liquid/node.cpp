@@ -41,7 +41,7 @@ LiquidNode::LiquidNode(engine::vk::Context& context, const Scene& scene, const L
                              "which the 3D splat needs");
   const VkFormat format = splat_format(scene);
   require_blendable(context, format, scene.splat_format == SplatFormat::Rgba16f ? "RGBA16F" : "RGBA32F");
-  pipelines_ = std::make_unique<SolverPipelines>(context, setup_.dimension, format);
+  pipelines_ = std::make_unique<SolverPipelines>(context, setup_, format);
   state_ = std::make_unique<LiquidState>(context, setup_, format);
   max_steps_per_frame_ = options.max_steps_per_frame > 0 ? options.max_steps_per_frame : scene.substeps;
   uniforms_ = std::make_unique<engine::vk::UniformArena>(

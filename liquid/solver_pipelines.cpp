@@ -2,6 +2,10 @@
 
 #include "embedded_shaders.h"
 #include "engine/passes/fullscreen.h"
+#include "liquid/gpu_types.h"
+
+#include <cmath>
+#include <stdexcept>
 
 namespace liquid {
 
@@ -14,7 +18,17 @@ namespace {
 
 constexpr VkShaderStageFlags k_all = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 
-GraphicsPipeline make_splat(engine::vk::Context& context, int dimension, VkFormat format) {
+int32_t obstacle_kind(ObstacleShape shape) {
+  switch (shape) {
+    case ObstacleShape::Sphere: return int32_t(gpu::k_obstacle_sphere);
+    case ObstacleShape::Box: return int32_t(gpu::k_obstacle_box);
+    case ObstacleShape::Metaballs: return int32_t(gpu::k_obstacle_metaballs);
+  }
+  return int32_t(gpu::k_obstacle_sphere);
+}
+
+GraphicsPipeline make_splat(engine::vk::Context& context, int dimension, VkFormat format,
+                            const std::vector<int32_t>& specialization) {
   return GraphicsPipeline(context, GraphicsPipelineDesc{
       .name = "liquid.splat",
       .vertex = dimension == 3 ? shaders::liquid_splat_vert_3d : shaders::liquid_splat_vert_2d,
@@ -24,10 +38,11 @@ GraphicsPipeline make_splat(engine::vk::Context& context, int dimension, VkForma
       .blend = {BlendMode::Additive},
       .bindings = {{0, DescriptorKind::UniformBuffer, k_all},
                    {1, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT},
-                   {2, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}}});
+                   {2, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
+      .specialization = specialization});
 }
 
-GraphicsPipeline make_grid(engine::vk::Context& context, int dimension) {
+GraphicsPipeline make_grid(engine::vk::Context& context, int dimension, const std::vector<int32_t>& specialization) {
   const bool layered = dimension == 3;
   return GraphicsPipeline(context, GraphicsPipelineDesc{
       .name = "liquid.grid",
@@ -35,10 +50,12 @@ GraphicsPipeline make_grid(engine::vk::Context& context, int dimension) {
       .geometry = layered ? engine::passes::fullscreen_layered_geometry_shader() : std::span<const uint32_t>{},
       .fragment = layered ? shaders::liquid_grid_frag_3d : shaders::liquid_grid_frag_2d,
       .color_formats = {k_grid_velocity_format, k_density_format},
-      .bindings = {{0, DescriptorKind::UniformBuffer, k_all}, {1, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}}});
+      .bindings = {{0, DescriptorKind::UniformBuffer, k_all}, {1, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
+      .specialization = specialization});
 }
 
-GraphicsPipeline make_particle(engine::vk::Context& context, int dimension) {
+GraphicsPipeline make_particle(engine::vk::Context& context, int dimension,
+                               const std::vector<int32_t>& specialization) {
   return GraphicsPipeline(context, GraphicsPipelineDesc{
       .name = "liquid.particle",
       .vertex = engine::passes::fullscreen_vertex_shader(),
@@ -48,17 +65,34 @@ GraphicsPipeline make_particle(engine::vk::Context& context, int dimension) {
                    {1, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
                    {2, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
                    {3, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
-                   {4, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}}});
+                   {4, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
+      .specialization = specialization});
 }
 
 }  // namespace
 
-SolverPipelines::SolverPipelines(engine::vk::Context& context, int dimension_, VkFormat splat_format_)
-    : splat(make_splat(context, dimension_, splat_format_)),
-      grid(make_grid(context, dimension_)),
-      particle(make_particle(context, dimension_)),
+std::vector<int32_t> solver_specialization(const SimulationSetup& setup) {
+  const Scene& scene = setup.scene;
+  if (scene.obstacles.size() > size_t(gpu::k_max_obstacles))
+    throw std::invalid_argument("liquid: " + std::to_string(scene.obstacles.size()) + " obstacles (at most " +
+                                std::to_string(gpu::k_max_obstacles) + ")");
+  std::vector<int32_t> constants(13, 0);
+  constants[0] = 1;  // FEATURES_FIXED
+  constants[1] = int32_t(scene.obstacles.size());
+  for (size_t i = 0; i < scene.obstacles.size(); ++i) constants[2 + i] = obstacle_kind(scene.obstacles[i].shape);
+  constants[10] = scene.mode == SimulationMode::ShallowWater ? 1 : 0;
+  const bool integer_gamma = setup.gamma >= 1.0f && setup.gamma <= 8.0f && setup.gamma == std::floor(setup.gamma);
+  constants[11] = integer_gamma ? int32_t(setup.gamma) : 0;
+  constants[12] = scene.emitters.empty() ? 0 : 1;
+  return constants;
+}
+
+SolverPipelines::SolverPipelines(engine::vk::Context& context, const SimulationSetup& setup, VkFormat splat_format_)
+    : splat(make_splat(context, setup.dimension, splat_format_, solver_specialization(setup))),
+      grid(make_grid(context, setup.dimension, solver_specialization(setup))),
+      particle(make_particle(context, setup.dimension, solver_specialization(setup))),
       nearest(context, VK_FILTER_NEAREST),
-      dimension(dimension_),
+      dimension(setup.dimension),
       splat_format(splat_format_) {}
 
 }  // namespace liquid

@@ -66,6 +66,13 @@ GraphicsPipeline::GraphicsPipeline(Context& context, const GraphicsPipelineDesc&
     layout_info.pPushConstantRanges = &range;
     VK_CHECK(vkCreatePipelineLayout(device, &layout_info, nullptr, &layout_));
 
+    std::vector<VkSpecializationMapEntry> constants;
+    for (uint32_t id = 0; id < desc.specialization.size(); ++id)
+      constants.push_back({id, uint32_t(id * sizeof(int32_t)), sizeof(int32_t)});
+    const VkSpecializationInfo specialization{uint32_t(constants.size()), constants.data(),
+                                              desc.specialization.size() * sizeof(int32_t),
+                                              desc.specialization.data()};
+
     std::vector<VkPipelineShaderStageCreateInfo> stages;
     auto add_stage = [&](VkShaderStageFlagBits stage, std::span<const uint32_t> code) {
       if (code.empty()) return;
@@ -74,6 +81,7 @@ GraphicsPipeline::GraphicsPipeline(Context& context, const GraphicsPipelineDesc&
       s.stage = stage;
       s.module = modules.back();
       s.pName = "main";
+      s.pSpecializationInfo = constants.empty() ? nullptr : &specialization;
       stages.push_back(s);
     };
     add_stage(VK_SHADER_STAGE_VERTEX_BIT, desc.vertex);

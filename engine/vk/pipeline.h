@@ -41,6 +41,9 @@ struct GraphicsPipelineDesc {
   bool depth_write = false;
   std::vector<DescriptorBinding> bindings;
   uint32_t push_constant_size = 0;  // bytes, at most 128 (lavapipe's limit)
+  // Specialization constants for every stage: entry i sets constant_id i (32-bit int or bool).
+  // A stage that declares no such id ignores it.
+  std::vector<int32_t> specialization;
 };
 
 class GraphicsPipeline {

@@ -2,6 +2,7 @@
 // and the grid, obstacle and force helpers. DIM is 2 or 3 (compile-time define).
 #ifndef LIQUID_COMMON_GLSL
 #define LIQUID_COMMON_GLSL
+#extension GL_EXT_control_flow_attributes : require
 
 #define MAX_OBSTACLES 8
 #define MAX_BALLS 32
@@ -46,6 +47,48 @@ layout(std140, set = 0, binding = 0) uniform SolverUniforms {
   Brush brushes[MAX_BRUSHES];
   EmitterRange emitters[MAX_EMITTERS];
 } u;
+
+// ---- Scene features fixed when the solver's pipelines are created (specialization constants) ----
+// liquid/solver_pipelines.cpp sets them from the scene; shaders that do not (the render passes)
+// keep FEATURES_FIXED = false and read the counts and kinds from the uniform block. Why: lavapipe
+// runs both sides of every branch for every fragment (masked SIMD lanes) and a loop's body at least
+// once, so code a scene does not use still costs there, and an obstacle index that varies in a loop
+// turns each of its uniform reads into a per-lane gather. With constant counts and kinds the
+// obstacle loops unroll to constant indices and unused shapes and terms drop out. On GPUs this is
+// the usual specialization of an uber-shader.
+layout(constant_id = 0) const bool FEATURES_FIXED = false;
+layout(constant_id = 1) const int OBSTACLE_COUNT = 0;
+layout(constant_id = 2) const int OBSTACLE_KIND_0 = 0;
+layout(constant_id = 3) const int OBSTACLE_KIND_1 = 0;
+layout(constant_id = 4) const int OBSTACLE_KIND_2 = 0;
+layout(constant_id = 5) const int OBSTACLE_KIND_3 = 0;
+layout(constant_id = 6) const int OBSTACLE_KIND_4 = 0;
+layout(constant_id = 7) const int OBSTACLE_KIND_5 = 0;
+layout(constant_id = 8) const int OBSTACLE_KIND_6 = 0;
+layout(constant_id = 9) const int OBSTACLE_KIND_7 = 0;
+layout(constant_id = 10) const bool SHALLOW_WATER = false;  // printed pressure form and ground height
+layout(constant_id = 11) const int INTEGER_GAMMA = 0;       // gamma when it is an integer 1..8, else 0
+layout(constant_id = 12) const bool HAS_EMITTERS = true;
+
+int obstacle_count() { return FEATURES_FIXED ? OBSTACLE_COUNT : u.counts.w; }
+
+int obstacle_kind(int index) {
+  if (!FEATURES_FIXED) return int(u.obstacles[index].center_kind.w);
+  return index == 0 ? OBSTACLE_KIND_0 : index == 1 ? OBSTACLE_KIND_1 : index == 2 ? OBSTACLE_KIND_2
+       : index == 3 ? OBSTACLE_KIND_3 : index == 4 ? OBSTACLE_KIND_4 : index == 5 ? OBSTACLE_KIND_5
+       : index == 6 ? OBSTACLE_KIND_6 : OBSTACLE_KIND_7;
+}
+
+bool shallow_water() { return FEATURES_FIXED ? SHALLOW_WATER : u.counts2.w == 1; }
+bool has_emitters() { return !FEATURES_FIXED || HAS_EMITTERS; }
+
+// (rho / rho0)^gamma: repeated products when gamma is a small integer (the default 5), pow otherwise.
+float density_ratio_power(float ratio) {
+  if (!FEATURES_FIXED || INTEGER_GAMMA == 0) return pow(ratio, u.pressure.y);
+  float result = ratio;
+  [[unroll]] for (int i = 1; i < INTEGER_GAMMA; ++i) result *= ratio;
+  return result;
+}
 
 #if DIM == 3
 #define GRID_SAMPLER sampler3D
@@ -111,14 +154,22 @@ float obstacle_distance(int index, vec3 p) {
 #if DIM == 2
   local.z = 0.0;
 #endif
-  int kind = int(o.center_kind.w);
+  int kind = obstacle_kind(index);
   if (kind == OBSTACLE_SPHERE) return length(local) - o.size.x;
   if (kind == OBSTACLE_BOX) return sd_box(local, o.size.xyz);
   return sd_metaballs(local, o);
 }
 
-// Outward normal by central differences (works for every kind, metaballs included).
+// Outward normal: exact for a sphere, by central differences for the other kinds.
 vec3 obstacle_normal(int index, vec3 p) {
+  if (obstacle_kind(index) == OBSTACLE_SPHERE) {
+    vec3 local = p - u.obstacles[index].center_kind.xyz;
+#if DIM == 2
+    local.z = 0.0;
+#endif
+    float len = length(local);
+    return len > 1e-12 ? local / len : vec3(0.0, 1.0, 0.0);
+  }
   float e = 0.25 * cell_size();
   vec3 n = vec3(obstacle_distance(index, p + vec3(e, 0, 0)) - obstacle_distance(index, p - vec3(e, 0, 0)),
                 obstacle_distance(index, p + vec3(0, e, 0)) - obstacle_distance(index, p - vec3(0, e, 0)), 0.0);
@@ -135,7 +186,7 @@ vec3 obstacle_normal(int index, vec3 p) {
 float obstacle_density(vec3 p) {
   float band = u.kernel.w;
   float total = 0.0;
-  for (int i = 0; i < u.counts.w; ++i) {
+  [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
     float d = obstacle_distance(i, p);
     total += clamp(1.0 - d / band, 0.0, 2.0);
   }

@@ -4,7 +4,8 @@
 //   u   = sum w u / sum w                              (the splatted velocity, kept for FLIP)
 //   P   = k ((rho + rho_obstacle) / rho0)^gamma        (section 2.1; obstacles, section 6)
 //   u'  = u + dt (-grad P + g + f_ext)                 (eq. 2 and 3, forward Euler, central differences)
-// (with the Tait clamp described at pressure_at) then the boundary conditions: no flow through the walls or into obstacles.
+// (with the Tait clamp described at pressure_from_density) then the boundary conditions: no flow
+// through the walls or into obstacles.
 // Outputs: target 0 = (u', fluid flag), target 1 = rho / rho0 (for rendering and diagnostics).
 #extension GL_GOOGLE_include_directive : require
 #include "liquid/common.glsl"
@@ -20,73 +21,43 @@ layout(location = 1) out float out_density;
 
 const float k_fluid_epsilon = 1e-6;
 
-// Fraction of the kernel's mass beyond a wall `a` cells from a cell centre. Cell centres sit
-// k + 0.5 cells from a wall, so the CPU tabulates the eight values k = 0..7 (r is at most 8 cells)
-// once per step (liquid/uniforms.cpp) instead of integrating here for every neighbour.
-float kernel_mass_beyond(float a) {
-  int k = int(a);
-  if (k >= 8 || a >= u.kernel.x) return 0.0;
-  return u.wall_kernel_beyond[k / 4][k % 4];
+// Fraction of the kernel's mass beyond a wall k + 0.5 cells from a cell centre (k >= 0), from the
+// table the CPU fills once per step (liquid/uniforms.cpp; r is at most 8 cells). Selected with
+// comparisons, not an indexed read: an index that differs between fragments is a gather on lavapipe.
+float kernel_mass_beyond(int k) {
+  float beyond = 0.0;
+  [[unroll]] for (int i = 0; i < 8; ++i)
+    beyond = k == i ? u.wall_kernel_beyond[i / 4][i % 4] : beyond;
+  return beyond;
 }
 
-// Near a wall the kernel is cut off and the splatted density reads low, which would pull liquid
-// against the wall; dividing by the kernel's share inside the domain removes that bias.
-float wall_coverage(ivec3 c) {
-  vec3 to_low = vec3(c) + 0.5, to_high = vec3(grid_cells() - c) - 0.5;
-  float coverage = (1.0 - kernel_mass_beyond(to_low.x)) * (1.0 - kernel_mass_beyond(to_high.x)) *
-                   (1.0 - kernel_mass_beyond(to_low.y)) * (1.0 - kernel_mass_beyond(to_high.y));
-#if DIM == 3
-  coverage *= (1.0 - kernel_mass_beyond(to_low.z)) * (1.0 - kernel_mass_beyond(to_high.z));
-#endif
-  return coverage;
-}
-
-// Which of the position-dependent terms of total_density() can be non-zero around a cell, decided
-// once per cell instead of for each of its 2d neighbours: away from the walls and obstacles (most
-// of the grid) the wall correction is exactly 1 and the obstacle density exactly 0.
-struct Surroundings {
-  bool near_wall;
-  bool near_obstacle;
-};
-
-Surroundings surroundings(ivec3 c) {
-  Surroundings s;
-  // A neighbour is one cell closer to a wall; the correction is 1 from r cells on (cell centres).
-  vec3 to_wall = min(vec3(c), vec3(grid_cells() - 1 - c)) + 0.5;
-#if DIM == 2
-  to_wall.z = 1e9;
-#endif
-  s.near_wall = any(lessThan(to_wall, vec3(u.kernel.x + 1.0)));
-  // Spheres and boxes have exact distances (1-Lipschitz): a neighbour, h away, is at most h closer.
-  // The metaballs' first-order estimate is not, so they always count as near.
-  s.near_obstacle = false;
-  vec3 p = cell_center(c);
-  for (int i = 0; i < u.counts.w; ++i)
-    if (int(u.obstacles[i].center_kind.w) == OBSTACLE_METABALLS ||
-        obstacle_distance(i, p) < u.kernel.w + 1.5 * cell_size())
-      s.near_obstacle = true;
-  return s;
-}
-
-// Total density (kg/m^3) seen by the pressure at cell c: liquid plus obstacle or ground.
-float total_density(ivec3 c, Surroundings s) {
-  c = clamp(c, ivec3(0), grid_cells() - 1);
-  float rho = u.pressure.w * fetch_grid(u_splat, c).a;
-  if (s.near_wall) rho /= wall_coverage(c);
-  vec3 p = cell_center(c);
-  if (s.near_obstacle) rho += obstacle_density(p);
-  if (u.counts2.w == 1) rho += u.pressure.z * ground_height(p.xy) / u.shallow.x;
-  return rho;
+// Share of the kernel inside the domain along one axis, for the cell at index i of n: near a wall
+// the kernel is cut off and the splatted density reads low, which would pull liquid against the
+// wall; dividing by the share removes that bias. It is 1 from r cells away from both walls.
+float axis_coverage(int i, int n) {
+  i = clamp(i, 0, n - 1);
+  return (1.0 - kernel_mass_beyond(i)) * (1.0 - kernel_mass_beyond(n - 1 - i));
 }
 
 // Liquid (default): Becker and Teschner's Tait form, which the chapter cites, clamped at zero:
 // P = max(k ((rho/rho0)^gamma - 1), 0). Its gradient equals the printed P = k (rho/rho0)^gamma's
 // wherever rho > rho0, but below rest density (the free surface, empty cells) it exerts no pull
-// and no push, so the surface stays sharp instead of boiling off. Shallow water and the 'chapter'
-// option use the printed form (with gamma = 1 it is the SWE's P = g (h + b)).
-float pressure_at(ivec3 c, Surroundings s) {
-  float ratio_pow = pow(max(total_density(c, s) / u.pressure.z, 0.0), u.pressure.y);
-  return u.counts2.w == 0 ? u.pressure.x * max(ratio_pow - 1.0, 0.0) : u.pressure.x * ratio_pow;
+// and no push, so the surface stays sharp instead of boiling off. Shallow water uses the printed
+// form (with gamma = 1 it is the SWE's P = g (h + b)).
+float pressure_from_density(float rho) {
+  float ratio_pow = density_ratio_power(max(rho / u.pressure.z, 0.0));
+  return shallow_water() ? u.pressure.x * ratio_pow : u.pressure.x * max(ratio_pow - 1.0, 0.0);
+}
+
+// Pressure at neighbour cell c (clamped into the grid, which makes the difference one-sided at the
+// walls) whose kernel share inside the domain is `coverage`: liquid plus obstacle or ground density.
+float pressure_at(ivec3 c, float coverage) {
+  c = clamp(c, ivec3(0), grid_cells() - 1);
+  float rho = u.pressure.w * fetch_grid(u_splat, c).a / coverage;
+  vec3 p = cell_center(c);
+  rho += obstacle_density(p);
+  if (shallow_water()) rho += u.pressure.z * ground_height(p.xy) / u.shallow.x;
+  return pressure_from_density(rho);
 }
 
 void main() {
@@ -101,14 +72,25 @@ void main() {
   bool fluid = splat.a > k_fluid_epsilon;
   vec3 velocity = fluid ? splat.rgb / splat.a : vec3(0.0);
 
-  // Eq. 3: central differences of the pressure (one-sided at the walls via the clamped fetch).
-  Surroundings around = surroundings(c);
+  // Wall coverage is a product over the axes, so each neighbour's is the centre's with one factor
+  // swapped: 3 factors per axis instead of a full product per neighbour.
+  vec3 below = vec3(1.0), here = vec3(1.0), above = vec3(1.0);
+  [[unroll]] for (int a = 0; a < DIM; ++a) {
+    below[a] = axis_coverage(c[a] - 1, n[a]);
+    here[a] = axis_coverage(c[a], n[a]);
+    above[a] = axis_coverage(c[a] + 1, n[a]);
+  }
+
+  // Eq. 3: central differences of the pressure.
   vec3 grad_p;
-  grad_p.x = pressure_at(c + ivec3(1, 0, 0), around) - pressure_at(c - ivec3(1, 0, 0), around);
-  grad_p.y = pressure_at(c + ivec3(0, 1, 0), around) - pressure_at(c - ivec3(0, 1, 0), around);
+  grad_p.x = pressure_at(c + ivec3(1, 0, 0), above.x * here.y * here.z) -
+             pressure_at(c - ivec3(1, 0, 0), below.x * here.y * here.z);
+  grad_p.y = pressure_at(c + ivec3(0, 1, 0), here.x * above.y * here.z) -
+             pressure_at(c - ivec3(0, 1, 0), here.x * below.y * here.z);
   grad_p.z = 0.0;
 #if DIM == 3
-  grad_p.z = pressure_at(c + ivec3(0, 0, 1), around) - pressure_at(c - ivec3(0, 0, 1), around);
+  grad_p.z = pressure_at(c + ivec3(0, 0, 1), here.x * here.y * above.z) -
+             pressure_at(c - ivec3(0, 0, 1), here.x * here.y * below.z);
 #endif
   grad_p /= 2.0 * h;
 
@@ -118,7 +100,7 @@ void main() {
 
   // Obstacles: inside, the liquid moves with the obstacle; near the surface, no relative
   // velocity into it.
-  for (int i = 0; i < u.counts.w; ++i) {
+  [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
     float d = obstacle_distance(i, p);
     if (d > h) continue;
     vec3 v_obstacle = u.obstacles[i].velocity.xyz;

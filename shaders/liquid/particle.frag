@@ -101,7 +101,7 @@ void main() {
     out_velocity = vec4(0.0);
     return;
   }
-  if (index >= u.counts.y) {  // emitted this step
+  if (has_emitters() && index >= u.counts.y) {  // emitted this step
     for (int i = 0; i < u.counts2.z; ++i)
       if (index >= u.emitters[i].range.x && index < u.emitters[i].range.y) {
         emit(index, u.emitters[i]);
@@ -129,8 +129,8 @@ void main() {
   // Obstacles: a particle that ended inside (or within half a cell of) an obstacle is moved back
   // to its surface and loses its velocity into it, relative to the obstacle.
   float skin = 0.5 * cell_size();
-  for (int pass = 0; pass < 2; ++pass)
-    for (int i = 0; i < u.counts.w; ++i) {
+  [[unroll]] for (int pass = 0; pass < 2; ++pass)
+    [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
       float d = obstacle_distance(i, x_new);
       if (d >= skin) continue;
       vec3 normal = obstacle_normal(i, x_new);
