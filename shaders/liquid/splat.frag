@@ -5,15 +5,13 @@
 #include "liquid/common.glsl"
 
 layout(location = 0) flat in vec2 v_center;
-layout(location = 1) flat in float v_dz2;
+layout(location = 1) flat in vec2 v_kernel;  // x: 1 - dz^2/r^2, y: 1/r^2 (from the vertex stage, so no uniform read here)
 layout(location = 2) flat in vec3 v_velocity;
 layout(location = 0) out vec4 out_splat;
 
 void main() {
   vec2 d = gl_FragCoord.xy - v_center;
-  float r = u.kernel.x;
-  float q = (dot(d, d) + v_dz2) / (r * r);
-  float t = max(1.0 - q, 0.0);
+  float t = max(v_kernel.x - dot(d, d) * v_kernel.y, 0.0);
   float w = t * t * t;
   out_splat = vec4(w * v_velocity, w);
 }

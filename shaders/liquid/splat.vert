@@ -13,7 +13,7 @@ layout(set = 0, binding = 1) uniform sampler2D u_positions;
 layout(set = 0, binding = 2) uniform sampler2D u_velocities;
 
 layout(location = 0) flat out vec2 v_center;      // particle in grid units (cells), xy
-layout(location = 1) flat out float v_dz2;        // squared slice offset (cells^2), 0 in 2D
+layout(location = 1) flat out vec2 v_kernel;      // x: 1 - dz^2/r^2 (dz: slice offset, 0 in 2D), y: 1/r^2 (cells^-2)
 layout(location = 2) flat out vec3 v_velocity;    // m/s
 
 void main() {
@@ -24,7 +24,7 @@ void main() {
   vec3 g = position / cell_size();  // cell c spans [c, c + 1), centre c + 0.5
   float r = u.kernel.x;
   float chord = r;
-  v_dz2 = 0.0;
+  float dz2 = 0.0;
 #if DIM == 3
   // Slices whose centre L + 0.5 lies within r of the particle: L in (g.z - r - 0.5, g.z + r - 0.5),
   // at most ceil(2 r) consecutive layers starting here (6 for r = 3).
@@ -34,13 +34,15 @@ void main() {
     gl_Position = vec4(-4.0, -4.0, 0.5, 1.0);  // outside the clip volume: the point is dropped
     gl_PointSize = 1.0;
     v_center = vec2(0.0);
+    v_kernel = vec2(0.0);
     return;
   }
   gl_Layer = layer;
-  v_dz2 = dz * dz;
-  chord = sqrt(r * r - v_dz2);
+  dz2 = dz * dz;
+  chord = sqrt(r * r - dz2);
 #endif
   v_center = g.xy;
+  v_kernel = vec2(1.0 - dz2 / (r * r), 1.0 / (r * r));
   gl_Position = vec4(g.xy / vec2(u.grid_dim.xy) * 2.0 - 1.0, 0.5, 1.0);
   // Pixel centres within `chord` of the particle on both axes are covered.
   gl_PointSize = 2.0 * chord;
