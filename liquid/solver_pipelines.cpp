@@ -2,10 +2,7 @@
 
 #include "embedded_shaders.h"
 #include "engine/passes/fullscreen.h"
-#include "liquid/gpu_types.h"
-
-#include <cmath>
-#include <stdexcept>
+#include "liquid/specialization.h"
 
 namespace liquid {
 
@@ -17,15 +14,6 @@ using engine::vk::GraphicsPipelineDesc;
 namespace {
 
 constexpr VkShaderStageFlags k_all = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-
-int32_t obstacle_kind(ObstacleShape shape) {
-  switch (shape) {
-    case ObstacleShape::Sphere: return int32_t(gpu::k_obstacle_sphere);
-    case ObstacleShape::Box: return int32_t(gpu::k_obstacle_box);
-    case ObstacleShape::Metaballs: return int32_t(gpu::k_obstacle_metaballs);
-  }
-  return int32_t(gpu::k_obstacle_sphere);
-}
 
 GraphicsPipeline make_splat(engine::vk::Context& context, int dimension, VkFormat format,
                             const std::vector<int32_t>& specialization) {
@@ -71,26 +59,10 @@ GraphicsPipeline make_particle(engine::vk::Context& context, int dimension,
 
 }  // namespace
 
-std::vector<int32_t> solver_specialization(const SimulationSetup& setup) {
-  const Scene& scene = setup.scene;
-  if (scene.obstacles.size() > size_t(gpu::k_max_obstacles))
-    throw std::invalid_argument("liquid: " + std::to_string(scene.obstacles.size()) + " obstacles (at most " +
-                                std::to_string(gpu::k_max_obstacles) + ")");
-  std::vector<int32_t> constants(13, 0);
-  constants[0] = 1;  // FEATURES_FIXED
-  constants[1] = int32_t(scene.obstacles.size());
-  for (size_t i = 0; i < scene.obstacles.size(); ++i) constants[2 + i] = obstacle_kind(scene.obstacles[i].shape);
-  constants[10] = scene.mode == SimulationMode::ShallowWater ? 1 : 0;
-  const bool integer_gamma = setup.gamma >= 1.0f && setup.gamma <= 8.0f && setup.gamma == std::floor(setup.gamma);
-  constants[11] = integer_gamma ? int32_t(setup.gamma) : 0;
-  constants[12] = scene.emitters.empty() ? 0 : 1;
-  return constants;
-}
-
 SolverPipelines::SolverPipelines(engine::vk::Context& context, const SimulationSetup& setup, VkFormat splat_format_)
-    : splat(make_splat(context, setup.dimension, splat_format_, solver_specialization(setup))),
-      grid(make_grid(context, setup.dimension, solver_specialization(setup))),
-      particle(make_particle(context, setup.dimension, solver_specialization(setup))),
+    : splat(make_splat(context, setup.dimension, splat_format_, scene_specialization(setup))),
+      grid(make_grid(context, setup.dimension, scene_specialization(setup))),
+      particle(make_particle(context, setup.dimension, scene_specialization(setup))),
       nearest(context, VK_FILTER_NEAREST),
       dimension(setup.dimension),
       splat_format(splat_format_) {}

@@ -1,6 +1,7 @@
 #include "liquid/render/height_field.h"
 
 #include "embedded_shaders.h"
+#include "liquid/specialization.h"
 #include "liquid/uniforms.h"
 
 #include <glm/gtc/constants.hpp>
@@ -88,7 +89,8 @@ HeightFieldPass::HeightFieldPass(engine::vk::Context& context, const LiquidNode&
                                  {1, DescriptorKind::UniformBuffer,
                                   VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
                                  {2, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
-                    .push_constant_size = sizeof(HeightFieldPush)}),
+                    .push_constant_size = sizeof(HeightFieldPush),
+                    .specialization = scene_specialization(node.setup())}),
       linear_(context, VK_FILTER_LINEAR),
       uniforms_(context, 4096, 3) {
   // Vertex g = (x, y) of the (cells + 2)^2 grid (cells plus the edge ring) has index y (n.x + 2) + x.

@@ -2,6 +2,7 @@
 
 #include "embedded_shaders.h"
 #include "engine/passes/fullscreen.h"
+#include "liquid/specialization.h"
 #include "liquid/uniforms.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -53,7 +54,8 @@ RaymarchPass::RaymarchPass(engine::vk::Context& context, const LiquidNode& node)
                              .bindings = {{0, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
                                           {1, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
                                           {2, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
-                                          {3, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}}}),
+                                          {3, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
+                             .specialization = scene_specialization(node.setup())}),
       linear_(context, VK_FILTER_LINEAR),
       nearest_(context, VK_FILTER_NEAREST),
       uniforms_(context, 4096, 3) {}

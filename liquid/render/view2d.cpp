@@ -2,6 +2,7 @@
 
 #include "embedded_shaders.h"
 #include "engine/passes/fullscreen.h"
+#include "liquid/specialization.h"
 #include "liquid/uniforms.h"
 
 #include <algorithm>
@@ -72,7 +73,8 @@ View2dPass::View2dPass(engine::vk::Context& context, const LiquidNode& node)
                            .color_formats = {k_color_format},
                            .bindings = {{0, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
                                         {1, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
-                           .push_constant_size = sizeof(View2dPush)}),
+                           .push_constant_size = sizeof(View2dPush),
+                           .specialization = scene_specialization(node.setup())}),
       particles_(context, engine::vk::GraphicsPipelineDesc{
                               .name = "liquid.view2d.particles",
                               .vertex = shaders::particles2d_vert,

@@ -57,9 +57,9 @@ vec3 floor_color(vec3 p) {
 float trace_obstacles(vec3 origin, vec3 dir, out int hit_index) {
   float best = k_no_hit;
   hit_index = -1;
-  for (int i = 0; i < u.counts.w; ++i) {
+  [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
     Obstacle o = u.obstacles[i];
-    int kind = int(o.center_kind.w);
+    int kind = obstacle_kind(i);
     vec3 c = o.center_kind.xyz;
     float t = k_no_hit;
     if (kind == OBSTACLE_SPHERE) {

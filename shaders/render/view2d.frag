@@ -99,7 +99,7 @@ void main() {
   // Obstacles: solid grey with a darker outline, anti-aliased over one pixel of the distance.
   // The distance is metric near every surface (metaballs: a first-order estimate), so pixels are
   // metres times the scale; screen derivatives would break on the metaballs' field discontinuity.
-  for (int i = 0; i < u.counts.w; ++i) {
+  [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
     float d_pixels = obstacle_distance_2d(i, p) * pc.pixels_per_metre;
     vec3 shade = mix(k_obstacle, k_obstacle_outline, smoothstep(-2.0, -1.0, d_pixels));
     color = mix(color, shade, coverage(d_pixels));

@@ -2,6 +2,7 @@
 // lattice, kernel normalisation and rest density, emitters, device limits, and the physical
 // sanity of every shipped scene.
 #include "liquid/setup.h"
+#include "liquid/specialization.h"
 #include "liquid/uniforms.h"
 
 #include <catch2/catch.hpp>
@@ -415,4 +416,26 @@ TEST_CASE("fluid blocks are carved around the obstacles they overlap", "[setup]"
   CHECK(setup.capacity == setup.initial_particles);
   CHECK(2000 - setup.initial_particles == Approx(3.14159 * 85 * 85 / 100).epsilon(0.1));
   for (const glm::vec4& p : setup.positions) REQUIRE(glm::length(glm::vec2(p) - glm::vec2(0.5f, 0.1f)) >= 0.085f);
+}
+
+TEST_CASE("the shaders' specialization follows the scene's features", "[setup]") {
+  // constant_id layout of shaders/liquid/common.glsl: fixed flag, obstacle count, 8 kinds,
+  // shallow water, integer gamma, emitters.
+  const std::vector<int32_t> dam = scene_specialization(setup_of("dam_break_2d.json"));
+  CHECK(dam == std::vector<int32_t>{1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 5, 0});
+
+  const std::vector<int32_t> obstacles = scene_specialization(setup_of("obstacles_2d.json"));
+  REQUIRE(obstacles.size() == 13);
+  CHECK(obstacles[1] == 3);
+  CHECK(std::vector<int32_t>(obstacles.begin() + 2, obstacles.begin() + 5) == std::vector<int32_t>{0, 1, 2});
+
+  const std::vector<int32_t> shallow = scene_specialization(setup_of("shallow_water.json"));
+  CHECK(shallow[10] == 1);
+  CHECK(shallow[11] == 1);  // gamma = 1: P = g (h + b)
+
+  CHECK(scene_specialization(setup_of("paper_3d.json"))[12] == 1);  // the jet
+
+  Scene fractional = load_scene(k_scene_dir / "dam_break_2d.json");
+  fractional.gamma = 6.5f;
+  CHECK(scene_specialization(make_setup(fractional, {}))[11] == 0);  // pow() in the shader
 }
