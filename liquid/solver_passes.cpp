@@ -17,9 +17,8 @@ ImageHandle add_splat(engine::graph::RenderGraph& graph, const SolverPipelines& 
     ImageHandle splat;
   };
   // In 3D each particle is drawn once per slice it may touch: the slice centres within r of it
-  // are at most ceil(2 r) consecutive layers (splat.vert). The splat is bound by vertex and point
-  // setup work on lavapipe (discarding every fragment leaves its time unchanged), so no spare
-  // instance is drawn.
+  // are at most ceil(2 r) consecutive layers (splat.vert). Every instance costs vertex shading,
+  // binning and point setup even when it is dropped, so no spare one is drawn.
   const uint32_t instances = pipelines.dimension == 3 ? uint32_t(std::ceil(2.0f * kernel_radius_cells)) : 1u;
   return graph
       .add_pass<Data>(
