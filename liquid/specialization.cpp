@@ -18,18 +18,6 @@ int32_t obstacle_kind(ObstacleShape shape) {
   return int32_t(gpu::k_obstacle_sphere);
 }
 
-// constant_id values of common.glsl.
-enum Constant : size_t {
-  k_features_fixed = 0,
-  k_obstacle_count = 1,
-  k_first_obstacle_kind = 2,  // one per obstacle slot, gpu::k_max_obstacles of them
-  k_shallow_water = 10,
-  k_integer_gamma = 11,
-  k_has_emitters = 12,
-  k_constant_count = 13,
-};
-static_assert(k_first_obstacle_kind + gpu::k_max_obstacles == k_shallow_water);
-
 }  // namespace
 
 std::vector<int32_t> scene_specialization(const SimulationSetup& setup) {
@@ -37,15 +25,14 @@ std::vector<int32_t> scene_specialization(const SimulationSetup& setup) {
   if (scene.obstacles.size() > size_t(gpu::k_max_obstacles))
     throw std::invalid_argument("liquid: " + std::to_string(scene.obstacles.size()) + " obstacles (at most " +
                                 std::to_string(gpu::k_max_obstacles) + ")");
-  std::vector<int32_t> constants(k_constant_count, 0);
-  constants[k_features_fixed] = 1;
-  constants[k_obstacle_count] = int32_t(scene.obstacles.size());
+  std::vector<int32_t> constants(specialization_id::count, 0);
+  constants[specialization_id::obstacle_count] = int32_t(scene.obstacles.size());
   for (size_t i = 0; i < scene.obstacles.size(); ++i)
-    constants[k_first_obstacle_kind + i] = obstacle_kind(scene.obstacles[i].shape);
-  constants[k_shallow_water] = scene.mode == SimulationMode::ShallowWater ? 1 : 0;
+    constants[specialization_id::first_obstacle_kind + i] = obstacle_kind(scene.obstacles[i].shape);
+  constants[specialization_id::shallow_water] = scene.mode == SimulationMode::ShallowWater ? 1 : 0;
   const bool integer_gamma = setup.gamma >= 1.0f && setup.gamma <= 8.0f && setup.gamma == std::floor(setup.gamma);
-  constants[k_integer_gamma] = integer_gamma ? int32_t(setup.gamma) : 0;
-  constants[k_has_emitters] = scene.emitters.empty() ? 0 : 1;
+  constants[specialization_id::integer_gamma] = integer_gamma ? int32_t(setup.gamma) : 0;
+  constants[specialization_id::has_emitters] = scene.emitters.empty() ? 0 : 1;
   return constants;
 }
 

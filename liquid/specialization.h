@@ -4,12 +4,24 @@
 // Why specialize at all: see the comment on FEATURES_FIXED in common.glsl.
 #pragma once
 
+#include "liquid/gpu_types.h"
 #include "liquid/setup.h"
 
 #include <cstdint>
 #include <vector>
 
 namespace liquid {
+
+// The constant_id of each feature in common.glsl (tests/cpu/test_shaders.cpp reads the ids back
+// from the compiled SPIR-V and compares).
+namespace specialization_id {
+constexpr size_t obstacle_count = 0;         // OBSTACLE_COUNT
+constexpr size_t first_obstacle_kind = 1;    // OBSTACLE_KIND_0 .. OBSTACLE_KIND_7
+constexpr size_t shallow_water = first_obstacle_kind + gpu::k_max_obstacles;  // SHALLOW_WATER
+constexpr size_t integer_gamma = shallow_water + 1;                           // INTEGER_GAMMA
+constexpr size_t has_emitters = integer_gamma + 1;                            // HAS_EMITTERS
+constexpr size_t count = has_emitters + 1;
+}  // namespace specialization_id
 
 std::vector<int32_t> scene_specialization(const SimulationSetup& setup);
 

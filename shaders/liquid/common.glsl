@@ -15,7 +15,7 @@
 #define OBSTACLE_METABALLS 2
 
 struct Obstacle {
-  vec4 center_kind;  // xyz centre (m) at the end of the step, w kind
+  vec4 center_kind;  // xyz centre (m) at the end of the step, w kind (shaders use OBSTACLE_KIND_i)
   vec4 size;         // sphere: x radius; box: xyz half extents; metaballs: x threshold, y first ball, z count
   vec4 velocity;     // xyz (m/s)
 };
@@ -37,8 +37,9 @@ layout(std140, set = 0, binding = 0) uniform SolverUniforms {
   vec4 gravity_dt;    // xyz gravity (m/s^2), w time step (s)
   vec4 pressure;      // x stiffness k (m^2/s^2), y gamma, z rest density rho0, w density scale (kg/m^3 per weight)
   vec4 kernel;        // x splat radius r (cells), y PIC ratio, z wall margin (m), w obstacle band (m)
-  ivec4 counts;       // x particle texture width, y active before the step, z active after emission, w obstacles
-  ivec4 counts2;      // x ground hills, y brushes, z emitters, w pressure form (0 clamped Tait, 1 printed: shallow water, 'chapter')
+  ivec4 counts;       // x particle texture width, y active before the step, z active after emission,
+                      // w obstacles (shaders use OBSTACLE_COUNT; kept for frame captures)
+  ivec4 counts2;      // x ground hills, y brushes, z emitters this step, w 1 in shallow water (shaders use SHALLOW_WATER)
   vec4 shallow;       // x rest depth (m)
   vec4 wall_kernel_beyond[2];  // [k / 4][k % 4]: fraction of the kernel's mass beyond a wall k + 0.5 cells away
   Obstacle obstacles[MAX_OBSTACLES];
@@ -48,43 +49,40 @@ layout(std140, set = 0, binding = 0) uniform SolverUniforms {
   EmitterRange emitters[MAX_EMITTERS];
 } u;
 
-// ---- Scene features fixed when the solver's pipelines are created (specialization constants) ----
-// liquid/solver_pipelines.cpp sets them from the scene; shaders that do not (the render passes)
-// keep FEATURES_FIXED = false and read the counts and kinds from the uniform block. Why: lavapipe
+// ---- Scene features, fixed when a pipeline is created (specialization constants) ----
+// Every pipeline whose shaders include this file passes liquid::scene_specialization(setup)
+// (liquid/specialization.cpp; a CPU test checks these ids against it). Why not uniforms: lavapipe
 // runs both sides of every branch for every fragment (masked SIMD lanes) and a loop's body at least
 // once, so code a scene does not use still costs there, and an obstacle index that varies in a loop
 // turns each of its uniform reads into a per-lane gather. With constant counts and kinds the
-// obstacle loops unroll to constant indices and unused shapes and terms drop out. On GPUs this is
-// the usual specialization of an uber-shader.
-layout(constant_id = 0) const bool FEATURES_FIXED = false;
-layout(constant_id = 1) const int OBSTACLE_COUNT = 0;
-layout(constant_id = 2) const int OBSTACLE_KIND_0 = 0;
-layout(constant_id = 3) const int OBSTACLE_KIND_1 = 0;
-layout(constant_id = 4) const int OBSTACLE_KIND_2 = 0;
-layout(constant_id = 5) const int OBSTACLE_KIND_3 = 0;
-layout(constant_id = 6) const int OBSTACLE_KIND_4 = 0;
-layout(constant_id = 7) const int OBSTACLE_KIND_5 = 0;
-layout(constant_id = 8) const int OBSTACLE_KIND_6 = 0;
-layout(constant_id = 9) const int OBSTACLE_KIND_7 = 0;
-layout(constant_id = 10) const bool SHALLOW_WATER = false;  // printed pressure form and ground height
-layout(constant_id = 11) const int INTEGER_GAMMA = 0;       // gamma when it is an integer 1..8, else 0
-layout(constant_id = 12) const bool HAS_EMITTERS = true;
+// obstacle loops unroll to constant indices and unused shapes and terms drop out (the 3D grid pass
+// went from 770 to 127 ms of CPU per step). On GPUs this is the usual specialization of an uber-shader.
+layout(constant_id = 0) const int OBSTACLE_COUNT = 0;
+layout(constant_id = 1) const int OBSTACLE_KIND_0 = 0;
+layout(constant_id = 2) const int OBSTACLE_KIND_1 = 0;
+layout(constant_id = 3) const int OBSTACLE_KIND_2 = 0;
+layout(constant_id = 4) const int OBSTACLE_KIND_3 = 0;
+layout(constant_id = 5) const int OBSTACLE_KIND_4 = 0;
+layout(constant_id = 6) const int OBSTACLE_KIND_5 = 0;
+layout(constant_id = 7) const int OBSTACLE_KIND_6 = 0;
+layout(constant_id = 8) const int OBSTACLE_KIND_7 = 0;
+layout(constant_id = 9) const bool SHALLOW_WATER = false;  // printed pressure form and ground height
+layout(constant_id = 10) const int INTEGER_GAMMA = 0;      // gamma when it is an integer 1..8, else 0
+layout(constant_id = 11) const bool HAS_EMITTERS = false;
 
-int obstacle_count() { return FEATURES_FIXED ? OBSTACLE_COUNT : u.counts.w; }
+int obstacle_count() { return OBSTACLE_COUNT; }
 
 int obstacle_kind(int index) {
-  if (!FEATURES_FIXED) return int(u.obstacles[index].center_kind.w);
   return index == 0 ? OBSTACLE_KIND_0 : index == 1 ? OBSTACLE_KIND_1 : index == 2 ? OBSTACLE_KIND_2
        : index == 3 ? OBSTACLE_KIND_3 : index == 4 ? OBSTACLE_KIND_4 : index == 5 ? OBSTACLE_KIND_5
        : index == 6 ? OBSTACLE_KIND_6 : OBSTACLE_KIND_7;
 }
 
-bool shallow_water() { return FEATURES_FIXED ? SHALLOW_WATER : u.counts2.w == 1; }
-bool has_emitters() { return !FEATURES_FIXED || HAS_EMITTERS; }
+bool shallow_water() { return SHALLOW_WATER; }
 
 // (rho / rho0)^gamma: repeated products when gamma is a small integer (the default 5), pow otherwise.
 float density_ratio_power(float ratio) {
-  if (!FEATURES_FIXED || INTEGER_GAMMA == 0) return pow(ratio, u.pressure.y);
+  if (INTEGER_GAMMA == 0) return pow(ratio, u.pressure.y);
   float result = ratio;
   [[unroll]] for (int i = 1; i < INTEGER_GAMMA; ++i) result *= ratio;
   return result;

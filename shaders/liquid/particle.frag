@@ -101,7 +101,7 @@ void main() {
     out_velocity = vec4(0.0);
     return;
   }
-  if (has_emitters() && index >= u.counts.y) {  // emitted this step
+  if (HAS_EMITTERS && index >= u.counts.y) {  // emitted this step
     for (int i = 0; i < u.counts2.z; ++i)
       if (index >= u.emitters[i].range.x && index < u.emitters[i].range.y) {
         emit(index, u.emitters[i]);

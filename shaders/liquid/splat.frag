@@ -4,14 +4,13 @@
 #extension GL_GOOGLE_include_directive : require
 #include "liquid/common.glsl"
 
-layout(location = 0) flat in vec2 v_center;
-layout(location = 1) flat in vec2 v_kernel;  // x: 1 - dz^2/r^2, y: 1/r^2 (from the vertex stage, so no uniform read here)
-layout(location = 2) flat in vec3 v_velocity;
+layout(location = 0) flat in vec4 v_point;  // xy centre (cells), z 1 - dz^2/r^2, w 1/r^2: no uniform read here
+layout(location = 1) flat in vec3 v_velocity;
 layout(location = 0) out vec4 out_splat;
 
 void main() {
-  vec2 d = gl_FragCoord.xy - v_center;
-  float t = max(v_kernel.x - dot(d, d) * v_kernel.y, 0.0);
+  vec2 d = gl_FragCoord.xy - v_point.xy;
+  float t = max(v_point.z - dot(d, d) * v_point.w, 0.0);
   float w = t * t * t;
   out_splat = vec4(w * v_velocity, w);
 }

@@ -12,9 +12,10 @@
 layout(set = 0, binding = 1) uniform sampler2D u_positions;
 layout(set = 0, binding = 2) uniform sampler2D u_velocities;
 
-layout(location = 0) flat out vec2 v_center;      // particle in grid units (cells), xy
-layout(location = 1) flat out vec2 v_kernel;      // x: 1 - dz^2/r^2 (dz: slice offset, 0 in 2D), y: 1/r^2 (cells^-2)
-layout(location = 2) flat out vec3 v_velocity;    // m/s
+// Two varyings, not more: lavapipe sets up every varying of every point.
+layout(location = 0) flat out vec4 v_point;     // xy particle in grid units (cells), z 1 - dz^2/r^2
+                                                // (dz: slice offset, 0 in 2D), w 1/r^2 (cells^-2)
+layout(location = 1) flat out vec3 v_velocity;  // m/s
 
 void main() {
   int width = u.counts.x;
@@ -33,16 +34,14 @@ void main() {
   if (layer < 0 || layer >= u.grid_dim.z || abs(dz) >= r) {
     gl_Position = vec4(-4.0, -4.0, 0.5, 1.0);  // outside the clip volume: the point is dropped
     gl_PointSize = 1.0;
-    v_center = vec2(0.0);
-    v_kernel = vec2(0.0);
+    v_point = vec4(0.0);
     return;
   }
   gl_Layer = layer;
   dz2 = dz * dz;
   chord = sqrt(r * r - dz2);
 #endif
-  v_center = g.xy;
-  v_kernel = vec2(1.0 - dz2 / (r * r), 1.0 / (r * r));
+  v_point = vec4(g.xy, 1.0 - dz2 / (r * r), 1.0 / (r * r));
   gl_Position = vec4(g.xy / vec2(u.grid_dim.xy) * 2.0 - 1.0, 0.5, 1.0);
   // Pixel centres within `chord` of the particle on both axes are covered.
   gl_PointSize = 2.0 * chord;

@@ -50,7 +50,7 @@ float tank_distance(vec2 q) {
 // which makes common.glsl's 3D box distance 0 everywhere inside; the 2D box distance avoids that.
 float obstacle_distance_2d(int i, vec2 p) {
   Obstacle o = u.obstacles[i];
-  if (int(o.center_kind.w) == OBSTACLE_BOX) return sd_box(vec3(p - o.center_kind.xy, 0.0), vec3(o.size.xy, 1.0));
+  if (obstacle_kind(i) == OBSTACLE_BOX) return sd_box(vec3(p - o.center_kind.xy, 0.0), vec3(o.size.xy, 1.0));
   return obstacle_distance(i, vec3(p, 0.0));
 }
 

@@ -419,23 +419,25 @@ TEST_CASE("fluid blocks are carved around the obstacles they overlap", "[setup]"
 }
 
 TEST_CASE("the shaders' specialization follows the scene's features", "[setup]") {
-  // constant_id layout of shaders/liquid/common.glsl: fixed flag, obstacle count, 8 kinds,
-  // shallow water, integer gamma, emitters.
+  // constant_id layout of shaders/liquid/common.glsl (tests/cpu/test_shaders.cpp checks the ids):
+  // obstacle count, 8 kinds, shallow water, integer gamma, emitters.
+  namespace id = specialization_id;
   const std::vector<int32_t> dam = scene_specialization(setup_of("dam_break_2d.json"));
-  CHECK(dam == std::vector<int32_t>{1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 5, 0});
+  CHECK(dam == std::vector<int32_t>{0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 5, 0});
 
   const std::vector<int32_t> obstacles = scene_specialization(setup_of("obstacles_2d.json"));
-  REQUIRE(obstacles.size() == 13);
-  CHECK(obstacles[1] == 3);
-  CHECK(std::vector<int32_t>(obstacles.begin() + 2, obstacles.begin() + 5) == std::vector<int32_t>{0, 1, 2});
+  REQUIRE(obstacles.size() == id::count);
+  CHECK(obstacles[id::obstacle_count] == 3);
+  CHECK(std::vector<int32_t>(obstacles.begin() + id::first_obstacle_kind, obstacles.begin() + id::first_obstacle_kind + 3) ==
+        std::vector<int32_t>{0, 1, 2});  // sphere, box, metaballs
 
   const std::vector<int32_t> shallow = scene_specialization(setup_of("shallow_water.json"));
-  CHECK(shallow[10] == 1);
-  CHECK(shallow[11] == 1);  // gamma = 1: P = g (h + b)
+  CHECK(shallow[id::shallow_water] == 1);
+  CHECK(shallow[id::integer_gamma] == 1);  // gamma = 1: P = g (h + b)
 
-  CHECK(scene_specialization(setup_of("paper_3d.json"))[12] == 1);  // the jet
+  CHECK(scene_specialization(setup_of("paper_3d.json"))[id::has_emitters] == 1);  // the jet
 
   Scene fractional = load_scene(k_scene_dir / "dam_break_2d.json");
   fractional.gamma = 6.5f;
-  CHECK(scene_specialization(make_setup(fractional, {}))[11] == 0);  // pow() in the shader
+  CHECK(scene_specialization(make_setup(fractional, {}))[id::integer_gamma] == 0);  // pow() in the shader
 }

@@ -29,7 +29,7 @@ double resident_mib() {
 
 }  // namespace
 
-TEST_CASE("a long 3D run with obstacles and an emitter does not grow host memory", "[gpu][liquid][resources]") {
+TEST_CASE("a long 3D run with obstacles, an emitter and a force brush does not grow host memory", "[gpu][liquid][resources]") {
   liquid::Scene scene = test::shipped_scene("small_3d");
   liquid::Obstacle sphere;
   sphere.shape = liquid::ObstacleShape::Sphere;
@@ -51,6 +51,7 @@ TEST_CASE("a long 3D run with obstacles and an emitter does not grow host memory
   jet.capacity = 2000;
   scene.emitters = {jet};
   liquid::LiquidNode node(test::gpu(), scene);
+  node.set_brushes({{.position = {0.1f, 0.1f, 0.12f}, .radius = 0.08f, .acceleration = {2.0f, 0.0f, 0.0f}}});
 
   test::run_steps(node, 75);  // warm-up: pipelines, first allocations
   const double before = resident_mib();
