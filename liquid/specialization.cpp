@@ -33,6 +33,10 @@ std::vector<int32_t> scene_specialization(const SimulationSetup& setup) {
   const bool integer_gamma = setup.gamma >= 1.0f && setup.gamma <= 8.0f && setup.gamma == std::floor(setup.gamma);
   constants[specialization_id::integer_gamma] = integer_gamma ? int32_t(setup.gamma) : 0;
   constants[specialization_id::has_emitters] = scene.emitters.empty() ? 0 : 1;
+  if (scene.ground.size() > size_t(gpu::k_max_ground))
+    throw std::invalid_argument("liquid: " + std::to_string(scene.ground.size()) + " ground hills (at most " +
+                                std::to_string(gpu::k_max_ground) + ")");
+  constants[specialization_id::ground_hills] = int32_t(scene.ground.size());
   return constants;
 }
 

@@ -39,7 +39,7 @@ layout(std140, set = 0, binding = 0) uniform SolverUniforms {
   vec4 kernel;        // x splat radius r (cells), y PIC ratio, z wall margin (m), w obstacle band (m)
   ivec4 counts;       // x particle texture width, y active before the step, z active after emission,
                       // w obstacles (shaders use OBSTACLE_COUNT; kept for frame captures)
-  ivec4 counts2;      // x ground hills, y brushes, z emitters this step, w 1 in shallow water (shaders use SHALLOW_WATER)
+  ivec4 counts2;      // x ground hills (shaders use GROUND_HILLS), y brushes, z emitters this step, w 1 in shallow water (shaders use SHALLOW_WATER)
   vec4 shallow;       // x rest depth (m)
   vec4 wall_kernel_beyond[2];  // [k / 4][k % 4]: fraction of the kernel's mass beyond a wall k + 0.5 cells away
   Obstacle obstacles[MAX_OBSTACLES];
@@ -69,6 +69,7 @@ layout(constant_id = 8) const int OBSTACLE_KIND_7 = 0;
 layout(constant_id = 9) const bool SHALLOW_WATER = false;  // printed pressure form and ground height
 layout(constant_id = 10) const int INTEGER_GAMMA = 0;      // gamma when it is an integer 1..8, else 0
 layout(constant_id = 11) const bool HAS_EMITTERS = false;
+layout(constant_id = 12) const int GROUND_HILLS = 0;       // shallow water: hills of the ground b(x, y)
 
 int obstacle_count() { return OBSTACLE_COUNT; }
 
@@ -195,7 +196,7 @@ float obstacle_density(vec3 p) {
 // rho0 * b / rest_depth so that P = g (h + b).
 float ground_height(vec2 p) {
   float b = 0.0;
-  for (int i = 0; i < u.counts2.x; ++i) {
+  [[unroll]] for (int i = 0; i < GROUND_HILLS; ++i) {
     vec4 hill = u.ground[i];
     vec2 d = p - hill.xy;
     b += hill.z * exp(-dot(d, d) / (2.0 * hill.w * hill.w));

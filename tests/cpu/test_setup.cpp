@@ -420,10 +420,10 @@ TEST_CASE("fluid blocks are carved around the obstacles they overlap", "[setup]"
 
 TEST_CASE("the shaders' specialization follows the scene's features", "[setup]") {
   // constant_id layout of shaders/liquid/common.glsl (tests/cpu/test_shaders.cpp checks the ids):
-  // obstacle count, 8 kinds, shallow water, integer gamma, emitters.
+  // obstacle count, 8 kinds, shallow water, integer gamma, emitters, ground hills.
   namespace id = specialization_id;
   const std::vector<int32_t> dam = scene_specialization(setup_of("dam_break_2d.json"));
-  CHECK(dam == std::vector<int32_t>{0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 5, 0});
+  CHECK(dam == std::vector<int32_t>{0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 5, 0, 0});
 
   const std::vector<int32_t> obstacles = scene_specialization(setup_of("obstacles_2d.json"));
   REQUIRE(obstacles.size() == id::count);
@@ -434,6 +434,7 @@ TEST_CASE("the shaders' specialization follows the scene's features", "[setup]")
   const std::vector<int32_t> shallow = scene_specialization(setup_of("shallow_water.json"));
   CHECK(shallow[id::shallow_water] == 1);
   CHECK(shallow[id::integer_gamma] == 1);  // gamma = 1: P = g (h + b)
+  CHECK(shallow[id::ground_hills] == 3);
 
   CHECK(scene_specialization(setup_of("paper_3d.json"))[id::has_emitters] == 1);  // the jet
 
