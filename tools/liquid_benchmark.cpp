@@ -159,12 +159,13 @@ void set_wall_margin(liquid::Scene& scene) {
 double expected_frame_ms(const Configuration& c, const Options& o) {
   const double particles = c.particles, cells = double(c.grid.x) * c.grid.y * c.grid.z;
   const bool three_d = c.scene.dimension == 3;
-  double ms = three_d ? 4.3e-3 * particles + 8.3e-4 * cells : 8.5e-4 * particles + 3.5e-4 * cells;
+  // Fitted to the 11:03 UTC run of 2026-11-25 (README, Benchmark).
+  double ms = three_d ? 2.7e-3 * particles + 2.0e-5 * cells : 5.4e-4 * particles + 4.5e-5 * cells;
   ms = ms * o.steps_per_frame + 1.0;
   if (c.mode == Mode::SimulationAndRender) {
     const double pixels = double(o.width) * o.height;
-    const double view = three_d ? 8.6e-4 : c.scene.mode == liquid::SimulationMode::ShallowWater ? 4.8e-4 : 6.0e-5;
-    ms += (view + 7.5e-5) * pixels;
+    const double view = three_d ? 5.3e-4 : c.scene.mode == liquid::SimulationMode::ShallowWater ? 1.55e-4 : 2.6e-5;
+    ms += (view + 4.5e-5) * pixels;  // the view, then FXAA
   }
   return ms;
 }
