@@ -57,7 +57,8 @@ class LiquidNode {
   // External forces for the following steps (at most 4).
   void set_brushes(std::vector<ForceBrush> brushes) { brushes_ = std::move(brushes); }
   // Places obstacle `index` (a host-driven obstacle): from now on it moves at `velocity` from
-  // `center`, replacing the scene's scripted motion.
+  // `center`, replacing the scene's scripted motion. The set of obstacles and their shapes are
+  // fixed when the node is created (the shaders are specialized for them).
   void set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity);
   std::vector<ObstaclePose> obstacle_poses(double time) const;
 
