@@ -2,7 +2,7 @@
 // obstacle count and shapes, shallow water, an integer gamma, emitters, the ground's hills
 // (constant_id i = entry i).
 // They are fixed for a node's lifetime; obstacle poses, brushes and particle counts are not.
-// Why specialize at all: see the comment on FEATURES_FIXED in common.glsl.
+// Why specialize at all: see the comment above the constants in common.glsl.
 #pragma once
 
 #include "liquid/gpu_types.h"

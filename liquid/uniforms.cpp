@@ -7,7 +7,6 @@
 #include <string>
 
 namespace liquid {
-namespace {
 
 void require_at_most(size_t count, int limit, const char* what) {
   if (count > size_t(limit))
@@ -15,16 +14,14 @@ void require_at_most(size_t count, int limit, const char* what) {
                                 std::to_string(limit) + ")");
 }
 
-float obstacle_kind(ObstacleShape shape) {
+int obstacle_kind_code(ObstacleShape shape) {
   switch (shape) {
-    case ObstacleShape::Sphere: return gpu::k_obstacle_sphere;
-    case ObstacleShape::Box: return gpu::k_obstacle_box;
-    case ObstacleShape::Metaballs: return gpu::k_obstacle_metaballs;
+    case ObstacleShape::Sphere: return int(gpu::k_obstacle_sphere);
+    case ObstacleShape::Box: return int(gpu::k_obstacle_box);
+    case ObstacleShape::Metaballs: return int(gpu::k_obstacle_metaballs);
   }
-  return gpu::k_obstacle_sphere;
+  return int(gpu::k_obstacle_sphere);
 }
-
-}  // namespace
 
 float wall_margin(const SimulationSetup& setup) { return setup.scene.wall_margin_cells * setup.cell_size; }
 
@@ -74,7 +71,7 @@ gpu::SolverUniforms make_uniforms(const SimulationSetup& setup, const StepInputs
     const Obstacle& o = scene.obstacles[i];
     const ObstaclePose pose = i < step.obstacle_poses.size() ? step.obstacle_poses[i] : ObstaclePose{o.center, {}};
     gpu::Obstacle& g = u.obstacles[i];
-    g.center_kind = glm::vec4(pose.center, obstacle_kind(o.shape));
+    g.center_kind = glm::vec4(pose.center, float(obstacle_kind_code(o.shape)));
     g.velocity = glm::vec4(pose.velocity, 0.0f);
     switch (o.shape) {
       case ObstacleShape::Sphere: g.size = glm::vec4(o.radius, 0, 0, 0); break;

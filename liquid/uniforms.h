@@ -42,6 +42,12 @@ gpu::SolverUniforms make_uniforms(const SimulationSetup& setup, const StepInputs
 // splatted density by the share inside the domain, so walls do not read as low density.
 double kernel_mass_beyond_wall(int dimension, double radius_cells, double distance_cells);
 
+// Throws std::invalid_argument ("liquid: N what (at most limit)") when count exceeds limit.
+void require_at_most(size_t count, int limit, const char* what);
+
+// The code shaders compare an obstacle's kind with (OBSTACLE_SPHERE, ... in common.glsl).
+int obstacle_kind_code(ObstacleShape shape);
+
 // Wall clamp distance (m) and obstacle density band (m) the solver uses for this setup.
 float wall_margin(const SimulationSetup& setup);
 float obstacle_band(const SimulationSetup& setup);

@@ -147,12 +147,18 @@ float sd_metaballs(vec3 p, Obstacle o) {
   return (threshold - field) / max(length(gradient), 1e-4);
 }
 
-float obstacle_distance(int index, vec3 p) {
-  Obstacle o = u.obstacles[index];
-  vec3 local = p - o.center_kind.xyz;
+// p relative to obstacle `index`'s centre (in the plane in 2D).
+vec3 obstacle_local(int index, vec3 p) {
+  vec3 local = p - u.obstacles[index].center_kind.xyz;
 #if DIM == 2
   local.z = 0.0;
 #endif
+  return local;
+}
+
+float obstacle_distance(int index, vec3 p) {
+  Obstacle o = u.obstacles[index];
+  vec3 local = obstacle_local(index, p);
   int kind = obstacle_kind(index);
   if (kind == OBSTACLE_SPHERE) return length(local) - o.size.x;
   if (kind == OBSTACLE_BOX) return sd_box(local, o.size.xyz);
@@ -162,10 +168,7 @@ float obstacle_distance(int index, vec3 p) {
 // Outward normal: exact for a sphere, by central differences for the other kinds.
 vec3 obstacle_normal(int index, vec3 p) {
   if (obstacle_kind(index) == OBSTACLE_SPHERE) {
-    vec3 local = p - u.obstacles[index].center_kind.xyz;
-#if DIM == 2
-    local.z = 0.0;
-#endif
+    vec3 local = obstacle_local(index, p);
     float len = length(local);
     return len > 1e-12 ? local / len : vec3(0.0, 1.0, 0.0);
   }
