@@ -45,6 +45,8 @@ class LiquidNode {
   LiquidNode(engine::vk::Context& context, const Scene& scene, const LiquidOptions& options = {});
   ~LiquidNode();
 
+  // The scene the node was created from, and the solver parameters derived from it.
+  const Scene& scene() const { return setup_.scene; }
   const SimulationSetup& setup() const { return setup_; }
   int dimension() const { return setup_.dimension; }
 
