@@ -6,7 +6,7 @@
 
 namespace liquid {
 
-Diagnostics compute_diagnostics(const SimulationSetup& setup, const ParticleSnapshot& particles,
+Diagnostics compute_diagnostics(const Scene& scene, const SimulationSetup& setup, const ParticleSnapshot& particles,
                                 const std::vector<float>& density_ratio,
                                 const std::vector<ObstaclePose>& obstacle_poses, int step, double time) {
   Diagnostics d;
@@ -29,9 +29,9 @@ Diagnostics compute_diagnostics(const SimulationSetup& setup, const ParticleSnap
         ++d.outside_domain;
         break;
       }
-    for (size_t o = 0; o < setup.scene.obstacles.size(); ++o) {
-      const glm::vec3 center = o < obstacle_poses.size() ? obstacle_poses[o].center : setup.scene.obstacles[o].center;
-      if (obstacle_distance(setup.scene.obstacles[o], center, x, setup.dimension) < 0.0f) {
+    for (size_t o = 0; o < scene.obstacles.size(); ++o) {
+      const glm::vec3 center = o < obstacle_poses.size() ? obstacle_poses[o].center : scene.obstacles[o].center;
+      if (obstacle_distance(scene.obstacles[o], center, x, setup.dimension) < 0.0f) {
         ++d.inside_obstacles;
         break;
       }
@@ -49,8 +49,7 @@ Diagnostics compute_diagnostics(const SimulationSetup& setup, const ParticleSnap
   return d;
 }
 
-double kinetic_energy_bound(const SimulationSetup& setup, double factor) {
-  const Scene& scene = setup.scene;
+double kinetic_energy_bound(const Scene& scene, const SimulationSetup& setup, double factor) {
   double speed2 = 2.0 * glm::length(setup.gravity) * setup.domain.y;  // a fall over the domain height
   for (const FluidBlock& b : scene.fluid_blocks) speed2 = std::max(speed2, double(glm::dot(b.velocity, b.velocity)));
   for (const Emitter& e : scene.emitters) speed2 = std::max(speed2, double(glm::dot(e.velocity, e.velocity)));

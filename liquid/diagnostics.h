@@ -5,6 +5,7 @@
 
 #include "liquid/obstacles.h"
 #include "liquid/setup.h"
+#include "liquid/types.h"
 
 #include <glm/glm.hpp>
 
@@ -20,33 +21,14 @@ class SimulationError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-struct Diagnostics {
-  int step = 0;
-  double time = 0.0;               // s
-  int active_particles = 0;
-  int outside_domain = 0;          // particles beyond a wall
-  int inside_obstacles = 0;        // particles inside an obstacle (signed distance < 0)
-  int non_finite = 0;              // particles with a NaN or Inf component
-  float max_density_ratio = 0.0f;  // max rho / rho0 over the grid
-  double mass = 0.0;               // kg, active particles * particle mass
-  double kinetic_energy = 0.0;     // J, sum 1/2 m |u|^2
-  float max_speed = 0.0f;          // m/s
-  glm::vec3 center_of_mass{0.0f};  // m
-};
-
-struct ParticleSnapshot {
-  std::vector<glm::vec4> positions;   // active particles only
-  std::vector<glm::vec4> velocities;
-};
-
 // Computes the diagnostics of a snapshot; `density_ratio` is the grid's rho / rho0 (may be empty).
-Diagnostics compute_diagnostics(const SimulationSetup& setup, const ParticleSnapshot& particles,
+Diagnostics compute_diagnostics(const Scene& scene, const SimulationSetup& setup, const ParticleSnapshot& particles,
                                 const std::vector<float>& density_ratio,
                                 const std::vector<ObstaclePose>& obstacle_poses, int step, double time);
 
 // The kinetic energy above which a run counts as unstable: `factor` times the energy the scene
 // could release (potential energy over the domain height, plus initial and emitter motion).
-double kinetic_energy_bound(const SimulationSetup& setup, double factor = 20.0);
+double kinetic_energy_bound(const Scene& scene, const SimulationSetup& setup, double factor = 20.0);
 
 // Throws SimulationError naming the step when particles are not finite or the energy is past `bound`.
 void check_stable(const Diagnostics& diagnostics, double energy_bound);

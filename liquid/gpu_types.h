@@ -1,61 +1,34 @@
-// C++ mirror of the solver's uniform block (shaders/liquid/common.glsl, std140). Every member is a
-// 16-byte vector so the layouts match without padding rules; static_asserts keep them in step.
+// The C++ side of shaders/liquid/shared.h: the solver's uniform block and the limits, under C++
+// names. The layout is written once (in shared.h); the static_asserts pin the std140 offsets, and
+// tests/cpu/test_shaders.cpp compares them with the offsets glslang gives the compiled shaders.
 #pragma once
 
-#include <glm/glm.hpp>
+#include "shaders/liquid/shared.h"
 
 #include <cstddef>
 
 namespace liquid::gpu {
 
-constexpr int k_max_obstacles = 8;
-constexpr int k_max_balls = 32;
-constexpr int k_max_ground = 16;
-constexpr int k_max_brushes = 4;
-constexpr int k_max_emitters = 4;
+constexpr int k_max_obstacles = LIQUID_MAX_OBSTACLES;
+constexpr int k_max_balls = LIQUID_MAX_BALLS;
+constexpr int k_max_ground_hills = LIQUID_MAX_GROUND_HILLS;
+constexpr int k_max_brushes = LIQUID_MAX_BRUSHES;
+constexpr int k_max_emitters = LIQUID_MAX_EMITTERS;
+constexpr int k_max_kernel_radius_cells = LIQUID_MAX_KERNEL_RADIUS_CELLS;
+constexpr int k_wall_table_size = LIQUID_WALL_TABLE_SIZE;
 
-constexpr float k_obstacle_sphere = 0.0f;
-constexpr float k_obstacle_box = 1.0f;
-constexpr float k_obstacle_metaballs = 2.0f;
+constexpr int k_obstacle_sphere = LIQUID_OBSTACLE_SPHERE;
+constexpr int k_obstacle_box = LIQUID_OBSTACLE_BOX;
+constexpr int k_obstacle_metaballs = LIQUID_OBSTACLE_METABALLS;
 
-struct Obstacle {
-  glm::vec4 center_kind;
-  glm::vec4 size;
-  glm::vec4 velocity;
-};
-
-struct Brush {
-  glm::vec4 position_radius;
-  glm::vec4 acceleration;
-};
-
-struct EmitterRange {
-  glm::vec4 position_radius;
-  glm::vec4 velocity;
-  glm::ivec4 range;
-};
-
-struct SolverUniforms {
-  glm::vec4 domain_h;
-  glm::ivec4 grid_dim;
-  glm::vec4 gravity_dt;
-  glm::vec4 pressure;
-  glm::vec4 kernel;
-  glm::ivec4 counts;
-  glm::ivec4 counts2;
-  glm::vec4 shallow;
-  glm::vec4 wall_kernel_beyond[2];  // kernel mass beyond a wall k + 0.5 cells away, k = 0..7
-  Obstacle obstacles[k_max_obstacles];
-  glm::vec4 balls[k_max_balls];
-  glm::vec4 ground[k_max_ground];
-  Brush brushes[k_max_brushes];
-  EmitterRange emitters[k_max_emitters];
-};
-
-static_assert(sizeof(Obstacle) == 48);
-static_assert(sizeof(EmitterRange) == 48);
-static_assert(offsetof(SolverUniforms, obstacles) == 160);
-static_assert(offsetof(SolverUniforms, balls) == 160 + 48 * k_max_obstacles);
-static_assert(sizeof(SolverUniforms) == 160 + 48 * 8 + 16 * 32 + 16 * 16 + 32 * 4 + 48 * 4);
+static_assert(k_wall_table_size % 4 == 0, "the wall table is packed into vec4s");
+static_assert(sizeof(Obstacle) == 64 && offsetof(Obstacle, velocity) == 32 && offsetof(Obstacle, ball_count) == 48);
+static_assert(sizeof(Brush) == 32 && offsetof(Brush, acceleration) == 16);
+static_assert(sizeof(EmitterRange) == 48 && offsetof(EmitterRange, end) == 32);
+static_assert(offsetof(SolverUniforms, rest_depth) == 96);
+static_assert(offsetof(SolverUniforms, wall_kernel_beyond) == 112);
+static_assert(offsetof(SolverUniforms, obstacles) == 144);
+static_assert(offsetof(SolverUniforms, balls) == 144 + 64 * k_max_obstacles);
+static_assert(sizeof(SolverUniforms) == 144 + 64 * 8 + 16 * 32 + 16 * 16 + 32 * 4 + 48 * 4);
 
 }  // namespace liquid::gpu

@@ -2,6 +2,7 @@
 
 #include "engine/graph/transfer.h"
 #include "engine/vk/context.h"
+#include "liquid/specialization.h"
 
 #include <glm/gtc/packing.hpp>
 
@@ -35,19 +36,23 @@ std::vector<T> as_vector(const std::vector<std::byte>& bytes, size_t count) {
 }  // namespace
 
 LiquidNode::LiquidNode(engine::vk::Context& context, const Scene& scene, const LiquidOptions& options)
-    : context_(context), setup_(make_setup(scene, device_limits(context))) {
+    : context_(context), scene_(scene), setup_(make_setup(scene, device_limits(context))),
+      frames_in_flight_(options.frames_in_flight) {
   if (setup_.dimension == 3 && !context.supports_vertex_layer_output())
     throw std::runtime_error("the device cannot write gl_Layer from a vertex shader (shaderOutputLayer), "
                              "which the 3D splat needs");
   const VkFormat format = splat_format(scene);
   require_blendable(context, format, scene.splat_format == SplatFormat::Rgba16f ? "RGBA16F" : "RGBA32F");
-  pipelines_ = std::make_unique<SolverPipelines>(context, setup_, format);
+  const std::vector<int32_t> specialization = scene_specialization(scene_, setup_);
+  splat_ = std::make_unique<SplatPass>(context, setup_, format, specialization);
+  grid_ = std::make_unique<GridPass>(context, setup_, specialization);
+  particle_update_ = std::make_unique<ParticleUpdatePass>(context, setup_, specialization);
   state_ = std::make_unique<LiquidState>(context, setup_, format);
   max_steps_per_frame_ = options.max_steps_per_frame > 0 ? options.max_steps_per_frame : scene.substeps;
   uniforms_ = std::make_unique<engine::vk::UniformArena>(
-      context, VkDeviceSize(max_steps_per_frame_) * 256 * ((sizeof(gpu::SolverUniforms) + 255) / 256),
+      context, engine::vk::UniformArena::frame_bytes({sizeof(gpu::SolverUniforms)}, max_steps_per_frame_),
       options.frames_in_flight + 1);
-  energy_bound_ = kinetic_energy_bound(setup_, options.energy_bound_factor);
+  energy_bound_ = kinetic_energy_bound(scene_, setup_, options.energy_bound_factor);
   active_ = setup_.initial_particles;
   emitted_.assign(scene.emitters.size(), 0);
   pose_overrides_.resize(scene.obstacles.size());
@@ -63,13 +68,33 @@ void LiquidNode::set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 vel
 
 std::vector<ObstaclePose> LiquidNode::obstacle_poses(double time) const {
   std::vector<ObstaclePose> poses;
-  for (size_t i = 0; i < setup_.scene.obstacles.size(); ++i) {
+  for (size_t i = 0; i < scene_.obstacles.size(); ++i) {
     if (const auto& o = pose_overrides_[i])
       poses.push_back({o->center + o->velocity * float(time - o->since), o->velocity});
     else
-      poses.push_back(scripted_pose(setup_.scene.obstacles[i], time));
+      poses.push_back(scripted_pose(scene_.obstacles[i], time));
   }
   return poses;
+}
+
+gpu::SolverUniforms LiquidNode::current_uniforms() const {
+  StepInputs inputs;
+  inputs.obstacle_poses = obstacle_poses(time_);
+  return make_uniforms(scene_, setup_, inputs);
+}
+
+std::vector<EmissionRange> LiquidNode::emit(double end_time, int& next_index) {
+  // Emitters (the paper's jet): this step's new particles take the next texels in order.
+  std::vector<EmissionRange> ranges;
+  for (size_t e = 0; e < scene_.emitters.size(); ++e) {
+    const int total = emitted_by(scene_.emitters[e], setup_.dimension, setup_.particle_spacing, end_time);
+    const int count = std::min(total - emitted_[e], setup_.capacity - next_index);
+    if (count <= 0) continue;
+    ranges.push_back({int(e), next_index, next_index + count});
+    next_index += count;
+    emitted_[e] += count;
+  }
+  return ranges;
 }
 
 LiquidImages LiquidNode::add_to(engine::graph::RenderGraph& graph, int steps) {
@@ -86,33 +111,24 @@ LiquidImages LiquidNode::add_to(engine::graph::RenderGraph& graph, int steps) {
   GridImages grids{graph.import_image(s.grid_velocity.name(), s.grid_velocity),
                    graph.import_image(s.density.name(), s.density)};
 
-  const Scene& scene = setup_.scene;
-  const float dt = scene.time_step;
+  const float dt = setup_.time_step;
   for (int k = 0; k < steps; ++k) {
     const double t1 = time_ + dt;
     StepInputs step;
     step.dt = dt;
     step.active_before = active_;
     int next_index = active_;
-    // Emitters (the paper's jet): this step's new particles take the next texels in order.
-    for (size_t e = 0; e < scene.emitters.size(); ++e) {
-      const int total = emitted_by(scene.emitters[e], setup_.dimension, scene.particle_spacing, t1);
-      const int count = std::min(total - emitted_[e], setup_.capacity - next_index);
-      if (count <= 0) continue;
-      step.emissions.push_back({int(e), next_index, next_index + count});
-      next_index += count;
-      emitted_[e] += count;
-    }
+    step.emissions = emit(t1, next_index);
     step.active_after = next_index;
     step.obstacle_poses = obstacle_poses(t1);
     step.brushes = brushes_;
-    const engine::vk::UniformSlice slice = uniforms_->push(make_uniforms(setup_, step));
+    const engine::vk::UniformSlice slice = uniforms_->push(make_uniforms(scene_, setup_, step));
 
     const int cur = s.current, next = 1 - s.current;
-    splat = add_splat(graph, *pipelines_, slice, particles[cur], splat, active_, scene.kernel_radius_cells);
-    grids = add_grid(graph, *pipelines_, slice, splat, grids);
-    particles[next] = add_particle_update(graph, *pipelines_, slice, particles[cur], splat, grids, particles[next],
-                                          step.active_after);
+    splat = splat_->add_to(graph, slice, particles[cur], splat, active_);
+    grids = grid_->add_to(graph, slice, splat, grids);
+    particles[next] = particle_update_->add_to(graph, slice, particles[cur], splat, grids, particles[next],
+                                               step.active_after);
     s.current = next;
     active_ = step.active_after;
     time_ = t1;
@@ -154,7 +170,7 @@ Diagnostics LiquidNode::diagnose() { return diagnose(read_particles()); }
 
 Diagnostics LiquidNode::diagnose(const ParticleSnapshot& particles) {
   const Diagnostics d =
-      compute_diagnostics(setup_, particles, read_density_ratio(), obstacle_poses(time_), step_, time_);
+      compute_diagnostics(scene_, setup_, particles, read_density_ratio(), obstacle_poses(time_), step_, time_);
   check_stable(d, energy_bound_);
   return d;
 }

@@ -1,7 +1,7 @@
 // LiquidNode: the one entry point a host engine uses. Created from a scene, it adds the solver's
-// passes (splat -> grid -> particle, per step) to the host's render graph each frame, exposes the
-// grids and particles as graph images for the host's own passes, takes force brushes and obstacle
-// updates, and reads back particles and diagnostics on demand.
+// passes (splat -> grid -> particle update, per step) to the host's render graph each frame,
+// exposes the grids and particles as graph images for the host's own passes, takes force brushes
+// and obstacle updates, and reads back particles and diagnostics on demand.
 #pragma once
 
 #include "engine/graph/render_graph.h"
@@ -9,8 +9,11 @@
 #include "liquid/diagnostics.h"
 #include "liquid/scene.h"
 #include "liquid/setup.h"
-#include "liquid/solver_passes.h"
+#include "liquid/solver/grid.h"
+#include "liquid/solver/particle_update.h"
+#include "liquid/solver/splat.h"
 #include "liquid/state.h"
+#include "liquid/types.h"
 #include "liquid/uniforms.h"
 
 #include <memory>
@@ -23,21 +26,6 @@ class Context;
 
 namespace liquid {
 
-struct LiquidOptions {
-  uint32_t frames_in_flight = 2;  // frames the GPU may still be running when add_to() is called
-  int max_steps_per_frame = 0;    // 0 = the scene's substeps (uniform space is sized for this)
-  double energy_bound_factor = 20.0;
-};
-
-// The graph images after the steps add_to() declared; valid for the rest of that graph.
-struct LiquidImages {
-  ImageHandle positions;      // RGBA32F particle texture, xyz m
-  ImageHandle velocities;     // RGBA32F particle texture, xyz m/s
-  ImageHandle splat;          // (sum w u, sum w), the last step's splat
-  ImageHandle grid_velocity;  // (u', fluid flag)
-  ImageHandle density;        // R16F rho / rho0
-};
-
 class LiquidNode {
  public:
   // Throws SceneError when the scene does not fit the device (grid or particle count past its
@@ -46,23 +34,28 @@ class LiquidNode {
   ~LiquidNode();
 
   // The scene the node was created from, and the solver parameters derived from it.
-  const Scene& scene() const { return setup_.scene; }
+  const Scene& scene() const { return scene_; }
   const SimulationSetup& setup() const { return setup_; }
   int dimension() const { return setup_.dimension; }
+  // Frames the GPU may still be running when add_to() is called (views size their uniforms by it).
+  uint32_t frames_in_flight() const { return frames_in_flight_; }
 
   // Declares `steps` simulation steps on `graph` (the host then compiles and executes it).
   // Advances the host-side clock and particle count: the graph must be executed.
   LiquidImages add_to(engine::graph::RenderGraph& graph, int steps);
   // The scene's steps per frame.
-  int substeps() const { return setup_.scene.substeps; }
+  int substeps() const { return scene_.substeps; }
 
-  // External forces for the following steps (at most 4).
+  // External forces for the following steps (at most LIQUID_MAX_BRUSHES).
   void set_brushes(std::vector<ForceBrush> brushes) { brushes_ = std::move(brushes); }
   // Places obstacle `index` (a host-driven obstacle): from now on it moves at `velocity` from
   // `center`, replacing the scene's scripted motion. The set of obstacles and their shapes are
   // fixed when the node is created (the shaders are specialized for them).
   void set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity);
   std::vector<ObstaclePose> obstacle_poses(double time) const;
+  // The solver's uniform block for the current state with no step in progress: what the views
+  // read (obstacle poses at the node's time).
+  gpu::SolverUniforms current_uniforms() const;
 
   int active_particles() const { return active_; }
   int step_count() const { return step_; }
@@ -81,9 +74,16 @@ class LiquidNode {
   LiquidState& state() { return *state_; }
 
  private:
+  // This step's emission ranges, advancing the emitters' counts.
+  std::vector<EmissionRange> emit(double end_time, int& next_index);
+
   engine::vk::Context& context_;
+  Scene scene_;
   SimulationSetup setup_;
-  std::unique_ptr<SolverPipelines> pipelines_;
+  uint32_t frames_in_flight_ = 2;
+  std::unique_ptr<SplatPass> splat_;
+  std::unique_ptr<GridPass> grid_;
+  std::unique_ptr<ParticleUpdatePass> particle_update_;
   std::unique_ptr<LiquidState> state_;
   std::unique_ptr<engine::vk::UniformArena> uniforms_;
   int max_steps_per_frame_ = 0;

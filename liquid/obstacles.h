@@ -4,18 +4,13 @@
 #pragma once
 
 #include "liquid/scene.h"
+#include "liquid/types.h"
 
 #include <glm/glm.hpp>
 
 #include <vector>
 
 namespace liquid {
-
-// An obstacle's placement at one instant.
-struct ObstaclePose {
-  glm::vec3 center{0.0f};    // m
-  glm::vec3 velocity{0.0f};  // m/s
-};
 
 // Scripted motion of the scene: center + velocity t + amplitude sin(2 pi f t).
 ObstaclePose scripted_pose(const Obstacle& obstacle, double time);

@@ -344,7 +344,7 @@ void read_physics(const Reader& r, const Json& doc, Scene& scene) {
     scene.stiffness = float(r.number_in(*v, "stiffness", 0.0, 1e6, true));
   if (const Json* v = Reader::find(doc, "gamma")) scene.gamma = float(r.number_in(*v, "gamma", 1.0, 10.0));
   if (const Json* v = Reader::find(doc, "kernel_radius_cells"))
-    scene.kernel_radius_cells = float(r.number_in(*v, "kernel_radius_cells", 1.0, 8.0));
+    scene.kernel_radius_cells = float(r.number_in(*v, "kernel_radius_cells", 1.0, gpu::k_max_kernel_radius_cells));
   if (const Json* v = Reader::find(doc, "pic_ratio")) scene.pic_ratio = float(r.number_in(*v, "pic_ratio", 0.0, 1.0));
   if (const Json* v = Reader::find(doc, "time_step")) scene.time_step = float(r.number_in(*v, "time_step", 1e-6, 0.1));
   if (const Json* v = Reader::find(doc, "substeps")) scene.substeps = r.integer_in(*v, "substeps", 1, 1000);
@@ -370,7 +370,7 @@ void read_contents(const Reader& r, const Json& doc, Scene& scene) {
     r.fail("obstacles", "at most " + std::to_string(gpu::k_max_balls) + " metaballs in all are supported, got " +
                             std::to_string(balls));
   if (!shallow && Reader::find(doc, "ground")) r.fail("ground", "only allowed in shallow_water mode");
-  scene.ground = read_array<GroundHill>(r, doc, "ground", gpu::k_max_ground, read_ground_hill);
+  scene.ground = read_array<GroundHill>(r, doc, "ground", gpu::k_max_ground_hills, read_ground_hill);
   if (const Json* v = Reader::find(doc, "camera")) {
     if (scene.dimension != 3) r.fail("camera", "only allowed in 3D scenes (dimension 3)");
     scene.camera = read_camera(r, *v, "camera");

@@ -209,8 +209,13 @@ SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
   if (scene.dimension != 2 && scene.dimension != 3)
     fail(scene, "dimension must be 2 or 3, got " + std::to_string(scene.dimension));
   SimulationSetup setup;
-  setup.scene = scene;
   setup.dimension = scene.dimension;
+  setup.shallow_water = scene.mode == SimulationMode::ShallowWater;
+  setup.time_step = scene.time_step;
+  setup.particle_spacing = scene.particle_spacing;
+  setup.kernel_radius_cells = scene.kernel_radius_cells;
+  setup.pic_ratio = scene.pic_ratio;
+  setup.rest_depth = scene.rest_depth;
   const int d = scene.dimension;
 
   std::int64_t initial = 0, capacity = 0;
@@ -263,6 +268,9 @@ SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
     setup.stiffness = scene.stiffness;
     setup.gravity = scene.gravity;  // z is 0 in 2D (the parser fills it so)
   }
+  setup.wall_margin = scene.wall_margin_cells * setup.cell_size;
+  // The artificial obstacle density falls to zero one kernel radius outside the surface.
+  setup.obstacle_band = scene.kernel_radius_cells * setup.cell_size;
   return setup;
 }
 

@@ -19,20 +19,30 @@ struct DeviceLimits {
   int max_framebuffer_layers = 2048;
 };
 
+// The solver's parameters, derived from a scene once. The solver reads its scalars from here, never
+// from the Scene (which keeps what the user wrote: shallow water, for one, replaces the scene's
+// stiffness, gamma and gravity); only the scene's lists (obstacles, emitters, hills) are read there.
 struct SimulationSetup {
-  Scene scene;
   int dimension = 2;
+  bool shallow_water = false;   // section 6's height-field mode
   glm::ivec3 grid_cells{1};     // cells per axis (z = 1 in 2D)
   float cell_size = 0.0f;       // m, h: cells are square/cubic
   glm::vec3 domain{0.0f};       // m, grid_cells * cell_size (the scene's box, snapped to whole cells)
+  float time_step = 0.0f;       // s
+  float particle_spacing = 0.0f;  // m
   float particle_mass = 0.0f;   // kg, density * spacing^d
   float rest_density = 0.0f;    // kg/m^3, rho0
   // rho = density_scale * sum_p w(d, r): the chapter's rho = m sum w, divided by the kernel's
   // integral (in m^d) so that a uniform lattice of the liquid's density reads that density.
   float density_scale = 0.0f;   // kg/m^3 per unit of summed weight
-  float stiffness = 0.0f;       // k used by the solver (shallow water: g * rest_depth)
-  float gamma = 5.0f;           // gamma used by the solver (shallow water: 1)
-  glm::vec3 gravity{0.0f};      // m/s^2 used by the solver (shallow water: zero in the plane)
+  float stiffness = 0.0f;       // k (shallow water: g * rest_depth)
+  float gamma = 5.0f;           // (shallow water: 1)
+  glm::vec3 gravity{0.0f};      // m/s^2 (shallow water: zero in the plane)
+  float kernel_radius_cells = 3.0f;  // r, the splat radius in cells
+  float pic_ratio = 0.05f;      // section 5.1's blend: 1 = PIC, 0 = FLIP
+  float wall_margin = 0.0f;     // m, particles are kept this far from every wall
+  float obstacle_band = 0.0f;   // m, the obstacle density falls to zero this far outside (one kernel radius)
+  float rest_depth = 0.0f;      // m, shallow water's depth at rest
   int initial_particles = 0;    // from fluid blocks
   int capacity = 0;             // initial + all emitters' capacities
   glm::ivec2 particle_texture{1};  // W x H texels, W * H >= capacity

@@ -7,15 +7,14 @@
 
 namespace liquid {
 
-std::vector<int32_t> scene_specialization(const SimulationSetup& setup) {
-  const Scene& scene = setup.scene;
+std::vector<int32_t> scene_specialization(const Scene& scene, const SimulationSetup& setup) {
   require_at_most(scene.obstacles.size(), gpu::k_max_obstacles, "obstacles");
-  require_at_most(scene.ground.size(), gpu::k_max_ground, "ground hills");
+  require_at_most(scene.ground.size(), gpu::k_max_ground_hills, "ground hills");
   std::vector<int32_t> constants(specialization_id::count, 0);
   constants[specialization_id::obstacle_count] = int32_t(scene.obstacles.size());
   for (size_t i = 0; i < scene.obstacles.size(); ++i)
     constants[specialization_id::first_obstacle_kind + i] = obstacle_kind_code(scene.obstacles[i].shape);
-  constants[specialization_id::shallow_water] = scene.mode == SimulationMode::ShallowWater ? 1 : 0;
+  constants[specialization_id::shallow_water] = setup.shallow_water ? 1 : 0;
   const bool integer_gamma = setup.gamma >= 1.0f && setup.gamma <= 8.0f && setup.gamma == std::floor(setup.gamma);
   constants[specialization_id::integer_gamma] = integer_gamma ? int32_t(setup.gamma) : 0;
   constants[specialization_id::has_emitters] = scene.emitters.empty() ? 0 : 1;

@@ -18,13 +18,13 @@ namespace liquid {
 namespace specialization_id {
 constexpr size_t obstacle_count = 0;         // OBSTACLE_COUNT
 constexpr size_t first_obstacle_kind = 1;    // OBSTACLE_KIND_0 .. OBSTACLE_KIND_7
-constexpr size_t shallow_water = first_obstacle_kind + gpu::k_max_obstacles;  // SHALLOW_WATER
+constexpr size_t shallow_water = first_obstacle_kind + size_t(gpu::k_max_obstacles);  // SHALLOW_WATER
 constexpr size_t integer_gamma = shallow_water + 1;                           // INTEGER_GAMMA
 constexpr size_t has_emitters = integer_gamma + 1;                            // HAS_EMITTERS
 constexpr size_t ground_hills = has_emitters + 1;                             // GROUND_HILLS
 constexpr size_t count = ground_hills + 1;
 }  // namespace specialization_id
 
-std::vector<int32_t> scene_specialization(const SimulationSetup& setup);
+std::vector<int32_t> scene_specialization(const Scene& scene, const SimulationSetup& setup);
 
 }  // namespace liquid

@@ -1,7 +1,6 @@
 #include "liquid/state.h"
 
 #include "engine/graph/transfer.h"
-#include "liquid/solver_pipelines.h"
 
 #include <vector>
 

@@ -6,6 +6,8 @@
 #include "engine/vk/image.h"
 #include "liquid/setup.h"
 
+#include <vulkan/vulkan.h>
+
 #include <array>
 
 namespace engine::vk {
@@ -13,6 +15,10 @@ class Context;
 }
 
 namespace liquid {
+
+constexpr VkFormat k_particle_format = VK_FORMAT_R32G32B32A32_SFLOAT;  // positions and velocities
+constexpr VkFormat k_grid_velocity_format = VK_FORMAT_R32G32B32A32_SFLOAT;
+constexpr VkFormat k_density_format = VK_FORMAT_R16_SFLOAT;  // rho / rho0, for rendering
 
 struct LiquidState {
   LiquidState(engine::vk::Context& context, const SimulationSetup& setup, VkFormat splat_format);

@@ -16,17 +16,12 @@ void require_at_most(size_t count, int limit, const char* what) {
 
 int obstacle_kind_code(ObstacleShape shape) {
   switch (shape) {
-    case ObstacleShape::Sphere: return int(gpu::k_obstacle_sphere);
-    case ObstacleShape::Box: return int(gpu::k_obstacle_box);
-    case ObstacleShape::Metaballs: return int(gpu::k_obstacle_metaballs);
+    case ObstacleShape::Sphere: return gpu::k_obstacle_sphere;
+    case ObstacleShape::Box: return gpu::k_obstacle_box;
+    case ObstacleShape::Metaballs: return gpu::k_obstacle_metaballs;
   }
-  return int(gpu::k_obstacle_sphere);
+  return gpu::k_obstacle_sphere;
 }
-
-float wall_margin(const SimulationSetup& setup) { return setup.scene.wall_margin_cells * setup.cell_size; }
-
-// The artificial obstacle density falls to zero one kernel radius outside the surface.
-float obstacle_band(const SimulationSetup& setup) { return setup.scene.kernel_radius_cells * setup.cell_size; }
 
 double kernel_mass_beyond_wall(int dimension, double radius_cells, double distance_cells) {
   if (distance_cells >= radius_cells) return 0.0;
@@ -45,40 +40,51 @@ double kernel_mass_beyond_wall(int dimension, double radius_cells, double distan
   return beyond / total;
 }
 
-gpu::SolverUniforms make_uniforms(const SimulationSetup& setup, const StepInputs& step) {
-  const Scene& scene = setup.scene;
+gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& setup, const StepInputs& step) {
   require_at_most(scene.obstacles.size(), gpu::k_max_obstacles, "obstacles");
-  require_at_most(scene.ground.size(), gpu::k_max_ground, "ground hills");
+  require_at_most(scene.ground.size(), gpu::k_max_ground_hills, "ground hills");
   require_at_most(step.brushes.size(), gpu::k_max_brushes, "force brushes");
   require_at_most(step.emissions.size(), gpu::k_max_emitters, "emitters active in one step");
 
   gpu::SolverUniforms u{};
-  u.domain_h = glm::vec4(setup.domain, setup.cell_size);
-  u.grid_dim = glm::ivec4(setup.grid_cells, setup.dimension);
-  u.gravity_dt = glm::vec4(setup.gravity, step.dt);
-  u.pressure = glm::vec4(setup.stiffness, setup.gamma, setup.rest_density, setup.density_scale);
-  u.kernel = glm::vec4(scene.kernel_radius_cells, scene.pic_ratio, wall_margin(setup), obstacle_band(setup));
-  u.counts = glm::ivec4(setup.particle_texture.x, step.active_before, step.active_after, int(scene.obstacles.size()));
-  u.counts2 = glm::ivec4(int(scene.ground.size()), int(step.brushes.size()), int(step.emissions.size()),
-                         scene.mode == SimulationMode::ShallowWater ? 1 : 0);
-  u.shallow = glm::vec4(scene.rest_depth, 0.0f, 0.0f, 0.0f);
-  for (int k = 0; k < 8; ++k)
+  u.domain = setup.domain;
+  u.cell_size = setup.cell_size;
+  u.grid_cells = setup.grid_cells;
+  u.particle_texture_width = setup.particle_texture.x;
+  u.gravity = setup.gravity;
+  u.dt = step.dt;
+  u.stiffness = setup.stiffness;
+  u.gamma = setup.gamma;
+  u.rest_density = setup.rest_density;
+  u.density_scale = setup.density_scale;
+  u.kernel_radius = setup.kernel_radius_cells;
+  u.pic_ratio = setup.pic_ratio;
+  u.wall_margin = setup.wall_margin;
+  u.obstacle_band = setup.obstacle_band;
+  u.active_before = step.active_before;
+  u.active_after = step.active_after;
+  u.brush_count = int(step.brushes.size());
+  u.emission_count = int(step.emissions.size());
+  u.rest_depth = setup.rest_depth;
+  for (int k = 0; k < gpu::k_wall_table_size; ++k)
     u.wall_kernel_beyond[k / 4][k % 4] =
-        float(kernel_mass_beyond_wall(setup.dimension, scene.kernel_radius_cells, double(k) + 0.5));
+        float(kernel_mass_beyond_wall(setup.dimension, setup.kernel_radius_cells, double(k) + 0.5));
 
   int ball = 0;
   for (size_t i = 0; i < scene.obstacles.size(); ++i) {
     const Obstacle& o = scene.obstacles[i];
     const ObstaclePose pose = i < step.obstacle_poses.size() ? step.obstacle_poses[i] : ObstaclePose{o.center, {}};
     gpu::Obstacle& g = u.obstacles[i];
-    g.center_kind = glm::vec4(pose.center, float(obstacle_kind_code(o.shape)));
-    g.velocity = glm::vec4(pose.velocity, 0.0f);
+    g.center = pose.center;
+    g.velocity = pose.velocity;
     switch (o.shape) {
-      case ObstacleShape::Sphere: g.size = glm::vec4(o.radius, 0, 0, 0); break;
-      case ObstacleShape::Box: g.size = glm::vec4(o.half_extent, 0.0f); break;
+      case ObstacleShape::Sphere: g.sphere_radius = o.radius; break;
+      case ObstacleShape::Box: g.box_half_extent = o.half_extent; break;
       case ObstacleShape::Metaballs:
         require_at_most(ball + o.balls.size(), gpu::k_max_balls, "metaballs in all obstacles");
-        g.size = glm::vec4(o.threshold, float(ball), float(o.balls.size()), 0.0f);
+        g.metaball_threshold = o.threshold;
+        g.first_ball = ball;
+        g.ball_count = int(o.balls.size());
         for (const Metaball& m : o.balls) u.balls[ball++] = glm::vec4(m.center, m.radius);
         break;
     }
@@ -89,13 +95,19 @@ gpu::SolverUniforms make_uniforms(const SimulationSetup& setup, const StepInputs
   }
   for (size_t i = 0; i < step.brushes.size(); ++i) {
     const ForceBrush& b = step.brushes[i];
-    u.brushes[i] = {glm::vec4(b.position, b.radius), glm::vec4(b.acceleration, 0.0f)};
+    u.brushes[i].position = b.position;
+    u.brushes[i].radius = b.radius;
+    u.brushes[i].acceleration = b.acceleration;
   }
   for (size_t i = 0; i < step.emissions.size(); ++i) {
     const EmissionRange& e = step.emissions[i];
     const Emitter& emitter = scene.emitters.at(size_t(e.emitter));
-    u.emitters[i] = {glm::vec4(emitter.position, emitter.radius), glm::vec4(emitter.velocity, 0.0f),
-                     glm::ivec4(e.begin, e.end, 0, 0)};
+    gpu::EmitterRange& g = u.emitters[i];
+    g.position = emitter.position;
+    g.radius = emitter.radius;
+    g.velocity = emitter.velocity;
+    g.first = e.begin;
+    g.end = e.end;
   }
   return u;
 }

@@ -1,22 +1,22 @@
-// Fills the solver's per-step uniform block from the setup and the step's inputs (time, counts,
-// obstacle poses, brushes, emitter ranges). Pure CPU code.
+// Fills the solver's per-step uniform block (shaders/liquid/shared.h) from the setup and the
+// step's inputs (time, counts, obstacle poses, brushes, emitter ranges). Pure CPU code.
 #pragma once
 
 #include "liquid/gpu_types.h"
-#include "liquid/obstacles.h"
+#include "liquid/scene.h"
 #include "liquid/setup.h"
+#include "liquid/types.h"
+
+#include <vulkan/vulkan.h>
 
 #include <vector>
 
 namespace liquid {
 
-// An external force brush (the paper's f_ext): an acceleration (m/s^2) at `position` falling
-// smoothly to zero at `radius`. A host maps mouse drags or gameplay forces to these.
-struct ForceBrush {
-  glm::vec3 position{0.0f};      // m
-  float radius = 0.1f;           // m
-  glm::vec3 acceleration{0.0f};  // m/s^2
-};
+// Every stage that may read the solver's block (it sits in common.glsl, which every liquid shader
+// includes).
+constexpr VkShaderStageFlags k_solver_uniform_stages =
+    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 
 struct EmissionRange {
   int emitter = 0;  // index into the scene's emitters
@@ -34,8 +34,8 @@ struct StepInputs {
 };
 
 // Throws std::invalid_argument when the scene has more obstacles, metaballs, hills, brushes or
-// emitters than the uniform block holds (limits in gpu_types.h).
-gpu::SolverUniforms make_uniforms(const SimulationSetup& setup, const StepInputs& step);
+// emitters than the uniform block holds (limits in shaders/liquid/shared.h).
+gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& setup, const StepInputs& step);
 
 // Fraction of the kernel w = (1 - d^2/r^2)^3's mass that lies more than `distance_cells` beyond a
 // plane: its profile across a plane is (1 - z^2/r^2)^(3 + (d - 1)/2). The grid pass divides the
@@ -45,11 +45,7 @@ double kernel_mass_beyond_wall(int dimension, double radius_cells, double distan
 // Throws std::invalid_argument ("liquid: N what (at most limit)") when count exceeds limit.
 void require_at_most(size_t count, int limit, const char* what);
 
-// The code shaders compare an obstacle's kind with (OBSTACLE_SPHERE, ... in common.glsl).
+// The code shaders compare an obstacle's kind with (LIQUID_OBSTACLE_* in shared.h).
 int obstacle_kind_code(ObstacleShape shape);
-
-// Wall clamp distance (m) and obstacle density band (m) the solver uses for this setup.
-float wall_margin(const SimulationSetup& setup);
-float obstacle_band(const SimulationSetup& setup);
 
 }  // namespace liquid

@@ -1,15 +1,15 @@
 // engine_demo: the engine alone, no liquid. Renders an aliased test pattern, runs the FXAA pass on
 // the same render graph and writes both as PNG. A smoke test of a host's Vulkan setup.
-#include "embedded_shaders.h"
+#include "demo_shaders.h"
 #include "engine/graph/render_graph.h"
 #include "engine/graph/transfer.h"
 #include "engine/passes/fullscreen.h"
 #include "engine/passes/fxaa.h"
-#include "engine/vk/commands.h"
 #include "engine/vk/context.h"
 #include "engine/vk/png.h"
 
 #include "tools/cli.h"
+#include "tools/frame_loop.h"
 
 #include <CLI/CLI.hpp>
 
@@ -25,33 +25,29 @@ int run(const std::filesystem::path& out_dir, uint32_t size, bool validation) {
   vk::Context context(vk::ContextOptions{.validation = validation});
   vk::GraphicsPipeline pattern(context, vk::GraphicsPipelineDesc{.name = "pattern",
                                                                  .vertex = passes::fullscreen_vertex_shader(),
-                                                                 .fragment = shaders::test_pattern_frag,
+                                                                 .fragment = demo_shaders::pattern_frag,
                                                                  .color_formats = {VK_FORMAT_R8G8B8A8_UNORM}});
   passes::FxaaPass fxaa(context, VK_FORMAT_R8G8B8A8_UNORM);
-  graph::RenderGraph graph(&context);
-  graph::ImageHandle scene =
-      graph.create_image("scene", {vk::ImageKind::Image2D, size, size, 1, VK_FORMAT_R8G8B8A8_UNORM, 0});
-  graph.add_pass("pattern", [&](graph::PassBuilder& b) { scene = b.write(scene, graph::Access::ColorAttachmentWrite); },
-                 [&](graph::PassContext& ctx) {
-                   pattern.bind(ctx.cmd, ctx.width, ctx.height);
-                   passes::draw_fullscreen(ctx.cmd);
-                 });
-  const graph::ImageHandle smoothed = fxaa.add_to(graph, scene);
-  const auto raw = graph::add_readback(graph, scene, "readback.raw");
-  const auto final_image = graph::add_readback(graph, smoothed, "readback.fxaa");
-  graph.compile();
-  vk::CommandBuffer cmd(context);
-  graph.execute(cmd.begin());
-  cmd.submit_and_wait();
+  tools::FrameLoop loop(context);
+  graph::Readback raw, final_image;
+  const tools::FrameTime frame = loop.run([&](graph::RenderGraph& graph) {
+    graph::ImageHandle scene =
+        graph.create_image("scene", {vk::ImageKind::Image2D, size, size, 1, VK_FORMAT_R8G8B8A8_UNORM, 0});
+    graph.add_pass("pattern", [&](graph::PassBuilder& b) { scene = b.write(scene, graph::Access::ColorAttachmentWrite); },
+                   [&](graph::PassContext& ctx) {
+                     pattern.bind(ctx.cmd, ctx.width, ctx.height);
+                     passes::draw_fullscreen(ctx.cmd);
+                   });
+    const graph::ImageHandle smoothed = fxaa.add_to(graph, scene);
+    raw = graph::add_readback(graph, scene, "readback.raw");
+    final_image = graph::add_readback(graph, smoothed, "readback.fxaa");
+  });
   vk::write_png(out_dir / "pattern.png", raw.rgba8());
   vk::write_png(out_dir / "pattern_fxaa.png", final_image.rgba8());
   std::printf("engine_demo: %s, wrote %s/pattern.png and pattern_fxaa.png\n", context.device_name().c_str(),
               out_dir.string().c_str());
-  for (const auto& t : graph.read_timings()) std::printf("  %-16s %8.3f ms\n", t.name.c_str(), t.milliseconds);
-  if (context.validation_message_count() > 0) {
-    std::fprintf(stderr, "engine_demo: %u validation message(s)\n", context.validation_message_count());
-    return 1;
-  }
+  for (const auto& t : frame.passes) std::printf("  %-16s %8.3f ms\n", t.name.c_str(), t.milliseconds);
+  tools::fail_on_validation_messages(context.validation_message_count());
   return 0;
 }
 
@@ -65,11 +61,5 @@ int main(int argc, char** argv) {
   app.add_option("-o,--out", out_dir, "output folder");
   app.add_option("--size", size, "image size in pixels")->check(CLI::Range(16u, 4096u));
   app.add_flag("--validation", validation, "enable the Vulkan validation layer");
-  if (const auto exit_code = tools::parse_arguments(app, argc, argv, "engine_demo")) return *exit_code;
-  try {
-    return run(out_dir, size, validation);
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "engine_demo: error: %s\n", error.what());
-    return 1;
-  }
+  return tools::run_main(app, argc, argv, "engine_demo", [&] { return run(out_dir, size, validation); });
 }

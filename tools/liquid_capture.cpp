@@ -5,7 +5,6 @@
 #include "engine/graph/render_graph.h"
 #include "engine/graph/transfer.h"
 #include "engine/io/atomic_file.h"
-#include "engine/vk/commands.h"
 #include "engine/vk/context.h"
 #include "engine/vk/png.h"
 #include "liquid/export/ply.h"
@@ -13,11 +12,11 @@
 #include "liquid/render/renderer.h"
 #include "liquid/scene.h"
 #include "tools/cli.h"
+#include "tools/frame_loop.h"
 #include "tools/progress.h"
 
 #include <CLI/CLI.hpp>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -107,8 +106,8 @@ std::string numbered(const char* stem, int frame, const char* extension) {
   return name;
 }
 
-liquid::CameraView camera_from(const CaptureOptions& options, const liquid::SimulationSetup& setup) {
-  liquid::CameraView camera = liquid::default_camera(setup);
+liquid::CameraView camera_from(const CaptureOptions& options, const liquid::LiquidNode& node) {
+  liquid::CameraView camera = liquid::default_camera(node.scene(), node.setup());
   if (!options.camera_position.empty())
     camera.position = {options.camera_position[0], options.camera_position[1], options.camera_position[2]};
   if (!options.camera_target.empty())
@@ -142,19 +141,18 @@ int run(const CaptureOptions& options) {
                                         .fxaa = options.fxaa,
                                         .draw_particles = options.draw_particles};
   liquid::LiquidRenderer renderer(context, node, settings);
-  const liquid::CameraView camera = camera_from(options, node.setup());
+  const liquid::CameraView camera = camera_from(options, node);
   // Everything that can reject the input has run: only now is the output folder touched.
   engine::io::ensure_writable_folder(options.out_dir);
 
   const liquid::SimulationSetup& s = node.setup();
   std::printf("liquid_capture: %s, %dD, %d particles (capacity %d), grid %dx%dx%d, dt %.3g s, %d steps per frame "
               "(%.1f simulated frames/s), %ux%u, device %s\n",
-              s.scene.name.c_str(), s.dimension, s.initial_particles, s.capacity, s.grid_cells.x, s.grid_cells.y,
-              s.grid_cells.z, s.scene.time_step, steps, 1.0 / (steps * s.scene.time_step), options.width,
+              scene.name.c_str(), s.dimension, s.initial_particles, s.capacity, s.grid_cells.x, s.grid_cells.y,
+              s.grid_cells.z, scene.time_step, steps, 1.0 / (steps * scene.time_step), options.width,
               options.height, context.device_name().c_str());
 
-  engine::graph::RenderGraph graph(&context);
-  engine::vk::CommandBuffer cmd(context);
+  tools::FrameLoop loop(context);
   StatsFile stats(options.out_dir / "stats.csv");
   FrameStats first;
   tools::Progress progress(options.frames);
@@ -162,16 +160,14 @@ int run(const CaptureOptions& options) {
   // density the raymarch reads comes from the last step's grid pass).
   for (int frame = 0; frame < options.frames; ++frame) {
     try {
-      graph.reset();
-      const liquid::LiquidImages images = node.add_to(graph, steps);
-      const liquid::RenderOutputs rendered = renderer.add_to(graph, images, camera);
-      const engine::graph::Readback readback = engine::graph::add_readback(graph, rendered.final, "capture.readback");
-      graph.compile();
-      const auto start = std::chrono::steady_clock::now();
-      graph.execute(cmd.begin());
-      cmd.submit_and_wait();
-      FrameStats row{frame, {}, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(), {}};
-      for (const auto& t : graph.read_timings()) row.pass_ms[t.name] += t.milliseconds;
+      engine::graph::Readback readback;
+      const tools::FrameTime time = loop.run([&](engine::graph::RenderGraph& graph) {
+        const liquid::LiquidImages images = node.add_to(graph, steps);
+        const liquid::RenderOutputs rendered = renderer.add_to(graph, images, camera);
+        readback = engine::graph::add_readback(graph, rendered.final, "capture.readback");
+      });
+      FrameStats row{frame, {}, time.wall_ms, {}};
+      for (const auto& t : time.passes) row.pass_ms[t.name] += t.milliseconds;
 
       const liquid::ParticleSnapshot particles = node.read_particles();
       row.diagnostics = node.diagnose(particles);  // throws SimulationError on an unstable state
@@ -190,10 +186,7 @@ int run(const CaptureOptions& options) {
   }
   stats.finish();
   std::printf("liquid_capture: wrote %d frames to %s\n", options.frames, options.out_dir.string().c_str());
-  if (options.validation && context.validation_message_count() > 0) {
-    std::fprintf(stderr, "liquid_capture: error: %u validation message(s)\n", context.validation_message_count());
-    return 1;
-  }
+  tools::fail_on_validation_messages(context.validation_message_count());
   return 0;
 }
 
@@ -224,11 +217,5 @@ int main(int argc, char** argv) {
   app.add_flag("--draw-particles", options.draw_particles, "2D views: draw the particles as points over the liquid");
   app.add_flag("--export-particles", options.export_particles, "write particles_NNNNN.ply (binary PLY) per frame");
   app.add_flag("--validation", options.validation, "enable the Vulkan validation layer; any message fails the run");
-  if (const auto exit_code = tools::parse_arguments(app, argc, argv, "liquid_capture")) return *exit_code;
-  try {
-    return run(options);
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "liquid_capture: error: %s\n", error.what());
-    return 1;
-  }
+  return tools::run_main(app, argc, argv, "liquid_capture", [&] { return run(options); });
 }

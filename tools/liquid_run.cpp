@@ -1,18 +1,16 @@
 // liquid_run: runs a scene headless for N simulation steps (no rendering) and prints the solver's
 // diagnostics as it goes and the median GPU time of each pass at the end.
-#include "engine/graph/render_graph.h"
 #include "engine/io/atomic_file.h"
-#include "engine/vk/commands.h"
 #include "engine/vk/context.h"
 #include "liquid/node.h"
 #include "liquid/scene.h"
 
 #include "tools/cli.h"
+#include "tools/frame_loop.h"
 
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <map>
 #include <vector>
@@ -38,30 +36,23 @@ int run(const std::string& scene_path, int steps, int report_every, bool validat
   const auto& s = node.setup();
   std::printf("scene %s: %dD, %d particles (capacity %d), grid %dx%dx%d, h = %.4g m, dt = %.3g s, k = %.4g, "
               "gamma = %.3g, rho0 = %.5g kg/m^3\n",
-              s.scene.name.c_str(), s.dimension, s.initial_particles, s.capacity, s.grid_cells.x, s.grid_cells.y,
-              s.grid_cells.z, s.cell_size, s.scene.time_step, s.stiffness, s.gamma, s.rest_density);
+              scene.name.c_str(), s.dimension, s.initial_particles, s.capacity, s.grid_cells.x, s.grid_cells.y,
+              s.grid_cells.z, s.cell_size, scene.time_step, s.stiffness, s.gamma, s.rest_density);
   std::printf("device %s (%s)\n", context.device_name().c_str(), context.driver_description().c_str());
   std::printf("%7s %9s %9s %7s %8s %6s %9s %12s %9s\n", "step", "time_s", "active", "outside", "inside_o", "nan",
               "max_rho", "kinetic_J", "max_v");
   print_diagnostics(node.diagnose());
 
-  engine::graph::RenderGraph graph(&context);
-  engine::vk::CommandBuffer cmd(context);
+  tools::FrameLoop loop(context);
   std::map<std::string, std::vector<double>> pass_ms;
   std::vector<double> step_ms;
   const int batch = std::max(1, std::min(report_every, node.substeps()));
   int done = 0;
   while (done < steps) {
     const int n = std::min(batch, steps - done);
-    graph.reset();
-    node.add_to(graph, n);
-    graph.compile();
-    const auto start = std::chrono::steady_clock::now();
-    graph.execute(cmd.begin());
-    cmd.submit_and_wait();
-    const double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    step_ms.push_back(wall / n);
-    for (const auto& t : graph.read_timings()) pass_ms[t.name].push_back(t.milliseconds);
+    const tools::FrameTime frame = loop.run([&](engine::graph::RenderGraph& graph) { node.add_to(graph, n); });
+    step_ms.push_back(frame.wall_ms / n);
+    for (const auto& t : frame.passes) pass_ms[t.name].push_back(t.milliseconds);
     const int reports_before = done / report_every;
     done += n;
     if (done / report_every > reports_before || done == steps) print_diagnostics(node.diagnose());
@@ -80,10 +71,7 @@ int run(const std::string& scene_path, int steps, int report_every, bool validat
   std::printf("median GPU time per pass (ms):");
   for (const auto& [name, values] : pass_ms) std::printf("  %s %.3f", name.c_str(), median(values));
   std::printf("\nmedian wall time per step: %.3f ms\n", median(step_ms));
-  if (validation && context.validation_message_count() > 0) {
-    std::fprintf(stderr, "liquid_run: %u validation message(s)\n", context.validation_message_count());
-    return 1;
-  }
+  tools::fail_on_validation_messages(context.validation_message_count());
   return 0;
 }
 
@@ -100,11 +88,6 @@ int main(int argc, char** argv) {
   app.add_option("-n,--steps", steps, "simulation steps")->check(CLI::Range(1, 10000000));
   app.add_option("-r,--report-every", report_every, "steps between diagnostics lines")->check(CLI::Range(1, 1000000));
   app.add_flag("--validation", validation, "enable the Vulkan validation layer");
-  if (const auto exit_code = tools::parse_arguments(app, argc, argv, "liquid_run")) return *exit_code;
-  try {
-    return run(scene, steps, report_every, validation, dump_path);
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "liquid_run: error: %s\n", error.what());
-    return 1;
-  }
+  return tools::run_main(app, argc, argv, "liquid_run",
+                         [&] { return run(scene, steps, report_every, validation, dump_path); });
 }

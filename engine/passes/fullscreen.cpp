@@ -1,12 +1,12 @@
 #include "engine/passes/fullscreen.h"
 
-#include "embedded_shaders.h"
+#include "engine_shaders.h"
 
 namespace engine::passes {
 
-std::span<const uint32_t> fullscreen_vertex_shader() { return shaders::fullscreen_vert; }
-std::span<const uint32_t> fullscreen_layered_vertex_shader() { return shaders::fullscreen_layered_vert; }
-std::span<const uint32_t> fullscreen_layered_geometry_shader() { return shaders::fullscreen_layered_geom; }
+std::span<const uint32_t> fullscreen_vertex_shader() { return engine_shaders::fullscreen_vert; }
+std::span<const uint32_t> fullscreen_layered_vertex_shader() { return engine_shaders::fullscreen_layered_vert; }
+std::span<const uint32_t> fullscreen_layered_geometry_shader() { return engine_shaders::fullscreen_layered_geom; }
 
 void draw_fullscreen(VkCommandBuffer cmd, uint32_t layers) { vkCmdDraw(cmd, 3, layers, 0, 0); }
 

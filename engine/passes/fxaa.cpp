@@ -1,6 +1,6 @@
 #include "engine/passes/fxaa.h"
 
-#include "embedded_shaders.h"
+#include "engine_shaders.h"
 #include "engine/passes/fullscreen.h"
 
 #include <stdexcept>
@@ -21,7 +21,7 @@ FxaaPass::FxaaPass(vk::Context& context, VkFormat format)
     : pipeline_(context, vk::GraphicsPipelineDesc{
                              .name = "fxaa",
                              .vertex = fullscreen_vertex_shader(),
-                             .fragment = shaders::fxaa_frag,
+                             .fragment = engine_shaders::fxaa_frag,
                              .color_formats = {format},
                              .bindings = {{0, vk::DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
                              .push_constant_size = sizeof(FxaaPush)}),

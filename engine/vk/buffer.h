@@ -2,6 +2,8 @@
 // and upload staging); device-local ones are for data the GPU alone touches.
 #pragma once
 
+#include "engine/vk/handle.h"
+
 #include <vulkan/vulkan.h>
 
 #include <cstddef>
@@ -18,13 +20,8 @@ class Buffer {
   Buffer() = default;
   Buffer(Context& context, VkDeviceSize size, VkBufferUsageFlags usage, MemoryUsage memory,
          const std::string& name);
-  ~Buffer();
-  Buffer(Buffer&& other) noexcept;
-  Buffer& operator=(Buffer&& other) noexcept;
-  Buffer(const Buffer&) = delete;
-  Buffer& operator=(const Buffer&) = delete;
 
-  VkBuffer handle() const { return buffer_; }
+  VkBuffer handle() const { return objects_->buffer.get(); }
   VkDeviceSize size() const { return size_; }
   // Mapped pointer of a host-visible buffer (nullptr otherwise).
   void* mapped() const { return mapped_; }
@@ -34,13 +31,14 @@ class Buffer {
   void invalidate() const;
 
  private:
-  void release();
+  struct Objects {
+    UniqueHandle<VkDeviceMemory> memory;
+    UniqueHandle<VkBuffer> buffer;  // bound to memory
+  };
 
-  Context* context_ = nullptr;
-  VkBuffer buffer_ = VK_NULL_HANDLE;
-  VkDeviceMemory memory_ = VK_NULL_HANDLE;
-  VkDeviceSize size_ = 0;
-  void* mapped_ = nullptr;
+  HandleGroup<Objects> objects_;
+  ResetOnMove<VkDeviceSize> size_;
+  ResetOnMove<void*> mapped_;  // unmapped by vkFreeMemory
   bool coherent_ = true;
 };
 

@@ -4,7 +4,6 @@
 #include "engine/vk/vk_check.h"
 
 #include <stdexcept>
-#include <utility>
 
 namespace engine::vk {
 
@@ -38,7 +37,7 @@ uint32_t format_texel_size(VkFormat format) {
 }
 
 Image::Image(Context& context, const ImageDesc& desc, const std::string& name)
-    : context_(&context), desc_(desc), name_(name) {
+    : desc_(desc), name_(name) {
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   info.imageType = desc.kind == ImageKind::Image3D ? VK_IMAGE_TYPE_3D : VK_IMAGE_TYPE_2D;
   info.format = desc.format;
@@ -55,70 +54,42 @@ Image::Image(Context& context, const ImageDesc& desc, const std::string& name)
     info.flags |= VK_IMAGE_CREATE_2D_ARRAY_COMPATIBLE_BIT;
 
   const VkDevice device = context.device();
-  try {
-    VK_CHECK(vkCreateImage(device, &info, nullptr, &image_));
-    VkMemoryRequirements requirements{};
-    vkGetImageMemoryRequirements(device, image_, &requirements);
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = requirements.size;
-    alloc.memoryTypeIndex =
-        context.find_memory_type(requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    VK_CHECK(vkAllocateMemory(device, &alloc, nullptr, &memory_));
-    VK_CHECK(vkBindImageMemory(device, image_, memory_, 0));
+  VkImage image = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateImage(device, &info, nullptr, &image));
+  objects_->image = {device, image, vkDestroyImage};
+  VkMemoryRequirements requirements{};
+  vkGetImageMemoryRequirements(device, image, &requirements);
+  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  alloc.allocationSize = requirements.size;
+  alloc.memoryTypeIndex =
+      context.find_memory_type(requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  VK_CHECK(vkAllocateMemory(device, &alloc, nullptr, &memory));
+  objects_->memory = {device, memory, vkFreeMemory};
+  VK_CHECK(vkBindImageMemory(device, image, memory, 0));
 
-    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    view.image = image_;
-    view.format = desc.format;
-    view.subresourceRange = full_range();
-    view.viewType = desc.kind == ImageKind::Image3D        ? VK_IMAGE_VIEW_TYPE_3D
-                    : desc.kind == ImageKind::Image2DArray ? VK_IMAGE_VIEW_TYPE_2D_ARRAY
-                                                           : VK_IMAGE_VIEW_TYPE_2D;
-    if (desc.usage & (VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT))
-      VK_CHECK(vkCreateImageView(device, &view, nullptr, &sampled_view_));
-    if (desc.usage & (VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT)) {
-      if (desc.kind == ImageKind::Image3D) {
-        view.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
-        view.subresourceRange.layerCount = desc.depth_or_layers;
-      }
-      VK_CHECK(vkCreateImageView(device, &view, nullptr, &attachment_view_));
+  VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+  view.image = image;
+  view.format = desc.format;
+  view.subresourceRange = full_range();
+  view.viewType = desc.kind == ImageKind::Image3D        ? VK_IMAGE_VIEW_TYPE_3D
+                  : desc.kind == ImageKind::Image2DArray ? VK_IMAGE_VIEW_TYPE_2D_ARRAY
+                                                         : VK_IMAGE_VIEW_TYPE_2D;
+  auto create_view = [&] {
+    VkImageView handle = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateImageView(device, &view, nullptr, &handle));
+    return UniqueHandle<VkImageView>(device, handle, vkDestroyImageView);
+  };
+  if (desc.usage & (VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT))
+    objects_->sampled_view = create_view();
+  if (desc.usage & (VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT)) {
+    if (desc.kind == ImageKind::Image3D) {
+      view.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+      view.subresourceRange.layerCount = desc.depth_or_layers;
     }
-  } catch (...) {
-    release();
-    throw;
+    objects_->attachment_view = create_view();
   }
-  context.set_name(VK_OBJECT_TYPE_IMAGE, reinterpret_cast<uint64_t>(image_), name);
-}
-
-Image::~Image() { release(); }
-
-Image::Image(Image&& other) noexcept { *this = std::move(other); }
-
-Image& Image::operator=(Image&& other) noexcept {
-  if (this != &other) {
-    release();
-    context_ = std::exchange(other.context_, nullptr);
-    image_ = std::exchange(other.image_, VK_NULL_HANDLE);
-    memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
-    sampled_view_ = std::exchange(other.sampled_view_, VK_NULL_HANDLE);
-    attachment_view_ = std::exchange(other.attachment_view_, VK_NULL_HANDLE);
-    desc_ = other.desc_;
-    name_ = std::move(other.name_);
-    sync_ = other.sync_;
-  }
-  return *this;
-}
-
-void Image::release() {
-  if (!context_) return;
-  const VkDevice device = context_->device();
-  if (attachment_view_) vkDestroyImageView(device, attachment_view_, nullptr);
-  if (sampled_view_) vkDestroyImageView(device, sampled_view_, nullptr);
-  if (image_) vkDestroyImage(device, image_, nullptr);
-  if (memory_) vkFreeMemory(device, memory_, nullptr);
-  attachment_view_ = sampled_view_ = VK_NULL_HANDLE;
-  image_ = VK_NULL_HANDLE;
-  memory_ = VK_NULL_HANDLE;
-  context_ = nullptr;
+  context.set_name(VK_OBJECT_TYPE_IMAGE, reinterpret_cast<uint64_t>(image), name);
 }
 
 VkImageAspectFlags Image::aspect() const {

@@ -2,6 +2,8 @@
 // for it between graph executions (an imported, persistent image remembers its last access).
 #pragma once
 
+#include "engine/vk/handle.h"
+
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
@@ -48,17 +50,12 @@ class Image {
  public:
   Image() = default;
   Image(Context& context, const ImageDesc& desc, const std::string& name);
-  ~Image();
-  Image(Image&& other) noexcept;
-  Image& operator=(Image&& other) noexcept;
-  Image(const Image&) = delete;
-  Image& operator=(const Image&) = delete;
 
-  VkImage handle() const { return image_; }
+  VkImage handle() const { return objects_->image.get(); }
   // View for sampling: 2D, 2D_ARRAY or 3D matching the kind.
-  VkImageView sampled_view() const { return sampled_view_; }
+  VkImageView sampled_view() const { return objects_->sampled_view.get(); }
   // View for rendering: 2D for Image2D, 2D_ARRAY over every layer or slice otherwise.
-  VkImageView attachment_view() const { return attachment_view_; }
+  VkImageView attachment_view() const { return objects_->attachment_view.get(); }
   const ImageDesc& desc() const { return desc_; }
   const std::string& name() const { return name_; }
   VkImageAspectFlags aspect() const;
@@ -68,13 +65,14 @@ class Image {
   const ImageSyncState& sync_state() const { return sync_; }
 
  private:
-  void release();
+  struct Objects {
+    UniqueHandle<VkDeviceMemory> memory;
+    UniqueHandle<VkImage> image;  // bound to memory
+    UniqueHandle<VkImageView> sampled_view;
+    UniqueHandle<VkImageView> attachment_view;
+  };
 
-  Context* context_ = nullptr;
-  VkImage image_ = VK_NULL_HANDLE;
-  VkDeviceMemory memory_ = VK_NULL_HANDLE;
-  VkImageView sampled_view_ = VK_NULL_HANDLE;
-  VkImageView attachment_view_ = VK_NULL_HANDLE;
+  HandleGroup<Objects> objects_;
   ImageDesc desc_{};
   std::string name_;
   ImageSyncState sync_{};

@@ -3,6 +3,8 @@
 // pools and a pass can bind a different ping-pong image every step.
 #pragma once
 
+#include "engine/vk/handle.h"
+
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
@@ -50,15 +52,12 @@ class GraphicsPipeline {
  public:
   GraphicsPipeline() = default;
   GraphicsPipeline(Context& context, const GraphicsPipelineDesc& desc);
-  ~GraphicsPipeline();
-  GraphicsPipeline(GraphicsPipeline&& other) noexcept;
-  GraphicsPipeline& operator=(GraphicsPipeline&& other) noexcept;
-  GraphicsPipeline(const GraphicsPipeline&) = delete;
-  GraphicsPipeline& operator=(const GraphicsPipeline&) = delete;
 
-  VkPipeline handle() const { return pipeline_; }
-  VkPipelineLayout layout() const { return layout_; }
+  VkPipeline handle() const { return objects_->pipeline.get(); }
+  VkPipelineLayout layout() const { return objects_->layout.get(); }
   const std::string& name() const { return name_; }
+  // The descriptor bindings of its layout, as declared (engine::passes::PassBindings checks against them).
+  const std::vector<DescriptorBinding>& bindings() const { return bindings_; }
 
   // Binds the pipeline and sets a full viewport and scissor of the given size.
   void bind(VkCommandBuffer cmd, uint32_t width, uint32_t height) const;
@@ -73,14 +72,17 @@ class GraphicsPipeline {
   }
 
  private:
-  void release();
+  struct Objects {
+    UniqueHandle<VkDescriptorSetLayout> set_layout;
+    UniqueHandle<VkPipelineLayout> layout;  // uses set_layout
+    UniqueHandle<VkPipeline> pipeline;      // uses layout
+  };
 
-  Context* context_ = nullptr;
-  VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
-  VkPipelineLayout layout_ = VK_NULL_HANDLE;
-  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  ResetOnMove<Context*> context_;
+  HandleGroup<Objects> objects_;
   uint32_t push_constant_size_ = 0;
   std::string name_;
+  std::vector<DescriptorBinding> bindings_;
 };
 
 }  // namespace engine::vk

@@ -2,6 +2,8 @@
 // clamp to the edge, so a lookup past the grid reads the boundary cell.
 #pragma once
 
+#include "engine/vk/handle.h"
+
 #include <vulkan/vulkan.h>
 
 namespace engine::vk {
@@ -12,18 +14,11 @@ class Sampler {
  public:
   Sampler() = default;
   Sampler(Context& context, VkFilter filter);
-  ~Sampler();
-  Sampler(Sampler&& other) noexcept;
-  Sampler& operator=(Sampler&& other) noexcept;
-  Sampler(const Sampler&) = delete;
-  Sampler& operator=(const Sampler&) = delete;
 
-  VkSampler handle() const { return sampler_; }
+  VkSampler handle() const { return sampler_.get(); }
 
  private:
-  void release();
-  Context* context_ = nullptr;
-  VkSampler sampler_ = VK_NULL_HANDLE;
+  UniqueHandle<VkSampler> sampler_;
 };
 
 }  // namespace engine::vk

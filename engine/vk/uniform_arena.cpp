@@ -21,6 +21,13 @@ UniformArena::UniformArena(Context& context, VkDeviceSize bytes_per_frame, uint3
   frame_ = frames_ - 1;
 }
 
+VkDeviceSize UniformArena::frame_bytes(std::initializer_list<VkDeviceSize> block_sizes, int repeats) {
+  constexpr VkDeviceSize k_max_offset_alignment = 256;  // the spec's bound on minUniformBufferOffsetAlignment
+  VkDeviceSize bytes = 0;
+  for (VkDeviceSize size : block_sizes) bytes += align_up(size, k_max_offset_alignment);
+  return bytes * VkDeviceSize(std::max(repeats, 1));
+}
+
 void UniformArena::begin_frame() {
   frame_ = (frame_ + 1) % frames_;
   used_ = 0;

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <initializer_list>
 
 namespace engine::vk {
 
@@ -34,6 +35,10 @@ class UniformArena {
     return push(&value, sizeof(T));
   }
   VkDeviceSize bytes_per_frame() const { return region_size_; }
+
+  // What one frame needs for blocks of these sizes, each pushed `repeats` times, at the largest
+  // offset alignment Vulkan allows (256 bytes), so the size holds on every device.
+  static VkDeviceSize frame_bytes(std::initializer_list<VkDeviceSize> block_sizes, int repeats = 1);
 
  private:
   Buffer buffer_;

@@ -9,10 +9,10 @@
 
 namespace liquid {
 
-CameraView default_camera(const SimulationSetup& setup) {
-  if (setup.scene.mode == SimulationMode::ShallowWater) return default_height_field_camera(setup);
-  if (setup.scene.camera) {
-    const Camera& c = *setup.scene.camera;
+CameraView default_camera(const Scene& scene, const SimulationSetup& setup) {
+  if (setup.shallow_water) return default_height_field_camera(scene, setup);
+  if (scene.camera) {
+    const Camera& c = *scene.camera;
     return {c.position, c.target, {0.0f, 1.0f, 0.0f}, c.fov_y_degrees};
   }
   const glm::vec3 d = setup.domain;

@@ -17,7 +17,7 @@ struct CameraView {
 
 // The scene's camera, or one that frames the whole domain from the front, slightly above; for
 // shallow water, the height-field view's camera (default_height_field_camera).
-CameraView default_camera(const SimulationSetup& setup);
+CameraView default_camera(const Scene& scene, const SimulationSetup& setup);
 
 // Vulkan clip space (y down, depth 0..1): projection * view.
 glm::mat4 view_projection(const CameraView& camera, float aspect, float near_plane, float far_plane);

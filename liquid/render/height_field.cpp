@@ -1,6 +1,7 @@
 #include "liquid/render/height_field.h"
 
-#include "embedded_shaders.h"
+#include "engine/passes/bindings.h"
+#include "liquid_shaders.h"
 #include "liquid/specialization.h"
 #include "liquid/uniforms.h"
 
@@ -50,20 +51,20 @@ constexpr int32_t k_ground_layer = 0;
 constexpr int32_t k_water_layer = 1;
 
 const LiquidNode& require_shallow_water(const LiquidNode& node) {
-  if (node.dimension() != 2 || node.setup().scene.mode != SimulationMode::ShallowWater)
+  if (node.dimension() != 2 || !node.setup().shallow_water)
     throw std::invalid_argument("liquid: the height-field view needs a 2D shallow-water scene");
   return node;
 }
 
 }  // namespace
 
-CameraView default_height_field_camera(const SimulationSetup& setup) {
-  if (setup.scene.camera) {
-    const Camera& c = *setup.scene.camera;
+CameraView default_height_field_camera(const Scene& scene, const SimulationSetup& setup) {
+  if (scene.camera) {
+    const Camera& c = *scene.camera;
     return {c.position, c.target, {0.0f, 1.0f, 0.0f}, c.fov_y_degrees};
   }
   const glm::vec2 plane(setup.domain.x, setup.domain.y);
-  const glm::vec3 target(0.5f * plane.x, 0.5f * setup.scene.rest_depth, 0.5f * plane.y);
+  const glm::vec3 target(0.5f * plane.x, 0.5f * setup.rest_depth, 0.5f * plane.y);
   // Far enough that the plane, foreshortened by the elevation, fills most of a 4:3 frame.
   const float extent = std::max(plane.x, plane.y);
   const float distance = 1.55f * extent;
@@ -77,22 +78,22 @@ HeightFieldPass::HeightFieldPass(engine::vk::Context& context, const LiquidNode&
       pipeline_(context,
                 engine::vk::GraphicsPipelineDesc{
                     .name = "liquid.height_field",
-                    .vertex = shaders::height_field_vert,
-                    .fragment = shaders::height_field_frag,
+                    .vertex = liquid_shaders::height_field_vert,
+                    .fragment = liquid_shaders::height_field_frag,
                     .color_formats = {k_color_format},
                     // The ground writes alpha 1, so one blended pipeline draws both layers.
                     .blend = {engine::vk::BlendMode::Alpha},
                     .depth_format = k_depth_format,
                     .depth_test = true,
                     .depth_write = true,
-                    .bindings = {{0, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_VERTEX_BIT},
-                                 {1, DescriptorKind::UniformBuffer,
+                    .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_VERTEX_BIT},
+                                 {LIQUID_BINDING_VIEW_UNIFORMS, DescriptorKind::UniformBuffer,
                                   VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
-                                 {2, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
+                                 {LIQUID_BINDING_HEIGHT_FIELD_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
                     .push_constant_size = sizeof(HeightFieldPush),
-                    .specialization = scene_specialization(node.setup())}),
+                    .specialization = scene_specialization(node.scene(), node.setup())}),
       linear_(context, VK_FILTER_LINEAR),
-      uniforms_(context, 4096, 3) {
+      uniforms_(context, node, sizeof(HeightFieldUniforms)) {
   // Vertex g = (x, y) of the (cells + 2)^2 grid (cells plus the edge ring) has index y (n.x + 2) + x.
   const glm::ivec2 n(node.setup().grid_cells.x, node.setup().grid_cells.y);
   const uint32_t row = uint32_t(n.x + 2);
@@ -112,12 +113,9 @@ HeightFieldPass::HeightFieldPass(engine::vk::Context& context, const LiquidNode&
 ImageHandle HeightFieldPass::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
                                     const RenderSettings& settings, const CameraView& camera) {
   const SimulationSetup& setup = node_.setup();
-  uniforms_.begin_frame();
-  StepInputs inputs;
-  inputs.obstacle_poses = node_.obstacle_poses(node_.time());
-  const engine::vk::UniformSlice solver = uniforms_.push(make_uniforms(setup, inputs));
+  const engine::vk::UniformSlice solver = uniforms_.begin_frame();
 
-  const float rest_depth = setup.scene.rest_depth;
+  const float rest_depth = setup.rest_depth;
   const float extent = std::max(setup.domain.x, setup.domain.y);
   const float aspect = float(settings.width) / float(settings.height);
   const float far_plane = 4.0f * extent + 2.0f * glm::length(camera.position - camera.target);
@@ -131,6 +129,7 @@ ImageHandle HeightFieldPass::add_to(engine::graph::RenderGraph& graph, const Liq
   const engine::vk::UniformSlice view_slice = uniforms_.push(view);
 
   struct Data {
+    engine::passes::PassBindings bindings;
     ImageHandle color;
     ImageHandle depth;
   };
@@ -143,18 +142,18 @@ ImageHandle HeightFieldPass::add_to(engine::graph::RenderGraph& graph, const Liq
       .add_pass<Data>(
           "liquid.height_field",
           [&](PassBuilder& b, Data& d) {
-            b.read(density, Access::VertexSampled);
+            d.bindings = engine::passes::PassBindings(pipeline_);
+            d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, solver);
+            d.bindings.bind_uniform(LIQUID_BINDING_VIEW_UNIFORMS, view_slice);
+            d.bindings.bind_image(b, LIQUID_BINDING_HEIGHT_FIELD_DENSITY, density, linear_.handle());
             // Blended: the water reads what the ground wrote.
             d.color = b.write(b.create("liquid.height_field", color_desc), Access::ColorAttachmentBlend,
                               engine::graph::clear_to(k_sky.r, k_sky.g, k_sky.b, k_sky.a));
             d.depth = b.write(b.create("liquid.height_field.depth", depth_desc), Access::DepthAttachmentWrite,
                               engine::graph::clear_depth(1.0f));
           },
-          [this, solver, view_slice, density](PassContext& ctx, const Data&) {
-            pipeline_.bind(ctx.cmd, ctx.width, ctx.height);
-            pipeline_.push_uniform(ctx.cmd, 0, solver.buffer, solver.offset, solver.size);
-            pipeline_.push_uniform(ctx.cmd, 1, view_slice.buffer, view_slice.offset, view_slice.size);
-            pipeline_.push_image(ctx.cmd, 2, ctx.image(density).sampled_view(), linear_.handle());
+          [this](PassContext& ctx, const Data& d) {
+            d.bindings.bind_and_push(ctx);
             // Ground first (opaque), then the water over it; rows run from far (scene y = 0) to
             // near for the default camera, so the blended water is drawn back to front.
             vkCmdBindIndexBuffer(ctx.cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);

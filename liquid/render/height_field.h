@@ -11,12 +11,13 @@
 #include "liquid/node.h"
 #include "liquid/render/camera.h"
 #include "liquid/render/renderer.h"
+#include "liquid/render/view_uniforms.h"
 
 namespace liquid {
 
 // A camera looking at the centre of the plane from above and in front (+z), about 50 degrees
 // above the horizon, framing the whole domain; the scene's own camera when it has one.
-CameraView default_height_field_camera(const SimulationSetup& setup);
+CameraView default_height_field_camera(const Scene& scene, const SimulationSetup& setup);
 
 // Draws a shallow-water node's ground and water as two meshes of one vertex per grid cell, made in
 // the vertex shader from gl_VertexIndex, with depth testing. An index buffer shares each vertex
@@ -37,7 +38,7 @@ class HeightFieldPass {
   const LiquidNode& node_;
   engine::vk::GraphicsPipeline pipeline_;
   engine::vk::Sampler linear_;
-  engine::vk::UniformArena uniforms_;
+  ViewUniforms uniforms_;
   engine::vk::Buffer indices_;  // 6 per quad of the (cells + 2)^2 vertex grid, far rows first
   uint32_t index_count_ = 0;
 };

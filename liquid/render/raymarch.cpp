@@ -1,7 +1,8 @@
 #include "liquid/render/raymarch.h"
 
-#include "embedded_shaders.h"
+#include "engine/passes/bindings.h"
 #include "engine/passes/fullscreen.h"
+#include "liquid_shaders.h"
 #include "liquid/specialization.h"
 #include "liquid/uniforms.h"
 
@@ -39,34 +40,31 @@ RaymarchPass::RaymarchPass(engine::vk::Context& context, const LiquidNode& node)
                               .name = "liquid.occupancy",
                               .vertex = engine::passes::fullscreen_layered_vertex_shader(),
                               .geometry = engine::passes::fullscreen_layered_geometry_shader(),
-                              .fragment = shaders::occupancy_frag,
+                              .fragment = liquid_shaders::occupancy_frag,
                               .color_formats = {VK_FORMAT_R16_SFLOAT},
-                              .bindings = {{0, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
+                              .bindings = {{LIQUID_BINDING_OCCUPANCY_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
                               .push_constant_size = 16}),
       raymarch_(context, engine::vk::GraphicsPipelineDesc{
                              .name = "liquid.raymarch",
                              .vertex = engine::passes::fullscreen_vertex_shader(),
-                             .fragment = shaders::raymarch_frag,
+                             .fragment = liquid_shaders::raymarch_frag,
                              .color_formats = {k_color_format},
                              .depth_format = k_depth_format,
                              .depth_test = true,
                              .depth_write = true,
-                             .bindings = {{0, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
-                                          {1, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
-                                          {2, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
-                                          {3, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
-                             .specialization = scene_specialization(node.setup())}),
+                             .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
+                                          {LIQUID_BINDING_VIEW_UNIFORMS, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
+                                          {LIQUID_BINDING_RAYMARCH_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
+                                          {LIQUID_BINDING_RAYMARCH_OCCUPANCY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
+                             .specialization = scene_specialization(node.scene(), node.setup())}),
       linear_(context, VK_FILTER_LINEAR),
       nearest_(context, VK_FILTER_NEAREST),
-      uniforms_(context, 4096, 3) {}
+      uniforms_(context, node, sizeof(RenderUniforms)) {}
 
 RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
                                            const RenderSettings& settings, const CameraView& camera) {
   const SimulationSetup& setup = node_.setup();
-  uniforms_.begin_frame();
-  StepInputs inputs;
-  inputs.obstacle_poses = node_.obstacle_poses(node_.time());
-  const engine::vk::UniformSlice solver = uniforms_.push(make_uniforms(setup, inputs));
+  const engine::vk::UniformSlice solver = uniforms_.begin_frame();
 
   const glm::ivec3 bricks = (setup.grid_cells + k_brick_cells - 1) / k_brick_cells;
   const float aspect = float(settings.width) / float(settings.height);
@@ -80,6 +78,7 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
 
   // Occupancy: one texel per brick, the brick's largest density.
   struct OccupancyData {
+    engine::passes::PassBindings bindings;
     ImageHandle occupancy;
   };
   const ImageHandle density = images.density;
@@ -88,15 +87,15 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
           .add_pass<OccupancyData>(
               "liquid.occupancy",
               [&](PassBuilder& b, OccupancyData& d) {
-                b.read(density, Access::FragmentSampled);
+                d.bindings = engine::passes::PassBindings(occupancy_);
+                d.bindings.bind_image(b, LIQUID_BINDING_OCCUPANCY_DENSITY, density, nearest_.handle());
                 d.occupancy = b.write(
                     b.create("liquid.occupancy", {engine::vk::ImageKind::Image3D, uint32_t(bricks.x), uint32_t(bricks.y),
                                                   uint32_t(bricks.z), VK_FORMAT_R16_SFLOAT, 0}),
                     Access::ColorAttachmentWrite);
               },
-              [this, density](PassContext& ctx, const OccupancyData&) {
-                occupancy_.bind(ctx.cmd, ctx.width, ctx.height);
-                occupancy_.push_image(ctx.cmd, 0, ctx.image(density).sampled_view(), nearest_.handle());
+              [this](PassContext& ctx, const OccupancyData& d) {
+                d.bindings.bind_and_push(ctx);
                 const glm::ivec4 push(k_brick_cells, 0, 0, 0);
                 occupancy_.push_constants(ctx.cmd, push);
                 engine::passes::draw_fullscreen(ctx.cmd, ctx.layers);
@@ -107,23 +106,27 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
                                          k_color_format, 0};
   const engine::vk::ImageDesc depth_desc{engine::vk::ImageKind::Image2D, settings.width, settings.height, 1,
                                          k_depth_format, 0};
-  return graph.add_pass<Outputs>(
+  struct RaymarchData {
+    engine::passes::PassBindings bindings;
+    Outputs out;
+  };
+  return graph.add_pass<RaymarchData>(
       "liquid.raymarch",
-      [&](PassBuilder& b, Outputs& out) {
-        b.read(density, Access::FragmentSampled);
-        b.read(occupancy, Access::FragmentSampled);
+      [&](PassBuilder& b, RaymarchData& d) {
+        d.bindings = engine::passes::PassBindings(raymarch_);
+        d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, solver);
+        d.bindings.bind_uniform(LIQUID_BINDING_VIEW_UNIFORMS, view);
+        d.bindings.bind_image(b, LIQUID_BINDING_RAYMARCH_DENSITY, density, linear_.handle());
+        d.bindings.bind_image(b, LIQUID_BINDING_RAYMARCH_OCCUPANCY, occupancy, nearest_.handle());
+        Outputs& out = d.out;
         out.color = b.write(b.create("liquid.color", color_desc), Access::ColorAttachmentWrite);
         out.depth = b.write(b.create("liquid.depth", depth_desc), Access::DepthAttachmentWrite,
                             engine::graph::clear_depth(1.0f));
       },
-      [this, solver, view, density, occupancy](PassContext& ctx, const Outputs&) {
-        raymarch_.bind(ctx.cmd, ctx.width, ctx.height);
-        raymarch_.push_uniform(ctx.cmd, 0, solver.buffer, solver.offset, solver.size);
-        raymarch_.push_uniform(ctx.cmd, 1, view.buffer, view.offset, view.size);
-        raymarch_.push_image(ctx.cmd, 2, ctx.image(density).sampled_view(), linear_.handle());
-        raymarch_.push_image(ctx.cmd, 3, ctx.image(occupancy).sampled_view(), nearest_.handle());
+      [](PassContext& ctx, const RaymarchData& d) {
+        d.bindings.bind_and_push(ctx);
         engine::passes::draw_fullscreen(ctx.cmd);
-      });
+      }).out;
 }
 
 }  // namespace liquid

@@ -9,6 +9,7 @@
 #include "liquid/node.h"
 #include "liquid/render/camera.h"
 #include "liquid/render/renderer.h"
+#include "liquid/render/view_uniforms.h"
 
 namespace liquid {
 
@@ -31,7 +32,7 @@ class RaymarchPass {
   engine::vk::GraphicsPipeline raymarch_;
   engine::vk::Sampler linear_;
   engine::vk::Sampler nearest_;
-  engine::vk::UniformArena uniforms_;
+  ViewUniforms uniforms_;
 };
 
 }  // namespace liquid

@@ -17,7 +17,7 @@ LiquidRenderer::LiquidRenderer(engine::vk::Context& context, const LiquidNode& n
     throw std::invalid_argument("frame size " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
                                 " is outside the device's limit of 1.." + std::to_string(limit) + " pixels per side");
   const SimulationSetup& setup = node.setup();
-  if (setup.scene.mode == SimulationMode::ShallowWater)
+  if (setup.shallow_water)
     height_field_ = std::make_unique<HeightFieldPass>(context, node);
   else if (setup.dimension == 3)
     raymarch_ = std::make_unique<RaymarchPass>(context, node);

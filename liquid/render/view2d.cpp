@@ -1,7 +1,8 @@
 #include "liquid/render/view2d.h"
 
-#include "embedded_shaders.h"
+#include "engine/passes/bindings.h"
 #include "engine/passes/fullscreen.h"
+#include "liquid_shaders.h"
 #include "liquid/specialization.h"
 #include "liquid/uniforms.h"
 
@@ -69,32 +70,29 @@ View2dPass::View2dPass(engine::vk::Context& context, const LiquidNode& node)
       liquid_(context, engine::vk::GraphicsPipelineDesc{
                            .name = "liquid.view2d",
                            .vertex = engine::passes::fullscreen_vertex_shader(),
-                           .fragment = shaders::view2d_frag,
+                           .fragment = liquid_shaders::view2d_frag,
                            .color_formats = {k_color_format},
-                           .bindings = {{0, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
-                                        {1, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
+                           .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
+                                        {LIQUID_BINDING_VIEW2D_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
                            .push_constant_size = sizeof(View2dPush),
-                           .specialization = scene_specialization(node.setup())}),
+                           .specialization = scene_specialization(node.scene(), node.setup())}),
       particles_(context, engine::vk::GraphicsPipelineDesc{
                               .name = "liquid.view2d.particles",
-                              .vertex = shaders::particles2d_vert,
-                              .fragment = shaders::particles2d_frag,
+                              .vertex = liquid_shaders::particles2d_vert,
+                              .fragment = liquid_shaders::particles2d_frag,
                               .topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST,
                               .color_formats = {k_color_format},
                               .blend = {engine::vk::BlendMode::Alpha},
-                              .bindings = {{0, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
+                              .bindings = {{LIQUID_BINDING_PARTICLES2D_POSITIONS, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
                               .push_constant_size = sizeof(Particles2dPush)}),
       linear_(context, VK_FILTER_LINEAR),
       nearest_(context, VK_FILTER_NEAREST),
-      uniforms_(context, 4096, 3) {}
+      uniforms_(context, node, 0) {}
 
 ImageHandle View2dPass::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
                                const RenderSettings& settings) {
   const SimulationSetup& setup = node_.setup();
-  uniforms_.begin_frame();
-  StepInputs inputs;
-  inputs.obstacle_poses = node_.obstacle_poses(node_.time());
-  const engine::vk::UniformSlice solver = uniforms_.push(make_uniforms(setup, inputs));
+  const engine::vk::UniformSlice solver = uniforms_.begin_frame();
 
   const View2dLayout layout = fit_view2d(glm::vec2(setup.domain), settings.width, settings.height);
   const glm::vec2 frame{float(settings.width), float(settings.height)};
@@ -102,6 +100,7 @@ ImageHandle View2dPass::add_to(engine::graph::RenderGraph& graph, const LiquidIm
                         frame,         layout.wall_pixels,      k_depth_search_cells};
 
   struct Data {
+    engine::passes::PassBindings bindings;
     ImageHandle color;
   };
   const ImageHandle density = images.density;
@@ -112,13 +111,13 @@ ImageHandle View2dPass::add_to(engine::graph::RenderGraph& graph, const LiquidIm
           .add_pass<Data>(
               "liquid.view2d",
               [&](PassBuilder& b, Data& d) {
-                b.read(density, Access::FragmentSampled);
+                d.bindings = engine::passes::PassBindings(liquid_);
+                d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, solver);
+                d.bindings.bind_image(b, LIQUID_BINDING_VIEW2D_DENSITY, density, linear_.handle());
                 d.color = b.write(b.create("liquid.view2d", color_desc), Access::ColorAttachmentWrite);
               },
-              [this, solver, density, push](PassContext& ctx, const Data&) {
-                liquid_.bind(ctx.cmd, ctx.width, ctx.height);
-                liquid_.push_uniform(ctx.cmd, 0, solver.buffer, solver.offset, solver.size);
-                liquid_.push_image(ctx.cmd, 1, ctx.image(density).sampled_view(), linear_.handle());
+              [this, push](PassContext& ctx, const Data& d) {
+                d.bindings.bind_and_push(ctx);
                 liquid_.push_constants(ctx.cmd, push);
                 engine::passes::draw_fullscreen(ctx.cmd);
               })
@@ -128,7 +127,7 @@ ImageHandle View2dPass::add_to(engine::graph::RenderGraph& graph, const LiquidIm
   // Particles: points blended over the liquid, about 0.7 particle spacings wide (1 to 5 pixels).
   // Where the particles are packed closer than a few pixels, each point is fainter, so that the
   // liquid still shows through instead of a white sheet.
-  const float spacing_pixels = setup.scene.particle_spacing * layout.pixels_per_metre;
+  const float spacing_pixels = setup.particle_spacing * layout.pixels_per_metre;
   const float point_size = std::clamp(0.7f * spacing_pixels, 1.0f, 5.0f);
   const float alpha = std::clamp(spacing_pixels / 3.0f, 0.25f, 0.85f);
   const Particles2dPush particles_push{layout.origin, layout.pixels_per_metre, point_size, frame,
@@ -139,12 +138,12 @@ ImageHandle View2dPass::add_to(engine::graph::RenderGraph& graph, const LiquidIm
       .add_pass<Data>(
           "liquid.view2d.particles",
           [&](PassBuilder& b, Data& d) {
-            b.read(positions, Access::VertexSampled);
+            d.bindings = engine::passes::PassBindings(particles_);
+            d.bindings.bind_image(b, LIQUID_BINDING_PARTICLES2D_POSITIONS, positions, nearest_.handle());
             d.color = b.write(color, Access::ColorAttachmentBlend);
           },
-          [this, positions, particles_push, count](PassContext& ctx, const Data&) {
-            particles_.bind(ctx.cmd, ctx.width, ctx.height);
-            particles_.push_image(ctx.cmd, 0, ctx.image(positions).sampled_view(), nearest_.handle());
+          [this, particles_push, count](PassContext& ctx, const Data& d) {
+            d.bindings.bind_and_push(ctx);
             particles_.push_constants(ctx.cmd, particles_push);
             vkCmdDraw(ctx.cmd, count, 1, 0, 0);
           })

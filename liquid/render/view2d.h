@@ -8,6 +8,7 @@
 #include "engine/vk/uniform_arena.h"
 #include "liquid/node.h"
 #include "liquid/render/renderer.h"
+#include "liquid/render/view_uniforms.h"
 
 #include <glm/glm.hpp>
 
@@ -43,7 +44,7 @@ class View2dPass {
   engine::vk::GraphicsPipeline particles_;
   engine::vk::Sampler linear_;
   engine::vk::Sampler nearest_;
-  engine::vk::UniformArena uniforms_;
+  ViewUniforms uniforms_;
 };
 
 }  // namespace liquid

@@ -1,53 +1,15 @@
-// Shared by the solver's passes: the per-step uniform block (mirrored by liquid/gpu_types.h, std140)
-// and the grid, obstacle and force helpers. DIM is 2 or 3 (compile-time define).
+// Shared by the solver's passes and the views: the per-step uniform block (shared.h), the scene's
+// specialization constants and the grid, obstacle and force helpers. DIM is 2 or 3 (a define).
 #ifndef LIQUID_COMMON_GLSL
 #define LIQUID_COMMON_GLSL
 #extension GL_EXT_control_flow_attributes : require
 
-#define MAX_OBSTACLES 8
-#define MAX_BALLS 32
-#define MAX_GROUND 16
-#define MAX_BRUSHES 4
-#define MAX_EMITTERS 4
+#include "liquid/shared.h"
 
-#define OBSTACLE_SPHERE 0
-#define OBSTACLE_BOX 1
-#define OBSTACLE_METABALLS 2
-
-struct Obstacle {
-  vec4 center_kind;  // xyz centre (m) at the end of the step, w kind (shaders use OBSTACLE_KIND_i)
-  vec4 size;         // sphere: x radius; box: xyz half extents; metaballs: x threshold, y first ball, z count
-  vec4 velocity;     // xyz (m/s)
+// The per-step block's fields are named in shared.h (one definition for C++ and GLSL).
+layout(std140, set = 0, binding = LIQUID_BINDING_SOLVER_UNIFORMS) uniform SolverBlock {
+  SolverUniforms u;
 };
-
-struct Brush {
-  vec4 position_radius;  // xyz centre (m), w radius (m)
-  vec4 acceleration;     // xyz (m/s^2) at the centre, falling smoothly to zero at the radius
-};
-
-struct EmitterRange {
-  vec4 position_radius;  // nozzle centre (m), w radius (m)
-  vec4 velocity;         // xyz (m/s)
-  ivec4 range;           // x first particle index emitted this step, y one past the last
-};
-
-layout(std140, set = 0, binding = 0) uniform SolverUniforms {
-  vec4 domain_h;      // xyz domain size (m), w cell size h (m)
-  ivec4 grid_dim;     // xyz cells, w dimension
-  vec4 gravity_dt;    // xyz gravity (m/s^2), w time step (s)
-  vec4 pressure;      // x stiffness k (m^2/s^2), y gamma, z rest density rho0, w density scale (kg/m^3 per weight)
-  vec4 kernel;        // x splat radius r (cells), y PIC ratio, z wall margin (m), w obstacle band (m)
-  ivec4 counts;       // x particle texture width, y active before the step, z active after emission,
-                      // w obstacles (shaders use OBSTACLE_COUNT; kept for frame captures)
-  ivec4 counts2;      // x ground hills (shaders use GROUND_HILLS), y brushes, z emitters this step, w 1 in shallow water (shaders use SHALLOW_WATER)
-  vec4 shallow;       // x rest depth (m)
-  vec4 wall_kernel_beyond[2];  // [k / 4][k % 4]: fraction of the kernel's mass beyond a wall k + 0.5 cells away
-  Obstacle obstacles[MAX_OBSTACLES];
-  vec4 balls[MAX_BALLS];   // metaballs: xyz centre relative to the obstacle centre (m), w radius (m)
-  vec4 ground[MAX_GROUND];  // shallow water hills: xy centre (m), z height (m), w width (m)
-  Brush brushes[MAX_BRUSHES];
-  EmitterRange emitters[MAX_EMITTERS];
-} u;
 
 // ---- Scene features, fixed when a pipeline is created (specialization constants) ----
 // Every pipeline whose shaders include this file passes liquid::scene_specialization(setup)
@@ -83,7 +45,7 @@ bool shallow_water() { return SHALLOW_WATER; }
 
 // (rho / rho0)^gamma: repeated products when gamma is a small integer (the default 5), pow otherwise.
 float density_ratio_power(float ratio) {
-  if (INTEGER_GAMMA == 0) return pow(ratio, u.pressure.y);
+  if (INTEGER_GAMMA == 0) return pow(ratio, u.gamma);
   float result = ratio;
   [[unroll]] for (int i = 1; i < INTEGER_GAMMA; ++i) result *= ratio;
   return result;
@@ -97,8 +59,8 @@ float density_ratio_power(float ratio) {
 #define GRID_COORD ivec2
 #endif
 
-ivec3 grid_cells() { return u.grid_dim.xyz; }
-float cell_size() { return u.domain_h.w; }
+ivec3 grid_cells() { return u.grid_cells; }
+float cell_size() { return u.cell_size; }
 
 // World position (m) of the centre of cell c.
 vec3 cell_center(ivec3 c) {
@@ -130,10 +92,9 @@ float sd_box(vec3 p, vec3 half_extent) {
 float sd_metaballs(vec3 p, Obstacle o) {
   float field = 0.0;
   vec3 gradient = vec3(0.0);
-  int first = int(o.size.y), count = int(o.size.z);
   float reach = 0.0;
-  for (int i = 0; i < count; ++i) {
-    vec4 ball = u.balls[first + i];
+  for (int i = 0; i < o.ball_count; ++i) {
+    vec4 ball = u.balls[o.first_ball + i];
     vec3 d = p - ball.xyz;
     float q = dot(d, d) / (ball.w * ball.w);
     reach = max(reach, length(ball.xyz) + ball.w);
@@ -142,14 +103,14 @@ float sd_metaballs(vec3 p, Obstacle o) {
       gradient += -4.0 * (1.0 - q) * d / (ball.w * ball.w);
     }
   }
-  float threshold = o.size.x;
+  float threshold = o.metaball_threshold;
   if (field <= 0.0) return max(length(p) - reach, 1e-3) + 1e-3;  // outside every ball
   return (threshold - field) / max(length(gradient), 1e-4);
 }
 
 // p relative to obstacle `index`'s centre (in the plane in 2D).
 vec3 obstacle_local(int index, vec3 p) {
-  vec3 local = p - u.obstacles[index].center_kind.xyz;
+  vec3 local = p - u.obstacles[index].center;
 #if DIM == 2
   local.z = 0.0;
 #endif
@@ -160,14 +121,14 @@ float obstacle_distance(int index, vec3 p) {
   Obstacle o = u.obstacles[index];
   vec3 local = obstacle_local(index, p);
   int kind = obstacle_kind(index);
-  if (kind == OBSTACLE_SPHERE) return length(local) - o.size.x;
-  if (kind == OBSTACLE_BOX) return sd_box(local, o.size.xyz);
+  if (kind == LIQUID_OBSTACLE_SPHERE) return length(local) - o.sphere_radius;
+  if (kind == LIQUID_OBSTACLE_BOX) return sd_box(local, o.box_half_extent);
   return sd_metaballs(local, o);
 }
 
 // Outward normal: exact for a sphere, by central differences for the other kinds.
 vec3 obstacle_normal(int index, vec3 p) {
-  if (obstacle_kind(index) == OBSTACLE_SPHERE) {
+  if (obstacle_kind(index) == LIQUID_OBSTACLE_SPHERE) {
     vec3 local = obstacle_local(index, p);
     float len = length(local);
     return len > 1e-12 ? local / len : vec3(0.0, 1.0, 0.0);
@@ -186,13 +147,13 @@ vec3 obstacle_normal(int index, vec3 p) {
 // falling to zero one band outside. Added to the fluid density before the pressure, so the
 // pressure gradient pushes liquid away from the obstacle.
 float obstacle_density(vec3 p) {
-  float band = u.kernel.w;
+  float band = u.obstacle_band;
   float total = 0.0;
   [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
     float d = obstacle_distance(i, p);
     total += clamp(1.0 - d / band, 0.0, 2.0);
   }
-  return total * u.pressure.z;
+  return total * u.rest_density;
 }
 
 // Shallow water (section 6, figure 4): ground height b(x, y) in metres; read as extra density
@@ -210,22 +171,22 @@ float ground_height(vec2 p) {
 // External forces f_ext (eq. 2): brushes with a smooth (1 - d^2/R^2)^2 falloff.
 vec3 external_acceleration(vec3 p) {
   vec3 a = vec3(0.0);
-  for (int i = 0; i < u.counts2.y; ++i) {
+  for (int i = 0; i < u.brush_count; ++i) {
     Brush b = u.brushes[i];
-    vec3 d = p - b.position_radius.xyz;
+    vec3 d = p - b.position;
 #if DIM == 2
     d.z = 0.0;
 #endif
-    float q = dot(d, d) / (b.position_radius.w * b.position_radius.w);
-    if (q < 1.0) a += b.acceleration.xyz * (1.0 - q) * (1.0 - q);
+    float q = dot(d, d) / (b.radius * b.radius);
+    if (q < 1.0) a += b.acceleration * (1.0 - q) * (1.0 - q);
   }
   return a;
 }
 
 // Keeps a position inside the domain, `margin` metres from every wall.
 vec3 clamp_to_domain(vec3 p) {
-  vec3 lo = vec3(u.kernel.z);
-  vec3 hi = u.domain_h.xyz - u.kernel.z;
+  vec3 lo = vec3(u.wall_margin);
+  vec3 hi = u.domain - u.wall_margin;
   p = clamp(p, lo, hi);
 #if DIM == 2
   p.z = 0.0;

@@ -31,8 +31,10 @@ std::vector<std::filesystem::path> shipped_scenes() {
   return paths;
 }
 
+Scene scene_of(const char* file) { return load_scene(k_scene_dir / file); }
+
 SimulationSetup setup_of(const char* file, const DeviceLimits& limits = {}) {
-  return make_setup(load_scene(k_scene_dir / file), limits);
+  return make_setup(scene_of(file), limits);
 }
 
 // A liquid scene with one block, built in code.
@@ -79,8 +81,8 @@ TEST_CASE("kernel integral matches a numeric quadrature", "[setup]") {
 }
 
 TEST_CASE("dam_break_2d gives the expected particles and grid", "[setup]") {
-  const SimulationSetup setup = setup_of("dam_break_2d.json");
-  const Scene& scene = setup.scene;
+  const Scene scene = scene_of("dam_break_2d.json");
+  const SimulationSetup setup = make_setup(scene, {});
   // 0.3 / 0.0029 = 103.4 and 0.45 / 0.0029 = 155.2 spacings.
   CHECK(setup.initial_particles == 103 * 155);
   CHECK(setup.capacity == setup.initial_particles);
@@ -141,7 +143,7 @@ TEST_CASE("the default grid follows N^(1/d) with at least 8 cells", "[setup]") {
 TEST_CASE("the lattice of symmetric_2d is mirror-symmetric", "[setup]") {
   const SimulationSetup setup = setup_of("symmetric_2d.json");
   const float length = setup.domain.x;
-  REQUIRE(length == setup.scene.domain.x);
+  REQUIRE(length == scene_of("symmetric_2d.json").domain.x);
   // The scene's numbers are dyadic, so mirroring is exact in float.
   std::set<std::pair<float, float>> points;
   for (const glm::vec4& p : setup.positions) points.insert({p.x, p.y});
@@ -203,8 +205,10 @@ TEST_CASE("a given rest density is kept", "[setup]") {
 }
 
 TEST_CASE("shallow water derives P = g h", "[setup]") {
-  const SimulationSetup setup = setup_of("shallow_water.json");
-  const Scene& scene = setup.scene;
+  const Scene scene = scene_of("shallow_water.json");
+  const SimulationSetup setup = make_setup(scene, {});
+  CHECK(setup.shallow_water);
+  CHECK(setup.rest_depth == scene.rest_depth);
   CHECK(setup.gamma == 1.0f);
   CHECK(setup.stiffness == Approx(glm::length(scene.gravity) * scene.rest_depth));
   CHECK(setup.gravity == glm::vec3(0.0f));
@@ -334,8 +338,10 @@ TEST_CASE("shipped scenes start every particle inside the wall margin", "[setup]
   // would be jolted on the first step.
   for (const auto& path : shipped_scenes()) {
     INFO(path.filename().string());
-    const SimulationSetup setup = make_setup(load_scene(path), {});
-    const float margin = setup.scene.wall_margin_cells * setup.cell_size;
+    const Scene scene = load_scene(path);
+    const SimulationSetup setup = make_setup(scene, {});
+    const float margin = scene.wall_margin_cells * setup.cell_size;
+    CHECK(setup.wall_margin == margin);
     for (const glm::vec4& p : setup.positions)
       for (int a = 0; a < setup.dimension; ++a) {
         INFO("axis " << a << " at " << p[a]);
@@ -348,8 +354,8 @@ TEST_CASE("shipped scenes start every particle inside the wall margin", "[setup]
 TEST_CASE("shipped scenes are in the stable weakly compressible regime", "[setup]") {
   for (const auto& path : shipped_scenes()) {
     INFO(path.filename().string());
-    const SimulationSetup setup = make_setup(load_scene(path), {});
-    const Scene& scene = setup.scene;
+    const Scene scene = load_scene(path);
+    const SimulationSetup setup = make_setup(scene, {});
     const double g = glm::length(scene.gravity);
     double sound = std::sqrt(double(setup.stiffness) * setup.gamma);
     if (scene.mode == SimulationMode::ShallowWater) {
@@ -398,8 +404,8 @@ TEST_CASE("the wall table holds the kernel's mass beyond a plane", "[setup][unif
   // The uniform block carries the table for k + 0.5 cells, k = 0..7.
   liquid::SimulationSetup setup;
   setup.dimension = 3;
-  setup.scene.kernel_radius_cells = 3.0f;
-  const liquid::gpu::SolverUniforms u = liquid::make_uniforms(setup, {});
+  setup.kernel_radius_cells = 3.0f;
+  const liquid::gpu::SolverUniforms u = liquid::make_uniforms(Scene{}, setup, {});
   CHECK(u.wall_kernel_beyond[0][1] == Approx(liquid::kernel_mass_beyond_wall(3, 3.0, 1.5)));
   CHECK(u.wall_kernel_beyond[0][3] == 0.0f);
 }
@@ -422,23 +428,23 @@ TEST_CASE("the shaders' specialization follows the scene's features", "[setup]")
   // constant_id layout of shaders/liquid/common.glsl (tests/cpu/test_shaders.cpp checks the ids):
   // obstacle count, 8 kinds, shallow water, integer gamma, emitters, ground hills.
   namespace id = specialization_id;
-  const std::vector<int32_t> dam = scene_specialization(setup_of("dam_break_2d.json"));
+  const std::vector<int32_t> dam = scene_specialization(scene_of("dam_break_2d.json"), setup_of("dam_break_2d.json"));
   CHECK(dam == std::vector<int32_t>{0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 5, 0, 0});
 
-  const std::vector<int32_t> obstacles = scene_specialization(setup_of("obstacles_2d.json"));
+  const std::vector<int32_t> obstacles = scene_specialization(scene_of("obstacles_2d.json"), setup_of("obstacles_2d.json"));
   REQUIRE(obstacles.size() == id::count);
   CHECK(obstacles[id::obstacle_count] == 3);
   CHECK(std::vector<int32_t>(obstacles.begin() + id::first_obstacle_kind, obstacles.begin() + id::first_obstacle_kind + 3) ==
         std::vector<int32_t>{0, 1, 2});  // sphere, box, metaballs
 
-  const std::vector<int32_t> shallow = scene_specialization(setup_of("shallow_water.json"));
+  const std::vector<int32_t> shallow = scene_specialization(scene_of("shallow_water.json"), setup_of("shallow_water.json"));
   CHECK(shallow[id::shallow_water] == 1);
   CHECK(shallow[id::integer_gamma] == 1);  // gamma = 1: P = g (h + b)
   CHECK(shallow[id::ground_hills] == 3);
 
-  CHECK(scene_specialization(setup_of("paper_3d.json"))[id::has_emitters] == 1);  // the jet
+  CHECK(scene_specialization(scene_of("paper_3d.json"), setup_of("paper_3d.json"))[id::has_emitters] == 1);  // the jet
 
   Scene fractional = load_scene(k_scene_dir / "dam_break_2d.json");
   fractional.gamma = 6.5f;
-  CHECK(scene_specialization(make_setup(fractional, {}))[id::integer_gamma] == 0);  // pow() in the shader
+  CHECK(scene_specialization(fractional, make_setup(fractional, {}))[id::integer_gamma] == 0);  // pow() in the shader
 }

@@ -1,8 +1,11 @@
-// The specialization constants the shaders declare (shaders/liquid/common.glsl) against the ids the
-// host fills in (liquid/specialization.h): read back from the embedded SPIR-V (OpName + SpecId), so
-// a constant renumbered on one side only fails here instead of silently feeding a wrong value.
-#include "embedded_shaders.h"
+// What the host and the shaders must agree on, read back from the embedded SPIR-V: the
+// specialization ids the shaders declare (shaders/liquid/common.glsl) against the ids the host fills
+// in (liquid/specialization.h), and the std140 offsets glslang gave the uniform block of
+// shaders/liquid/shared.h against the C++ struct's. A mismatch fails here instead of silently
+// feeding a wrong value.
+#include "liquid/gpu_types.h"
 #include "liquid/specialization.h"
+#include "liquid_shaders.h"
 
 #include <catch2/catch.hpp>
 
@@ -37,6 +40,45 @@ std::map<std::string, uint32_t> specialization_ids(std::span<const uint32_t> spi
   return out;
 }
 
+// "Struct.member" -> byte offset, and "Struct.member[]" -> array stride, of every struct in a
+// module (needs OpName / OpMemberName, which glslang emits unless told to strip).
+std::map<std::string, uint32_t> member_layout(std::span<const uint32_t> spirv) {
+  constexpr uint32_t k_op_name = 5, k_op_member_name = 6, k_op_decorate = 71, k_op_member_decorate = 72,
+                     k_op_type_array = 28, k_op_type_struct = 30;
+  constexpr uint32_t k_offset = 35, k_array_stride = 6;
+  auto text_at = [&](size_t at, size_t words) {
+    const char* text = reinterpret_cast<const char*>(&spirv[at]);
+    return std::string(text, strnlen(text, words * sizeof(uint32_t)));
+  };
+  std::map<uint32_t, std::string> type_names;
+  std::map<std::pair<uint32_t, uint32_t>, std::string> member_names;
+  std::map<std::pair<uint32_t, uint32_t>, uint32_t> offsets;
+  std::map<uint32_t, uint32_t> array_strides;                     // array type -> stride
+  std::map<std::pair<uint32_t, uint32_t>, uint32_t> member_types;  // (struct, member) -> type
+  for (size_t at = 5; at < spirv.size();) {
+    const uint32_t words = spirv[at] >> 16, opcode = spirv[at] & 0xffffu;
+    REQUIRE(words > 0);
+    if (opcode == k_op_name && words > 2) type_names[spirv[at + 1]] = text_at(at + 2, words - 2);
+    if (opcode == k_op_member_name && words > 3)
+      member_names[{spirv[at + 1], spirv[at + 2]}] = text_at(at + 3, words - 3);
+    if (opcode == k_op_member_decorate && words == 5 && spirv[at + 3] == k_offset)
+      offsets[{spirv[at + 1], spirv[at + 2]}] = spirv[at + 4];
+    if (opcode == k_op_decorate && words == 4 && spirv[at + 2] == k_array_stride) array_strides[spirv[at + 1]] = spirv[at + 3];
+    if (opcode == k_op_type_struct)
+      for (uint32_t m = 0; m + 2 < words; ++m) member_types[{spirv[at + 1], m}] = spirv[at + 2 + m];
+    (void)k_op_type_array;
+    at += words;
+  }
+  std::map<std::string, uint32_t> out;
+  for (const auto& [key, offset] : offsets) {
+    const std::string name = type_names[key.first] + "." + member_names[key];
+    out[name] = offset;
+    if (const auto stride = array_strides.find(member_types[key]); stride != array_strides.end())
+      out[name + "[]"] = stride->second;
+  }
+  return out;
+}
+
 std::map<std::string, uint32_t> expected_ids() {
   namespace id = liquid::specialization_id;
   std::map<std::string, uint32_t> ids{{"OBSTACLE_COUNT", id::obstacle_count},
@@ -55,15 +97,53 @@ TEST_CASE("shaders declare the specialization ids the host fills in", "[shaders]
   const std::map<std::string, uint32_t> expected = expected_ids();
   REQUIRE(expected.size() == liquid::specialization_id::count);
   const std::map<std::string, std::span<const uint32_t>> modules{
-      {"grid 2D", shaders::liquid_grid_frag_2d},         {"grid 3D", shaders::liquid_grid_frag_3d},
-      {"particle 2D", shaders::liquid_particle_frag_2d}, {"particle 3D", shaders::liquid_particle_frag_3d},
-      {"splat 2D", shaders::liquid_splat_vert_2d},       {"splat 3D", shaders::liquid_splat_vert_3d},
-      {"raymarch", shaders::raymarch_frag},              {"2D view", shaders::view2d_frag},
-      {"height field", shaders::height_field_vert}};
+      {"grid 2D", liquid_shaders::grid_frag_2d},         {"grid 3D", liquid_shaders::grid_frag_3d},
+      {"particle 2D", liquid_shaders::particle_frag_2d}, {"particle 3D", liquid_shaders::particle_frag_3d},
+      {"splat 2D", liquid_shaders::splat_vert_2d},       {"splat 3D", liquid_shaders::splat_vert_3d},
+      {"raymarch", liquid_shaders::raymarch_frag},       {"2D view", liquid_shaders::view2d_frag},
+      {"height field", liquid_shaders::height_field_vert}};
   for (const auto& [name, spirv] : modules) {
     INFO(name);
     const std::map<std::string, uint32_t> found = specialization_ids(spirv);
     // Each module declares all of them (they come from one include) and each with the host's id.
     CHECK(found == expected);
+  }
+}
+
+TEST_CASE("the solver's uniform block has the same layout in C++ and in every shader", "[shaders]") {
+  using namespace liquid::gpu;
+#define MEMBER(type, field) {#type "." #field, uint32_t(offsetof(type, field))}
+  const std::map<std::string, uint32_t> expected{
+      MEMBER(SolverUniforms, domain), MEMBER(SolverUniforms, cell_size), MEMBER(SolverUniforms, grid_cells),
+      MEMBER(SolverUniforms, particle_texture_width), MEMBER(SolverUniforms, gravity), MEMBER(SolverUniforms, dt),
+      MEMBER(SolverUniforms, stiffness), MEMBER(SolverUniforms, gamma), MEMBER(SolverUniforms, rest_density),
+      MEMBER(SolverUniforms, density_scale), MEMBER(SolverUniforms, kernel_radius), MEMBER(SolverUniforms, pic_ratio),
+      MEMBER(SolverUniforms, wall_margin), MEMBER(SolverUniforms, obstacle_band),
+      MEMBER(SolverUniforms, active_before), MEMBER(SolverUniforms, active_after),
+      MEMBER(SolverUniforms, brush_count), MEMBER(SolverUniforms, emission_count),
+      MEMBER(SolverUniforms, rest_depth), MEMBER(SolverUniforms, wall_kernel_beyond),
+      MEMBER(SolverUniforms, obstacles), MEMBER(SolverUniforms, balls), MEMBER(SolverUniforms, ground),
+      MEMBER(SolverUniforms, brushes), MEMBER(SolverUniforms, emitters),
+      {"SolverUniforms.wall_kernel_beyond[]", 16}, {"SolverUniforms.obstacles[]", uint32_t(sizeof(Obstacle))},
+      {"SolverUniforms.balls[]", 16}, {"SolverUniforms.ground[]", 16},
+      {"SolverUniforms.brushes[]", uint32_t(sizeof(Brush))}, {"SolverUniforms.emitters[]", uint32_t(sizeof(EmitterRange))},
+      MEMBER(Obstacle, center), MEMBER(Obstacle, sphere_radius), MEMBER(Obstacle, box_half_extent),
+      MEMBER(Obstacle, metaball_threshold), MEMBER(Obstacle, velocity), MEMBER(Obstacle, first_ball),
+      MEMBER(Obstacle, ball_count), MEMBER(Brush, position), MEMBER(Brush, radius), MEMBER(Brush, acceleration),
+      MEMBER(EmitterRange, position), MEMBER(EmitterRange, radius), MEMBER(EmitterRange, velocity),
+      MEMBER(EmitterRange, first), MEMBER(EmitterRange, end)};
+#undef MEMBER
+  // Modules whose shaders read obstacles, brushes and emitters, so glslang lays out every struct.
+  const std::map<std::string, std::span<const uint32_t>> modules{
+      {"grid 3D", liquid_shaders::grid_frag_3d}, {"particle 2D", liquid_shaders::particle_frag_2d},
+      {"particle 3D", liquid_shaders::particle_frag_3d}, {"splat 3D", liquid_shaders::splat_vert_3d}};
+  for (const auto& [module, spirv] : modules) {
+    INFO(module);
+    const std::map<std::string, uint32_t> found = member_layout(spirv);
+    for (const auto& [member, offset] : expected) {
+      INFO(member);
+      REQUIRE(found.count(member) == 1);
+      CHECK(found.at(member) == offset);
+    }
   }
 }

@@ -1,5 +1,5 @@
 // Engine tests on the GPU (lavapipe in CI) with validation and synchronization validation on.
-#include "embedded_shaders.h"
+#include "test_shaders.h"
 #include "engine/graph/render_graph.h"
 #include "engine/graph/transfer.h"
 #include "engine/passes/fullscreen.h"
@@ -33,7 +33,7 @@ PatternFrames render_pattern(vk::Context& context, const std::string& drop_barri
   vk::GraphicsPipeline pattern_pipeline(context, vk::GraphicsPipelineDesc{
                                                      .name = "pattern",
                                                      .vertex = passes::fullscreen_vertex_shader(),
-                                                     .fragment = shaders::test_pattern_frag,
+                                                     .fragment = test_shaders::pattern_frag,
                                                      .color_formats = {VK_FORMAT_R8G8B8A8_UNORM}});
   passes::FxaaPass fxaa(context, VK_FORMAT_R8G8B8A8_UNORM);
   graph::RenderGraph graph(&context);
@@ -115,7 +115,7 @@ TEST_CASE("layered rendering reaches every slice of a 3D image", "[gpu][graph]")
                                              .name = "layer_id",
                                              .vertex = passes::fullscreen_layered_vertex_shader(),
                                              .geometry = passes::fullscreen_layered_geometry_shader(),
-                                             .fragment = shaders::test_layer_id_frag,
+                                             .fragment = test_shaders::layer_id_frag,
                                              .color_formats = {VK_FORMAT_R32G32B32A32_SFLOAT}});
   graph::RenderGraph graph(&context);
   const uint32_t w = 8, h = 6, d = 5;

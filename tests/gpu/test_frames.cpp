@@ -36,7 +36,7 @@ Frame step_and_render(liquid::LiquidNode& node, int steps, bool fxaa = true) {
   liquid::LiquidRenderer renderer(context, node, {.width = k_width, .height = k_height, .fxaa = fxaa});
   engine::graph::RenderGraph graph(&context);
   const liquid::LiquidImages images = node.add_to(graph, 0);
-  const liquid::RenderOutputs out = renderer.add_to(graph, images, liquid::default_camera(node.setup()));
+  const liquid::RenderOutputs out = renderer.add_to(graph, images, liquid::default_camera(node.scene(), node.setup()));
   const engine::graph::Readback color = engine::graph::add_readback(graph, out.final, "test.color");
   std::optional<engine::graph::Readback> depth;
   if (out.depth.valid()) depth = engine::graph::add_readback(graph, out.depth, "test.depth");

@@ -163,11 +163,11 @@ TEST_CASE("PIC (r = 1) dissipates more kinetic energy than the FLIP blend (r = 0
 TEST_CASE("an emitter adds particles on schedule up to its capacity", "[gpu][liquid][physics]") {
   liquid::LiquidNode node(test::gpu(), test::shipped_scene("jet_2d"));
   const auto& s = node.setup();
-  REQUIRE(!s.scene.emitters.empty());
+  REQUIRE(!node.scene().emitters.empty());
   const int initial = node.active_particles();
   auto scheduled = [&] {
     int n = initial;
-    for (const auto& e : s.scene.emitters) n += liquid::emitted_by(e, s.dimension, s.scene.particle_spacing, node.time());
+    for (const auto& e : node.scene().emitters) n += liquid::emitted_by(e, s.dimension, s.particle_spacing, node.time());
     return std::min(n, s.capacity);
   };
   test::run_steps(node, 50);

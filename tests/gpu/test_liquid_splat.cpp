@@ -17,7 +17,7 @@ double kernel(double d2, double r) {
 std::vector<double> analytic_weights(const liquid::SimulationSetup& s, const std::vector<glm::vec4>& positions) {
   const glm::ivec3 n = s.grid_cells;
   std::vector<double> w(size_t(n.x) * n.y * n.z, 0.0);
-  const double r = s.scene.kernel_radius_cells;
+  const double r = s.kernel_radius_cells;
   for (const glm::vec4& p : positions) {
     const glm::dvec3 g = glm::dvec3(p) / double(s.cell_size);
     for (int z = 0; z < n.z; ++z)

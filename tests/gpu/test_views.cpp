@@ -84,7 +84,7 @@ float nearest_obstacle(const liquid::LiquidNode& node, glm::vec2 p) {
   const auto poses = node.obstacle_poses(node.time());
   float d = 1e30f;
   for (size_t i = 0; i < poses.size(); ++i)
-    d = std::min(d, liquid::obstacle_distance(node.setup().scene.obstacles[i], poses[i].center, glm::vec3(p, 0.0f), 2));
+    d = std::min(d, liquid::obstacle_distance(node.scene().obstacles[i], poses[i].center, glm::vec3(p, 0.0f), 2));
   return d;
 }
 
@@ -239,7 +239,7 @@ TEST_CASE("height-field view of shallow_water: sky, sandy ground and water where
   test::run_steps(node, 16);
   liquid::HeightFieldPass pass(context, node);
   const liquid::RenderSettings settings{.width = k_width, .height = k_height, .fxaa = false};
-  const liquid::CameraView camera = liquid::default_height_field_camera(node.setup());
+  const liquid::CameraView camera = liquid::default_height_field_camera(node.scene(), node.setup());
   const Rgba8Image image =
       render(node, [&](auto& graph, const auto& images) { return pass.add_to(graph, images, settings, camera); });
 
@@ -263,21 +263,21 @@ TEST_CASE("height-field view of shallow_water: sky, sandy ground and water where
   const liquid::SimulationSetup& setup = node.setup();
   const std::vector<float> density = node.read_density_ratio();
   const glm::ivec2 n(setup.grid_cells.x, setup.grid_cells.y);
-  const float centre_depth = setup.scene.rest_depth * density[size_t(n.y / 2) * size_t(n.x) + size_t(n.x / 2)];
-  REQUIRE(centre_depth > 2.0f * liquid::HeightFieldPass::k_dry_fraction * setup.scene.rest_depth);
+  const float centre_depth = setup.rest_depth * density[size_t(n.y / 2) * size_t(n.x) + size_t(n.x / 2)];
+  REQUIRE(centre_depth > 2.0f * liquid::HeightFieldPass::k_dry_fraction * setup.rest_depth);
   const glm::mat4 vp = liquid::view_projection(camera, float(k_width) / float(k_height), 0.01f, 100.0f);
   auto project = [&](glm::vec3 world) {
     const glm::vec4 clip = vp * glm::vec4(world, 1.0f);
     const glm::vec2 ndc = glm::vec2(clip) / clip.w;
     return glm::ivec2((ndc * 0.5f + 0.5f) * glm::vec2(k_width, k_height));
   };
-  const float ground_centre = liquid::ground_height(setup.scene, glm::vec2(setup.domain) * 0.5f);
+  const float ground_centre = liquid::ground_height(node.scene(), glm::vec2(setup.domain) * 0.5f);
   const glm::ivec2 centre = project({0.5f * setup.domain.x, ground_centre + centre_depth, 0.5f * setup.domain.y});
   const glm::ivec3 centre_colour = pixel(image, centre.x, centre.y);
   INFO("centre pixel " << centre.x << "," << centre.y << " = " << centre_colour.r << "," << centre_colour.g << ","
                        << centre_colour.b);
   CHECK(is_blue(centre_colour));
-  const glm::ivec2 side = project({0.5f * setup.domain.x, -0.5f * setup.scene.rest_depth, setup.domain.y});
+  const glm::ivec2 side = project({0.5f * setup.domain.x, -0.5f * setup.rest_depth, setup.domain.y});
   const glm::ivec3 side_colour = pixel(image, side.x, side.y);
   INFO("near side pixel " << side.x << "," << side.y << " = " << side_colour.r << "," << side_colour.g << ","
                           << side_colour.b);
@@ -381,7 +381,7 @@ TEST_CASE("height-field golden: waves around a dry island over a sandy bed", "[g
   });
   liquid::HeightFieldPass pass(context, node);
   const liquid::RenderSettings settings{.width = k_width, .height = k_height, .fxaa = false};
-  const liquid::CameraView camera = liquid::default_height_field_camera(node.setup());
+  const liquid::CameraView camera = liquid::default_height_field_camera(node.scene(), node.setup());
   const Rgba8Image image =
       render(node, [&](auto& graph, const auto& images) { return pass.add_to(graph, images, settings, camera); });
 

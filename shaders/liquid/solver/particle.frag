@@ -10,10 +10,10 @@
 #extension GL_GOOGLE_include_directive : require
 #include "liquid/common.glsl"
 
-layout(set = 0, binding = 1) uniform sampler2D u_positions;
-layout(set = 0, binding = 2) uniform sampler2D u_velocities;
-layout(set = 0, binding = 3) uniform GRID_SAMPLER u_splat;     // (sum w u, sum w)
-layout(set = 0, binding = 4) uniform GRID_SAMPLER u_velocity;  // (u', fluid flag)
+layout(set = 0, binding = LIQUID_BINDING_PARTICLE_POSITIONS) uniform sampler2D u_positions;
+layout(set = 0, binding = LIQUID_BINDING_PARTICLE_VELOCITIES) uniform sampler2D u_velocities;
+layout(set = 0, binding = LIQUID_BINDING_PARTICLE_SPLAT) uniform GRID_SAMPLER u_splat;             // (sum w u, sum w)
+layout(set = 0, binding = LIQUID_BINDING_PARTICLE_GRID_VELOCITY) uniform GRID_SAMPLER u_velocity;  // (u', fluid flag)
 
 layout(location = 0) in vec2 v_uv;
 layout(location = 0) out vec4 out_position;
@@ -76,34 +76,34 @@ float random01(uint seed) { return float(hash(seed) >> 8) * (1.0 / 16777216.0); 
 // A new particle of an emitter: a random point of the nozzle disc (segment in 2D), pushed a
 // random fraction of one step along the jet so a step's particles do not stack in one plane.
 void emit(int index, EmitterRange e) {
-  vec3 axis = normalize(e.velocity.xyz);
+  vec3 axis = normalize(e.velocity);
   uint seed = uint(index) * 9781U + 12345U;
-  float along = random01(seed + 1U) * length(e.velocity.xyz) * u.gravity_dt.w;
+  float along = random01(seed + 1U) * length(e.velocity) * u.dt;
 #if DIM == 3
   vec3 side = normalize(abs(axis.y) < 0.9 ? cross(axis, vec3(0, 1, 0)) : cross(axis, vec3(1, 0, 0)));
   vec3 up = cross(axis, side);
-  float radius = e.position_radius.w * sqrt(random01(seed + 2U));
+  float radius = e.radius * sqrt(random01(seed + 2U));
   float angle = 6.2831853 * random01(seed + 3U);
   vec3 offset = radius * (cos(angle) * side + sin(angle) * up);
 #else
   vec3 side = vec3(-axis.y, axis.x, 0.0);
-  vec3 offset = side * e.position_radius.w * (2.0 * random01(seed + 2U) - 1.0);
+  vec3 offset = side * e.radius * (2.0 * random01(seed + 2U) - 1.0);
 #endif
-  out_position = vec4(clamp_to_domain(e.position_radius.xyz + offset + axis * along), 1.0);
-  out_velocity = vec4(e.velocity.xyz, 0.0);
+  out_position = vec4(clamp_to_domain(e.position + offset + axis * along), 1.0);
+  out_velocity = vec4(e.velocity, 0.0);
 }
 
 void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy);
-  int index = texel.y * u.counts.x + texel.x;
-  if (index >= u.counts.z) {  // inactive texel
+  int index = texel.y * u.particle_texture_width + texel.x;
+  if (index >= u.active_after) {  // inactive texel
     out_position = vec4(0.0);
     out_velocity = vec4(0.0);
     return;
   }
-  if (HAS_EMITTERS && index >= u.counts.y) {  // emitted this step
-    for (int i = 0; i < u.counts2.z; ++i)
-      if (index >= u.emitters[i].range.x && index < u.emitters[i].range.y) {
+  if (HAS_EMITTERS && index >= u.active_before) {  // emitted this step
+    for (int i = 0; i < u.emission_count; ++i)
+      if (index >= u.emitters[i].first && index < u.emitters[i].end) {
         emit(index, u.emitters[i]);
         return;
       }
@@ -112,8 +112,8 @@ void main() {
     return;
   }
 
-  float dt = u.gravity_dt.w;
-  float pic = u.kernel.y;
+  float dt = u.dt;
+  float pic = u.pic_ratio;
   vec3 x = texelFetch(u_positions, texel, 0).xyz;
   vec3 v = texelFetch(u_velocities, texel, 0).xyz;
 
@@ -135,12 +135,12 @@ void main() {
       if (d >= skin) continue;
       vec3 normal = obstacle_normal(i, x_new);
       x_new = clamp_to_domain(x_new + (skin - d) * normal);
-      float into = dot(v - u.obstacles[i].velocity.xyz, normal);
+      float into = dot(v - u.obstacles[i].velocity, normal);
       if (into < 0.0) v -= into * normal;
     }
 
   // Walls: no velocity into a wall the particle was clamped against.
-  vec3 lo = vec3(u.kernel.z), hi = u.domain_h.xyz - u.kernel.z;
+  vec3 lo = vec3(u.wall_margin), hi = u.domain - u.wall_margin;
   for (int a = 0; a < DIM; ++a) {
     if (x_new[a] <= lo[a] && v[a] < 0.0) v[a] = 0.0;
     if (x_new[a] >= hi[a] && v[a] > 0.0) v[a] = 0.0;

@@ -10,7 +10,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "liquid/common.glsl"
 
-layout(set = 0, binding = 1) uniform GRID_SAMPLER u_splat;
+layout(set = 0, binding = LIQUID_BINDING_GRID_SPLAT) uniform GRID_SAMPLER u_splat;
 
 layout(location = 0) in vec2 v_uv;
 #if DIM == 3
@@ -22,11 +22,11 @@ layout(location = 1) out float out_density;
 const float k_fluid_epsilon = 1e-6;
 
 // Fraction of the kernel's mass beyond a wall k + 0.5 cells from a cell centre (k >= 0), from the
-// table the CPU fills once per step (liquid/uniforms.cpp; r is at most 8 cells). Selected with
+// table the CPU fills once per step (liquid/uniforms.cpp; r is at most LIQUID_MAX_KERNEL_RADIUS_CELLS). Selected with
 // comparisons, not an indexed read: an index that differs between fragments is a gather on lavapipe.
 float kernel_mass_beyond(int k) {
   float beyond = 0.0;
-  [[unroll]] for (int i = 0; i < 8; ++i)
+  [[unroll]] for (int i = 0; i < LIQUID_WALL_TABLE_SIZE; ++i)
     beyond = k == i ? u.wall_kernel_beyond[i / 4][i % 4] : beyond;
   return beyond;
 }
@@ -45,18 +45,18 @@ float axis_coverage(int i, int n) {
 // and no push, so the surface stays sharp instead of boiling off. Shallow water uses the printed
 // form (with gamma = 1 it is the SWE's P = g (h + b)).
 float pressure_from_density(float rho) {
-  float ratio_pow = density_ratio_power(max(rho / u.pressure.z, 0.0));
-  return shallow_water() ? u.pressure.x * ratio_pow : u.pressure.x * max(ratio_pow - 1.0, 0.0);
+  float ratio_pow = density_ratio_power(max(rho / u.rest_density, 0.0));
+  return shallow_water() ? u.stiffness * ratio_pow : u.stiffness * max(ratio_pow - 1.0, 0.0);
 }
 
 // Pressure at neighbour cell c (clamped into the grid, which makes the difference one-sided at the
 // walls) whose kernel share inside the domain is `coverage`: liquid plus obstacle or ground density.
 float pressure_at(ivec3 c, float coverage) {
   c = clamp(c, ivec3(0), grid_cells() - 1);
-  float rho = u.pressure.w * fetch_grid(u_splat, c).a / coverage;
+  float rho = u.density_scale * fetch_grid(u_splat, c).a / coverage;
   vec3 p = cell_center(c);
   rho += obstacle_density(p);
-  if (shallow_water()) rho += u.pressure.z * ground_height(p.xy) / u.shallow.x;
+  if (shallow_water()) rho += u.rest_density * ground_height(p.xy) / u.rest_depth;
   return pressure_from_density(rho);
 }
 
@@ -67,7 +67,7 @@ void main() {
 #endif
   ivec3 n = grid_cells();
   float h = cell_size();
-  float dt = u.gravity_dt.w;
+  float dt = u.dt;
   vec4 splat = fetch_grid(u_splat, c);
   bool fluid = splat.a > k_fluid_epsilon;
   vec3 velocity = fluid ? splat.rgb / splat.a : vec3(0.0);
@@ -95,7 +95,7 @@ void main() {
   grad_p /= 2.0 * h;
 
   vec3 p = cell_center(c);
-  vec3 acceleration = -grad_p + u.gravity_dt.xyz + external_acceleration(p);
+  vec3 acceleration = -grad_p + u.gravity + external_acceleration(p);
   velocity += dt * acceleration;
 
   // Obstacles: inside, the liquid moves with the obstacle; near the surface, no relative
@@ -103,7 +103,7 @@ void main() {
   [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
     float d = obstacle_distance(i, p);
     if (d > h) continue;
-    vec3 v_obstacle = u.obstacles[i].velocity.xyz;
+    vec3 v_obstacle = u.obstacles[i].velocity;
     if (d < 0.0) {
       velocity = v_obstacle;
     } else {
@@ -124,5 +124,5 @@ void main() {
 #endif
 
   out_velocity = vec4(velocity, fluid ? 1.0 : 0.0);
-  out_density = u.pressure.w * splat.a / u.pressure.z;
+  out_density = u.density_scale * splat.a / u.rest_density;
 }

@@ -2,7 +2,9 @@
 // 2D view, particles on top of the liquid: one point per active particle, its position fetched
 // from the particle texture by gl_VertexIndex (no vertex buffer) and mapped into the same fitted
 // domain rectangle as view2d.frag.
-layout(set = 0, binding = 0) uniform sampler2D u_positions;  // RGBA32F, xyz m, nearest
+#extension GL_GOOGLE_include_directive : require
+#include "liquid/shared.h"
+layout(set = 0, binding = LIQUID_BINDING_PARTICLES2D_POSITIONS) uniform sampler2D u_positions;  // RGBA32F, xyz m, nearest
 
 layout(push_constant) uniform Particles2dPush {
   vec2 origin;             // framebuffer pixel of the domain's (0, 0) corner (its bottom left)

@@ -10,7 +10,7 @@
 #define DIM 3
 #include "liquid/common.glsl"
 
-layout(set = 0, binding = 1) uniform RenderUniforms {
+layout(set = 0, binding = LIQUID_BINDING_VIEW_UNIFORMS) uniform RenderUniforms {
   mat4 inverse_view_projection;
   mat4 view_projection;
   vec4 camera_position;  // xyz
@@ -18,8 +18,8 @@ layout(set = 0, binding = 1) uniform RenderUniforms {
   vec4 params;           // x iso level, y fine step (cells), z brick size (cells), w bisection steps
   ivec4 bricks;          // xyz occupancy volume size
 } r;
-layout(set = 0, binding = 2) uniform sampler3D u_density;    // rho / rho0, linear filtering
-layout(set = 0, binding = 3) uniform sampler3D u_occupancy;  // per-brick max, nearest
+layout(set = 0, binding = LIQUID_BINDING_RAYMARCH_DENSITY) uniform sampler3D u_density;    // rho / rho0, linear filtering
+layout(set = 0, binding = LIQUID_BINDING_RAYMARCH_OCCUPANCY) uniform sampler3D u_occupancy;  // per-brick max, nearest
 
 layout(location = 0) in vec2 v_uv;
 layout(location = 0) out vec4 out_color;
@@ -27,7 +27,7 @@ layout(location = 0) out vec4 out_color;
 const float k_no_hit = 1e30;
 const vec3 k_absorption = vec3(6.0, 1.6, 0.9);  // 1/m: red is absorbed first, so depth reads blue-green
 
-float density_at(vec3 p) { return textureLod(u_density, p / u.domain_h.xyz, 0.0).r; }
+float density_at(vec3 p) { return textureLod(u_density, p / u.domain, 0.0).r; }
 
 vec2 intersect_box(vec3 origin, vec3 inv_dir, vec3 lo, vec3 hi) {
   vec3 t0 = (lo - origin) * inv_dir, t1 = (hi - origin) * inv_dir;
@@ -47,9 +47,9 @@ vec3 floor_color(vec3 p) {
   vec2 tile = floor(p.xz / 0.1);
   float checker = mod(tile.x + tile.y, 2.0);
   vec3 color = mix(vec3(0.55, 0.53, 0.50), vec3(0.68, 0.66, 0.62), checker);
-  bool inside = all(greaterThanEqual(p.xz, vec2(0.0))) && all(lessThanEqual(p.xz, u.domain_h.xz));
+  bool inside = all(greaterThanEqual(p.xz, vec2(0.0))) && all(lessThanEqual(p.xz, u.domain.xz));
   if (inside) color *= vec3(0.82, 0.86, 0.9);
-  float fade = exp(-0.15 * length(p.xz - 0.5 * u.domain_h.xz));
+  float fade = exp(-0.15 * length(p.xz - 0.5 * u.domain.xz));
   return mix(vec3(0.7, 0.72, 0.75), color, fade) * (0.55 + 0.45 * max(r.sun_direction.y, 0.0));
 }
 
@@ -60,22 +60,22 @@ float trace_obstacles(vec3 origin, vec3 dir, out int hit_index) {
   [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
     Obstacle o = u.obstacles[i];
     int kind = obstacle_kind(i);
-    vec3 c = o.center_kind.xyz;
+    vec3 c = o.center;
     float t = k_no_hit;
-    if (kind == OBSTACLE_SPHERE) {
+    if (kind == LIQUID_OBSTACLE_SPHERE) {
       vec3 oc = origin - c;
-      float b = dot(oc, dir), q = dot(oc, oc) - o.size.x * o.size.x, disc = b * b - q;
+      float b = dot(oc, dir), q = dot(oc, oc) - o.sphere_radius * o.sphere_radius, disc = b * b - q;
       if (disc >= 0.0) {
         float s = -b - sqrt(disc);
         if (s > 0.0) t = s;
       }
-    } else if (kind == OBSTACLE_BOX) {
-      vec2 span = intersect_box(origin, 1.0 / dir, c - o.size.xyz, c + o.size.xyz);
+    } else if (kind == LIQUID_OBSTACLE_BOX) {
+      vec2 span = intersect_box(origin, 1.0 / dir, c - o.box_half_extent, c + o.box_half_extent);
       if (span.x <= span.y && span.x > 0.0) t = span.x;
     } else {
       float reach = 0.0;
-      for (int b = 0; b < int(o.size.z); ++b) {
-        vec4 ball = u.balls[int(o.size.y) + b];
+      for (int b = 0; b < o.ball_count; ++b) {
+        vec4 ball = u.balls[o.first_ball + b];
         reach = max(reach, length(ball.xyz) + ball.w);
       }
       vec3 oc = origin - c;
@@ -197,7 +197,7 @@ vec3 density_normal(vec3 p) {
 // The tank's frame: the 12 edges of the domain box as thin bars (radius in metres), so the walls
 // the liquid rests against are visible. Returns the nearest hit distance along the ray, or k_no_hit.
 float trace_tank_frame(vec3 origin, vec3 dir, float radius) {
-  vec3 d = u.domain_h.xyz;
+  vec3 d = u.domain;
   float best = k_no_hit;
   for (int axis = 0; axis < 3; ++axis) {
     for (int corner = 0; corner < 4; ++corner) {
@@ -234,7 +234,7 @@ void main() {
   vec3 origin = r.camera_position.xyz;
   vec3 dir = normalize(far_point.xyz / far_point.w - origin);
 
-  vec2 span = intersect_box(origin, 1.0 / dir, vec3(0.0), u.domain_h.xyz);
+  vec2 span = intersect_box(origin, 1.0 / dir, vec3(0.0), u.domain);
   float t_liquid = k_no_hit;
   if (span.x <= span.y && span.y > 0.0) {
     // Do not march past an obstacle in front of the liquid.
@@ -258,7 +258,7 @@ void main() {
     vec3 q = p;
     for (int k = 0; k < 16; ++k) {
       q += refracted_dir * step_length;
-      if (any(lessThan(q, vec3(0.0))) || any(greaterThan(q, u.domain_h.xyz))) break;
+      if (any(lessThan(q, vec3(0.0))) || any(greaterThan(q, u.domain))) break;
       if (density_at(q) > r.params.x) thickness += step_length;
     }
     float behind_t;
@@ -272,7 +272,7 @@ void main() {
   }
 
   // The tank frame, in front of whatever else this pixel shows.
-  float frame_radius = 0.004 * max(max(u.domain_h.x, u.domain_h.y), u.domain_h.z);
+  float frame_radius = 0.004 * max(max(u.domain.x, u.domain.y), u.domain.z);
   float t_frame = trace_tank_frame(origin, dir, frame_radius);
   if (t_frame < depth_t) {
     color = vec3(0.16, 0.17, 0.19) * (0.6 + 0.4 * max(r.sun_direction.y, 0.0));

@@ -1,8 +1,10 @@
 #version 450
+#extension GL_GOOGLE_include_directive : require
+#include "liquid/shared.h"
 // Shallow-water view (section 6, figure 4), fragment stage: a lit sandy ground (darker where wet)
 // and a semi-transparent water surface with a Fresnel reflection of the sky and a sun highlight,
 // hidden where the water is thinner than the dry threshold.
-layout(set = 0, binding = 1) uniform HeightFieldUniforms {
+layout(set = 0, binding = LIQUID_BINDING_VIEW_UNIFORMS) uniform HeightFieldUniforms {
   mat4 view_projection;
   vec4 camera_position;  // xyz, world
   vec4 sun_direction;    // xyz towards the sun

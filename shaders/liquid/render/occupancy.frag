@@ -2,11 +2,13 @@
 // Empty-space skipping for the raymarch: each texel of this coarse volume holds the largest
 // rho / rho0 of one BRICK^3 block of the density grid, plus a one-cell border (trilinear lookups
 // at a block's edge read the neighbours). Rendered as a layered full-screen pass.
+#extension GL_GOOGLE_include_directive : require
+#include "liquid/shared.h"
 layout(location = 0) in vec2 v_uv;
 layout(location = 1) flat in int v_layer;
 layout(location = 0) out float out_max_density;
 
-layout(set = 0, binding = 0) uniform sampler3D u_density;
+layout(set = 0, binding = LIQUID_BINDING_OCCUPANCY_DENSITY) uniform sampler3D u_density;
 layout(push_constant) uniform Push {
   ivec4 brick;  // x brick size in cells
 } pc;

@@ -8,13 +8,13 @@
 #extension GL_GOOGLE_include_directive : require
 #include "liquid/common.glsl"
 
-layout(set = 0, binding = 1) uniform HeightFieldUniforms {
+layout(set = 0, binding = LIQUID_BINDING_VIEW_UNIFORMS) uniform HeightFieldUniforms {
   mat4 view_projection;
   vec4 camera_position;  // xyz, world
   vec4 sun_direction;    // xyz towards the sun
   vec4 params;           // x rest depth (m), y dry threshold (m), z vertical scale, w skirt base (m)
 } r;
-layout(set = 0, binding = 2) uniform sampler2D u_density;  // rho / rho0, linear filtering
+layout(set = 0, binding = LIQUID_BINDING_HEIGHT_FIELD_DENSITY) uniform sampler2D u_density;  // rho / rho0, linear filtering
 
 layout(push_constant) uniform HeightFieldPush {
   int layer;  // 0 ground, 1 water
@@ -46,7 +46,7 @@ void main() {
   // Vertex g in [0, n + 1]^2: g - 1 is the cell, 0 and n + 1 are the edge ring.
   ivec2 g = ivec2(gl_VertexIndex % (n.x + 2), gl_VertexIndex / (n.x + 2));
   ivec2 c = clamp(g - 1, ivec2(0), n - 1);
-  vec2 xy = clamp((vec2(g) - 0.5) * h, vec2(0.0), u.domain_h.xy);
+  vec2 xy = clamp((vec2(g) - 0.5) * h, vec2(0.0), u.domain.xy);
   bool edge = any(equal(g, ivec2(0))) || any(equal(g, n + 1));
 
   v_depth = water_depth(c);

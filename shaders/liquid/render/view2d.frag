@@ -7,7 +7,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "liquid/common.glsl"
 
-layout(set = 0, binding = 1) uniform sampler2D u_density;  // rho / rho0, linear filtering
+layout(set = 0, binding = LIQUID_BINDING_VIEW2D_DENSITY) uniform sampler2D u_density;  // rho / rho0, linear filtering
 
 layout(push_constant) uniform View2dPush {
   vec2 origin;             // framebuffer pixel of the domain's (0, 0) corner (its bottom left)
@@ -30,7 +30,7 @@ const vec3 k_obstacle = vec3(0.50, 0.50, 0.52);
 const vec3 k_obstacle_outline = vec3(0.30, 0.30, 0.32);
 const vec3 k_wall = vec3(0.62, 0.66, 0.72);
 
-float density_at(vec2 p) { return textureLod(u_density, p / u.domain_h.xy, 0.0).r; }
+float density_at(vec2 p) { return textureLod(u_density, p / u.domain.xy, 0.0).r; }
 
 // Coverage of the region {d < 0} for a field d measured in pixels: a one-pixel linear ramp.
 float coverage(float d_pixels) { return clamp(0.5 - d_pixels, 0.0, 1.0); }
@@ -38,7 +38,7 @@ float coverage(float d_pixels) { return clamp(0.5 - d_pixels, 0.0, 1.0); }
 // Signed distance (pixels, y up) to the tank: left, right and bottom walls of thickness
 // wall_pixels just outside the domain, open at the top.
 float tank_distance(vec2 q) {
-  vec2 size = u.domain_h.xy * pc.pixels_per_metre;
+  vec2 size = u.domain.xy * pc.pixels_per_metre;
   float t = pc.wall_pixels;
   float left = sd_box(vec3(q - vec2(-0.5 * t, 0.5 * (size.y - t)), 0.0), vec3(0.5 * t, 0.5 * (size.y + t), 1.0));
   float right = sd_box(vec3(q - vec2(size.x + 0.5 * t, 0.5 * (size.y - t)), 0.0), vec3(0.5 * t, 0.5 * (size.y + t), 1.0));
@@ -50,7 +50,7 @@ float tank_distance(vec2 q) {
 // which makes common.glsl's 3D box distance 0 everywhere inside; the 2D box distance avoids that.
 float obstacle_distance_2d(int i, vec2 p) {
   Obstacle o = u.obstacles[i];
-  if (obstacle_kind(i) == OBSTACLE_BOX) return sd_box(vec3(p - o.center_kind.xy, 0.0), vec3(o.size.xy, 1.0));
+  if (obstacle_kind(i) == LIQUID_OBSTACLE_BOX) return sd_box(vec3(p - o.center.xy, 0.0), vec3(o.box_half_extent.xy, 1.0));
   return obstacle_distance(i, vec3(p, 0.0));
 }
 
@@ -58,7 +58,7 @@ void main() {
   // Domain coordinates: q in pixels from the domain's bottom-left corner (y up), p in metres.
   vec2 q = vec2(gl_FragCoord.x - pc.origin.x, pc.origin.y - gl_FragCoord.y);
   vec2 p = q / pc.pixels_per_metre;
-  vec2 domain = u.domain_h.xy;
+  vec2 domain = u.domain.xy;
   float h = cell_size();
 
   // Everything below that uses derivatives runs in uniform control flow.

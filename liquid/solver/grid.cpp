@@ -1,0 +1,56 @@
+#include "liquid/solver/grid.h"
+
+#include "engine/passes/bindings.h"
+#include "engine/passes/fullscreen.h"
+#include "liquid_shaders.h"
+#include "liquid/state.h"
+#include "liquid/uniforms.h"
+
+namespace liquid {
+
+using engine::graph::Access;
+using engine::graph::PassBuilder;
+using engine::graph::PassContext;
+using engine::vk::DescriptorKind;
+
+GridPass::GridPass(engine::vk::Context& context, const SimulationSetup& setup,
+                   const std::vector<int32_t>& specialization)
+    : pipeline_(context,
+                engine::vk::GraphicsPipelineDesc{
+                    .name = "liquid.grid",
+                    // 3D: every slice is a layer of the target, routed by the layered full-screen pair.
+                    .vertex = setup.dimension == 3 ? engine::passes::fullscreen_layered_vertex_shader()
+                                                   : engine::passes::fullscreen_vertex_shader(),
+                    .geometry = setup.dimension == 3 ? engine::passes::fullscreen_layered_geometry_shader()
+                                                     : std::span<const uint32_t>{},
+                    .fragment = setup.dimension == 3 ? liquid_shaders::grid_frag_3d : liquid_shaders::grid_frag_2d,
+                    .color_formats = {k_grid_velocity_format, k_density_format},
+                    .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
+                                 {LIQUID_BINDING_GRID_SPLAT, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
+                    .specialization = specialization}),
+      nearest_(context, VK_FILTER_NEAREST) {}
+
+GridImages GridPass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
+                            ImageHandle splat, const GridImages& grids) const {
+  struct Data {
+    engine::passes::PassBindings bindings;
+    GridImages out;
+  };
+  return graph
+      .add_pass<Data>(
+          "liquid.grid",
+          [&](PassBuilder& b, Data& d) {
+            d.bindings = engine::passes::PassBindings(pipeline_);
+            d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
+            d.bindings.bind_image(b, LIQUID_BINDING_GRID_SPLAT, splat, nearest_.handle());
+            d.out.velocity = b.write(grids.velocity, Access::ColorAttachmentWrite);
+            d.out.density = b.write(grids.density, Access::ColorAttachmentWrite);
+          },
+          [](PassContext& ctx, const Data& d) {
+            d.bindings.bind_and_push(ctx);
+            engine::passes::draw_fullscreen(ctx.cmd, ctx.layers);
+          })
+      .out;
+}
+
+}  // namespace liquid

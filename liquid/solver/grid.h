@@ -1,0 +1,31 @@
+// Section 4, the grid pass: one full-screen pass over the grid (one layer per slice in 3D) that
+// turns the splat into density and pressure, takes the pressure's finite-difference gradient, adds
+// gravity, external forces and the obstacles' pressure, and enforces the walls.
+// Shader: shaders/liquid/solver/grid.frag.
+#pragma once
+
+#include "engine/vk/pipeline.h"
+#include "engine/vk/sampler.h"
+#include "engine/vk/uniform_arena.h"
+#include "liquid/setup.h"
+#include "liquid/solver/images.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace liquid {
+
+class GridPass {
+ public:
+  GridPass(engine::vk::Context& context, const SimulationSetup& setup, const std::vector<int32_t>& specialization);
+
+  // Reads `splat`, writes the updated velocity (u', fluid flag) and rho / rho0 into `grids`.
+  GridImages add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle splat,
+                    const GridImages& grids) const;
+
+ private:
+  engine::vk::GraphicsPipeline pipeline_;
+  engine::vk::Sampler nearest_;
+};
+
+}  // namespace liquid

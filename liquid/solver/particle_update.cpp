@@ -1,0 +1,66 @@
+#include "liquid/solver/particle_update.h"
+
+#include "engine/passes/bindings.h"
+#include "engine/passes/fullscreen.h"
+#include "liquid_shaders.h"
+#include "liquid/state.h"
+#include "liquid/uniforms.h"
+
+namespace liquid {
+
+using engine::graph::Access;
+using engine::graph::PassBuilder;
+using engine::graph::PassContext;
+using engine::vk::DescriptorKind;
+
+ParticleUpdatePass::ParticleUpdatePass(engine::vk::Context& context, const SimulationSetup& setup,
+                                       const std::vector<int32_t>& specialization)
+    : pipeline_(context,
+                engine::vk::GraphicsPipelineDesc{
+                    .name = "liquid.particle",
+                    .vertex = engine::passes::fullscreen_vertex_shader(),
+                    .fragment = setup.dimension == 3 ? liquid_shaders::particle_frag_3d : liquid_shaders::particle_frag_2d,
+                    .color_formats = {k_particle_format, k_particle_format},
+                    .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
+                                 {LIQUID_BINDING_PARTICLE_POSITIONS, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
+                                 {LIQUID_BINDING_PARTICLE_VELOCITIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
+                                 {LIQUID_BINDING_PARTICLE_SPLAT, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
+                                 {LIQUID_BINDING_PARTICLE_GRID_VELOCITY, DescriptorKind::SampledImage,
+                                  VK_SHADER_STAGE_FRAGMENT_BIT}},
+                    .specialization = specialization}),
+      nearest_(context, VK_FILTER_NEAREST) {}
+
+ParticleImages ParticleUpdatePass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
+                                          const ParticleImages& current, ImageHandle splat, const GridImages& grids,
+                                          const ParticleImages& next, int active_after) const {
+  struct Data {
+    engine::passes::PassBindings bindings;
+    ParticleImages out;
+  };
+  return graph
+      .add_pass<Data>(
+          "liquid.particle",
+          [&](PassBuilder& b, Data& d) {
+            const VkSampler s = nearest_.handle();
+            d.bindings = engine::passes::PassBindings(pipeline_);
+            d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
+            d.bindings.bind_image(b, LIQUID_BINDING_PARTICLE_POSITIONS, current.positions, s);
+            d.bindings.bind_image(b, LIQUID_BINDING_PARTICLE_VELOCITIES, current.velocities, s);
+            d.bindings.bind_image(b, LIQUID_BINDING_PARTICLE_SPLAT, splat, s);
+            d.bindings.bind_image(b, LIQUID_BINDING_PARTICLE_GRID_VELOCITY, grids.velocity, s);
+            d.out.positions = b.write(next.positions, Access::ColorAttachmentWrite);
+            d.out.velocities = b.write(next.velocities, Access::ColorAttachmentWrite);
+          },
+          [active_after](PassContext& ctx, const Data& d) {
+            if (active_after == 0) return;
+            d.bindings.bind_and_push(ctx);
+            // Only the rows that hold active (or newly emitted) particles are shaded.
+            const uint32_t rows = (uint32_t(active_after) + ctx.width - 1) / ctx.width;
+            const VkRect2D scissor{{0, 0}, {ctx.width, rows}};
+            vkCmdSetScissor(ctx.cmd, 0, 1, &scissor);
+            engine::passes::draw_fullscreen(ctx.cmd);
+          })
+      .out;
+}
+
+}  // namespace liquid

@@ -1,0 +1,34 @@
+// Section 5, the particle update: one fragment per particle texel writes the new position and
+// velocity (two render targets): velocity by the PIC/FLIP blend of the grid's u and u', position
+// by RK2 through u'; texels in an emitter's range are spawned at its nozzle.
+// Shader: shaders/liquid/solver/particle.frag.
+#pragma once
+
+#include "engine/vk/pipeline.h"
+#include "engine/vk/sampler.h"
+#include "engine/vk/uniform_arena.h"
+#include "liquid/setup.h"
+#include "liquid/solver/images.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace liquid {
+
+class ParticleUpdatePass {
+ public:
+  ParticleUpdatePass(engine::vk::Context& context, const SimulationSetup& setup,
+                     const std::vector<int32_t>& specialization);
+
+  // From `current` into `next` (the other texture of the ping-pong pair), for the rows holding
+  // `active_after` particles.
+  ParticleImages add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
+                        const ParticleImages& current, ImageHandle splat, const GridImages& grids,
+                        const ParticleImages& next, int active_after) const;
+
+ private:
+  engine::vk::GraphicsPipeline pipeline_;
+  engine::vk::Sampler nearest_;
+};
+
+}  // namespace liquid

@@ -1,0 +1,68 @@
+#include "liquid/solver/splat.h"
+
+#include "engine/passes/bindings.h"
+#include "liquid_shaders.h"
+#include "liquid/uniforms.h"
+
+#include <cmath>
+
+namespace liquid {
+
+using engine::graph::Access;
+using engine::graph::PassBuilder;
+using engine::graph::PassContext;
+using engine::vk::DescriptorKind;
+
+namespace {
+
+// In 3D each particle is drawn once per slice it may touch: the slice centres within r of it are
+// at most ceil(2 r) consecutive layers (splat.vert). Every instance costs vertex shading, binning
+// and point setup even when it is dropped, so no spare one is drawn.
+uint32_t instances_per_particle(const SimulationSetup& setup) {
+  return setup.dimension == 3 ? uint32_t(std::ceil(2.0f * setup.kernel_radius_cells)) : 1u;
+}
+
+}  // namespace
+
+SplatPass::SplatPass(engine::vk::Context& context, const SimulationSetup& setup, VkFormat splat_format,
+                     const std::vector<int32_t>& specialization)
+    : pipeline_(context,
+                engine::vk::GraphicsPipelineDesc{
+                    .name = "liquid.splat",
+                    .vertex = setup.dimension == 3 ? liquid_shaders::splat_vert_3d : liquid_shaders::splat_vert_2d,
+                    .fragment = liquid_shaders::splat_frag,
+                    .topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST,
+                    .color_formats = {splat_format},
+                    .blend = {engine::vk::BlendMode::Additive},
+                    .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
+                                 {LIQUID_BINDING_SPLAT_POSITIONS, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT},
+                                 {LIQUID_BINDING_SPLAT_VELOCITIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
+                    .specialization = specialization}),
+      nearest_(context, VK_FILTER_NEAREST),
+      instances_(instances_per_particle(setup)) {}
+
+ImageHandle SplatPass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
+                              const ParticleImages& particles, ImageHandle splat, int active_particles) const {
+  struct Data {
+    engine::passes::PassBindings bindings;
+    ImageHandle splat;
+  };
+  return graph
+      .add_pass<Data>(
+          "liquid.splat",
+          [&](PassBuilder& b, Data& d) {
+            d.bindings = engine::passes::PassBindings(pipeline_);
+            d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
+            d.bindings.bind_image(b, LIQUID_BINDING_SPLAT_POSITIONS, particles.positions, nearest_.handle());
+            d.bindings.bind_image(b, LIQUID_BINDING_SPLAT_VELOCITIES, particles.velocities, nearest_.handle());
+            d.splat = b.write(splat, Access::ColorAttachmentBlend, engine::graph::clear_to(0, 0, 0, 0));
+          },
+          [this, active_particles](PassContext& ctx, const Data& d) {
+            if (active_particles == 0) return;
+            d.bindings.bind_and_push(ctx);
+            vkCmdDraw(ctx.cmd, uint32_t(active_particles), instances_, 0, 0);
+          })
+      .splat;
+}
+
+}  // namespace liquid

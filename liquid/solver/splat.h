@@ -1,0 +1,32 @@
+// Section 3, the splat: every active particle drawn once as a point (once per slice it reaches in
+// 3D) and its kernel w = (1 - d^2/r^2)^3 accumulated by additive blending into the splat grid:
+// rgb = sum w u, a = sum w. Shaders: shaders/liquid/solver/splat.vert, splat.frag.
+#pragma once
+
+#include "engine/vk/pipeline.h"
+#include "engine/vk/sampler.h"
+#include "engine/vk/uniform_arena.h"
+#include "liquid/setup.h"
+#include "liquid/solver/images.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace liquid {
+
+class SplatPass {
+ public:
+  SplatPass(engine::vk::Context& context, const SimulationSetup& setup, VkFormat splat_format,
+            const std::vector<int32_t>& specialization);
+
+  // Clears `splat` and accumulates the first `active_particles` particles into it.
+  ImageHandle add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
+                     const ParticleImages& particles, ImageHandle splat, int active_particles) const;
+
+ private:
+  engine::vk::GraphicsPipeline pipeline_;
+  engine::vk::Sampler nearest_;
+  uint32_t instances_;  // draws per particle: 1 in 2D, one per slice the kernel can reach in 3D
+};
+
+}  // namespace liquid

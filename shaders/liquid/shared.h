@@ -1,0 +1,122 @@
+// The one source of every number and layout the liquid's C++ and GLSL share: limits, obstacle-kind
+// codes, descriptor binding numbers and the solver's per-step uniform block. Included by
+// liquid/gpu_types.h (C++, std140 checked by static_asserts there and by a SPIR-V reflection test)
+// and by shaders/liquid/common.glsl.
+#ifndef LIQUID_SHARED_H
+#define LIQUID_SHARED_H
+
+// ---- Limits -------------------------------------------------------------------------------------
+#define LIQUID_MAX_OBSTACLES 8
+#define LIQUID_MAX_BALLS 32           // metaballs over all obstacles
+#define LIQUID_MAX_GROUND_HILLS 16    // shallow water
+#define LIQUID_MAX_BRUSHES 4          // external force brushes per step
+#define LIQUID_MAX_EMITTERS 4
+// Splat radius r in cells: the scene check's upper bound, and the size of the wall-kernel table
+// (one entry per whole cell a wall can be from a cell centre while the kernel still reaches it).
+#define LIQUID_MAX_KERNEL_RADIUS_CELLS 8
+#define LIQUID_WALL_TABLE_SIZE LIQUID_MAX_KERNEL_RADIUS_CELLS
+
+// ---- Obstacle kinds (the OBSTACLE_KIND_i specialization constants) ------------------------------
+#define LIQUID_OBSTACLE_SPHERE 0
+#define LIQUID_OBSTACLE_BOX 1
+#define LIQUID_OBSTACLE_METABALLS 2
+
+// ---- Descriptor bindings (set 0, push descriptors) ----------------------------------------------
+// Every pipeline that includes common.glsl has the solver's uniform block at binding 0.
+#define LIQUID_BINDING_SOLVER_UNIFORMS 0
+// Splat: the particle textures, read by the vertex stage.
+#define LIQUID_BINDING_SPLAT_POSITIONS 1
+#define LIQUID_BINDING_SPLAT_VELOCITIES 2
+// Grid pass: the splatted grid.
+#define LIQUID_BINDING_GRID_SPLAT 1
+// Particle update: the particles, the splatted grid (u for FLIP) and the grid pass's u'.
+#define LIQUID_BINDING_PARTICLE_POSITIONS 1
+#define LIQUID_BINDING_PARTICLE_VELOCITIES 2
+#define LIQUID_BINDING_PARTICLE_SPLAT 3
+#define LIQUID_BINDING_PARTICLE_GRID_VELOCITY 4
+// Views.
+#define LIQUID_BINDING_VIEW_UNIFORMS 1      // raymarch, height field: the view's own block
+#define LIQUID_BINDING_VIEW2D_DENSITY 1
+#define LIQUID_BINDING_HEIGHT_FIELD_DENSITY 2
+#define LIQUID_BINDING_RAYMARCH_DENSITY 2
+#define LIQUID_BINDING_RAYMARCH_OCCUPANCY 3
+#define LIQUID_BINDING_OCCUPANCY_DENSITY 0
+#define LIQUID_BINDING_PARTICLES2D_POSITIONS 0
+
+// ---- The solver's per-step uniform block (std140) ------------------------------------------------
+// Written once for both languages: in C++ the types are glm's and every struct is 16-byte aligned,
+// which is what std140 does with structs; LIQUID_ALIGN16 marks the members std140 moves to a
+// 16-byte boundary after a lone scalar. Fields are grouped in fours so no vec3 straddles a boundary.
+#ifdef __cplusplus
+#include <glm/glm.hpp>
+namespace liquid::gpu {
+using glm::ivec3;
+using glm::vec3;
+using glm::vec4;
+#define LIQUID_STRUCT(name) struct alignas(16) name
+#define LIQUID_ALIGN16 alignas(16)
+#else
+#define LIQUID_STRUCT(name) struct name
+#define LIQUID_ALIGN16
+#endif
+
+LIQUID_STRUCT(Obstacle) {
+  vec3 center;              // m, at the end of the step
+  float sphere_radius;      // m
+  vec3 box_half_extent;     // m
+  float metaball_threshold; // surface where sum (1 - d^2/R^2)^2 reaches it
+  vec3 velocity;            // m/s
+  int first_ball;           // metaballs: first entry in balls[]
+  int ball_count;
+};
+
+LIQUID_STRUCT(Brush) {     // f_ext (eq. 2): acceleration falling smoothly to zero at the radius
+  vec3 position;           // m
+  float radius;            // m
+  vec3 acceleration;       // m/s^2 at the centre
+};
+
+LIQUID_STRUCT(EmitterRange) {
+  vec3 position;           // nozzle centre, m
+  float radius;            // nozzle radius, m
+  vec3 velocity;           // m/s
+  int first;               // first particle index emitted this step
+  int end;                 // one past the last
+};
+
+LIQUID_STRUCT(SolverUniforms) {
+  vec3 domain;             // m
+  float cell_size;         // h, m
+  ivec3 grid_cells;
+  int particle_texture_width;
+  vec3 gravity;            // m/s^2
+  float dt;                // s
+  float stiffness;         // k, m^2/s^2
+  float gamma;
+  float rest_density;      // rho0, kg/m^3
+  float density_scale;     // kg/m^3 per unit of summed kernel weight
+  float kernel_radius;     // r, cells
+  float pic_ratio;         // r of section 5.1's PIC/FLIP blend
+  float wall_margin;       // m, particles are kept this far from every wall
+  float obstacle_band;     // m, the artificial obstacle density falls to zero this far out
+  int active_before;       // particles alive at the start of the step
+  int active_after;        // after this step's emission
+  int brush_count;
+  int emission_count;      // emitters adding particles this step
+  float rest_depth;        // shallow water: depth at rest, m
+  // Fraction of the kernel's mass beyond a wall k + 0.5 cells from a cell centre: [k / 4][k % 4].
+  LIQUID_ALIGN16 vec4 wall_kernel_beyond[LIQUID_WALL_TABLE_SIZE / 4];
+  Obstacle obstacles[LIQUID_MAX_OBSTACLES];
+  vec4 balls[LIQUID_MAX_BALLS];         // metaballs: xyz centre relative to the obstacle (m), w radius (m)
+  vec4 ground[LIQUID_MAX_GROUND_HILLS]; // hills: xy centre (m), z height (m), w width (m)
+  Brush brushes[LIQUID_MAX_BRUSHES];
+  EmitterRange emitters[LIQUID_MAX_EMITTERS];
+};
+
+#ifdef __cplusplus
+}  // namespace liquid::gpu
+#endif
+#undef LIQUID_STRUCT
+#undef LIQUID_ALIGN16
+
+#endif
