@@ -4,6 +4,7 @@
 #include "liquid_shaders.h"
 #include "liquid/specialization.h"
 #include "liquid/uniforms.h"
+#include "shaders/liquid/render/view_blocks.h"
 
 #include <glm/gtc/constants.hpp>
 
@@ -33,22 +34,6 @@ const glm::vec3 k_sun_direction = glm::normalize(glm::vec3(0.35f, 0.7f, -0.6f));
 // The sky where no mesh covers the frame (the colour the water reflects near the horizon).
 constexpr glm::vec4 k_sky{0.70f, 0.79f, 0.89f, 1.0f};
 
-// Mirror of HeightFieldUniforms in shaders/render/height_field.vert/.frag (std140).
-struct HeightFieldUniforms {
-  glm::mat4 view_projection;
-  glm::vec4 camera_position;
-  glm::vec4 sun_direction;
-  glm::vec4 params;
-};
-static_assert(sizeof(HeightFieldUniforms) == 112);
-
-// Mirror of HeightFieldPush.
-struct HeightFieldPush {
-  int32_t layer;
-};
-
-constexpr int32_t k_ground_layer = 0;
-constexpr int32_t k_water_layer = 1;
 
 const LiquidNode& require_shallow_water(const LiquidNode& node) {
   if (node.dimension() != 2 || !node.setup().shallow_water)
@@ -90,10 +75,10 @@ HeightFieldPass::HeightFieldPass(engine::vk::Context& context, const LiquidNode&
                                  {LIQUID_BINDING_VIEW_UNIFORMS, DescriptorKind::UniformBuffer,
                                   VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
                                  {LIQUID_BINDING_HEIGHT_FIELD_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
-                    .push_constant_size = sizeof(HeightFieldPush),
+                    .push_constant_size = sizeof(gpu::HeightFieldPush),
                     .specialization = scene_specialization(node.scene(), node.setup())}),
       linear_(context, VK_FILTER_LINEAR),
-      uniforms_(context, node, sizeof(HeightFieldUniforms)) {
+      uniforms_(context, node, sizeof(gpu::HeightFieldUniforms)) {
   // Vertex g = (x, y) of the (cells + 2)^2 grid (cells plus the edge ring) has index y (n.x + 2) + x.
   const glm::ivec2 n(node.setup().grid_cells.x, node.setup().grid_cells.y);
   const uint32_t row = uint32_t(n.x + 2);
@@ -122,10 +107,14 @@ ImageHandle HeightFieldPass::add_to(engine::graph::RenderGraph& graph, const Liq
   const float near_plane = 1e-3f * far_plane;
   // The sides drop below the bed by a slab as thick as the rest depth (at least 2% of the plane).
   const float base = -std::max(rest_depth, 0.02f * extent);
-  const HeightFieldUniforms view{view_projection(camera, aspect, near_plane, far_plane),
-                                 glm::vec4(camera.position, 1.0f),
-                                 glm::vec4(k_sun_direction, 0.0f),
-                                 glm::vec4(rest_depth, k_dry_fraction * rest_depth, k_vertical_scale, base)};
+  gpu::HeightFieldUniforms view{};
+  view.view_projection = view_projection(camera, aspect, near_plane, far_plane);
+  view.camera_position = camera.position;
+  view.rest_depth = rest_depth;
+  view.sun_direction = k_sun_direction;
+  view.dry_threshold = k_dry_fraction * rest_depth;
+  view.vertical_scale = k_vertical_scale;
+  view.skirt_base = base;
   const engine::vk::UniformSlice view_slice = uniforms_.push(view);
 
   struct Data {
@@ -157,9 +146,9 @@ ImageHandle HeightFieldPass::add_to(engine::graph::RenderGraph& graph, const Liq
             // Ground first (opaque), then the water over it; rows run from far (scene y = 0) to
             // near for the default camera, so the blended water is drawn back to front.
             vkCmdBindIndexBuffer(ctx.cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
-            pipeline_.push_constants(ctx.cmd, HeightFieldPush{k_ground_layer});
+            pipeline_.push_constants(ctx.cmd, gpu::HeightFieldPush{LIQUID_HEIGHT_FIELD_GROUND});
             vkCmdDrawIndexed(ctx.cmd, index_count_, 1, 0, 0, 0);
-            pipeline_.push_constants(ctx.cmd, HeightFieldPush{k_water_layer});
+            pipeline_.push_constants(ctx.cmd, gpu::HeightFieldPush{LIQUID_HEIGHT_FIELD_WATER});
             vkCmdDrawIndexed(ctx.cmd, index_count_, 1, 0, 0, 0);
           })
       .color;

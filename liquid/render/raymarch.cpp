@@ -5,6 +5,7 @@
 #include "liquid_shaders.h"
 #include "liquid/specialization.h"
 #include "liquid/uniforms.h"
+#include "shaders/liquid/render/view_blocks.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
 
@@ -18,19 +19,8 @@ using engine::vk::DescriptorKind;
 
 namespace {
 
-// Mirror of RenderUniforms in shaders/render/raymarch.frag (std140).
-struct RenderUniforms {
-  glm::mat4 inverse_view_projection;
-  glm::mat4 view_projection;
-  glm::vec4 camera_position;
-  glm::vec4 sun_direction;
-  glm::vec4 params;
-  glm::ivec4 bricks;
-};
-static_assert(sizeof(RenderUniforms) == 192);
-
 constexpr float k_fine_step_cells = 0.6f;
-constexpr float k_bisection_steps = 5.0f;
+constexpr int k_bisection_steps = 5;
 
 }  // namespace
 
@@ -43,7 +33,7 @@ RaymarchPass::RaymarchPass(engine::vk::Context& context, const LiquidNode& node)
                               .fragment = liquid_shaders::occupancy_frag,
                               .color_formats = {VK_FORMAT_R16_SFLOAT},
                               .bindings = {{LIQUID_BINDING_OCCUPANCY_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
-                              .push_constant_size = 16}),
+                              .push_constant_size = sizeof(gpu::OccupancyPush)}),
       raymarch_(context, engine::vk::GraphicsPipelineDesc{
                              .name = "liquid.raymarch",
                              .vertex = engine::passes::fullscreen_vertex_shader(),
@@ -59,7 +49,7 @@ RaymarchPass::RaymarchPass(engine::vk::Context& context, const LiquidNode& node)
                              .specialization = scene_specialization(node.scene(), node.setup())}),
       linear_(context, VK_FILTER_LINEAR),
       nearest_(context, VK_FILTER_NEAREST),
-      uniforms_(context, node, sizeof(RenderUniforms)) {}
+      uniforms_(context, node, sizeof(gpu::RaymarchUniforms)) {}
 
 RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
                                            const RenderSettings& settings, const CameraView& camera) {
@@ -70,10 +60,16 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
   const float aspect = float(settings.width) / float(settings.height);
   const float far_plane = 4.0f * glm::length(setup.domain) + glm::length(camera.position - camera.target) * 2.0f;
   const glm::mat4 vp = view_projection(camera, aspect, 0.01f, far_plane);
-  const RenderUniforms render{glm::inverse(vp), vp, glm::vec4(camera.position, 1.0f),
-                              glm::vec4(glm::normalize(glm::vec3(0.45f, 0.8f, 0.35f)), 0.0f),
-                              glm::vec4(settings.iso_level, k_fine_step_cells, float(k_brick_cells), k_bisection_steps),
-                              glm::ivec4(bricks, 0)};
+  gpu::RaymarchUniforms render{};
+  render.inverse_view_projection = glm::inverse(vp);
+  render.view_projection = vp;
+  render.camera_position = camera.position;
+  render.iso_level = settings.iso_level;
+  render.sun_direction = glm::normalize(glm::vec3(0.45f, 0.8f, 0.35f));
+  render.fine_step_cells = k_fine_step_cells;
+  render.bricks = bricks;
+  render.brick_cells = float(k_brick_cells);
+  render.bisection_steps = k_bisection_steps;
   const engine::vk::UniformSlice view = uniforms_.push(render);
 
   // Occupancy: one texel per brick, the brick's largest density.
@@ -96,8 +92,7 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
               },
               [this](PassContext& ctx, const OccupancyData& d) {
                 d.bindings.bind_and_push(ctx);
-                const glm::ivec4 push(k_brick_cells, 0, 0, 0);
-                occupancy_.push_constants(ctx.cmd, push);
+                occupancy_.push_constants(ctx.cmd, gpu::OccupancyPush{k_brick_cells});
                 engine::passes::draw_fullscreen(ctx.cmd, ctx.layers);
               })
           .occupancy;

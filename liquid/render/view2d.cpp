@@ -5,6 +5,7 @@
 #include "liquid_shaders.h"
 #include "liquid/specialization.h"
 #include "liquid/uniforms.h"
+#include "shaders/liquid/render/view_blocks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -23,27 +24,9 @@ namespace {
 // How far up (cells) a liquid pixel looks for the surface; depth below this is the deepest blue.
 constexpr float k_depth_search_cells = 24.0f;
 
-// Mirror of View2dPush in shaders/render/view2d.frag.
-struct View2dPush {
-  glm::vec2 origin;
-  float pixels_per_metre;
-  float iso_level;
-  glm::vec2 frame;
-  float wall_pixels;
-  float depth_cells;
-};
-static_assert(sizeof(View2dPush) == 32);
-
-// Mirror of Particles2dPush in shaders/render/particles2d.vert.
-struct Particles2dPush {
-  glm::vec2 origin;
-  float pixels_per_metre;
-  float point_size;
-  glm::vec2 frame;
-  int32_t texture_width;
-  float alpha;
-};
-static_assert(sizeof(Particles2dPush) == 32);
+using gpu::Particles2dPush;
+using gpu::View2dPush;
+static_assert(sizeof(View2dPush) == 32 && sizeof(Particles2dPush) == 32);
 
 const LiquidNode& require_2d(const LiquidNode& node) {
   if (node.dimension() != 2) throw std::invalid_argument("liquid: the 2D view needs a two-dimensional scene");

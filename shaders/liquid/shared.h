@@ -47,17 +47,28 @@
 // Written once for both languages: in C++ the types are glm's and every struct is 16-byte aligned,
 // which is what std140 does with structs; LIQUID_ALIGN16 marks the members std140 moves to a
 // 16-byte boundary after a lone scalar. Fields are grouped in fours so no vec3 straddles a boundary.
+// LIQUID_PUSH marks a push-constant block (std430: no 16-byte rounding); shaders/liquid/render/
+// view_blocks.h uses these macros too.
 #ifdef __cplusplus
 #include <glm/glm.hpp>
 namespace liquid::gpu {
 using glm::ivec3;
+using glm::mat4;
+using glm::vec2;
 using glm::vec3;
 using glm::vec4;
+}  // namespace liquid::gpu
 #define LIQUID_STRUCT(name) struct alignas(16) name
 #define LIQUID_ALIGN16 alignas(16)
+#define LIQUID_PUSH(name) struct name
 #else
 #define LIQUID_STRUCT(name) struct name
 #define LIQUID_ALIGN16
+#define LIQUID_PUSH(name) struct name
+#endif
+
+#ifdef __cplusplus
+namespace liquid::gpu {
 #endif
 
 LIQUID_STRUCT(Obstacle) {
@@ -116,7 +127,5 @@ LIQUID_STRUCT(SolverUniforms) {
 #ifdef __cplusplus
 }  // namespace liquid::gpu
 #endif
-#undef LIQUID_STRUCT
-#undef LIQUID_ALIGN16
 
 #endif

@@ -6,6 +6,7 @@
 #include "liquid/gpu_types.h"
 #include "liquid/specialization.h"
 #include "liquid_shaders.h"
+#include "shaders/liquid/render/view_blocks.h"
 
 #include <catch2/catch.hpp>
 
@@ -141,6 +142,46 @@ TEST_CASE("the solver's uniform block has the same layout in C++ and in every sh
     INFO(module);
     const std::map<std::string, uint32_t> found = member_layout(spirv);
     for (const auto& [member, offset] : expected) {
+      INFO(member);
+      REQUIRE(found.count(member) == 1);
+      CHECK(found.at(member) == offset);
+    }
+  }
+}
+
+TEST_CASE("the views' uniform and push-constant blocks have the same layout in C++ and GLSL", "[shaders]") {
+  using namespace liquid::gpu;
+#define MEMBER(type, field) {#type "." #field, uint32_t(offsetof(type, field))}
+  const std::map<std::string, std::map<std::string, uint32_t>> expected{
+      {"raymarch",
+       {MEMBER(RaymarchUniforms, inverse_view_projection), MEMBER(RaymarchUniforms, view_projection),
+        MEMBER(RaymarchUniforms, camera_position), MEMBER(RaymarchUniforms, iso_level),
+        MEMBER(RaymarchUniforms, sun_direction), MEMBER(RaymarchUniforms, fine_step_cells),
+        MEMBER(RaymarchUniforms, bricks), MEMBER(RaymarchUniforms, brick_cells),
+        MEMBER(RaymarchUniforms, bisection_steps)}},
+      {"occupancy", {MEMBER(OccupancyPush, brick_cells)}},
+      {"height field",
+       {MEMBER(HeightFieldUniforms, view_projection), MEMBER(HeightFieldUniforms, camera_position),
+        MEMBER(HeightFieldUniforms, rest_depth), MEMBER(HeightFieldUniforms, vertical_scale),
+        MEMBER(HeightFieldUniforms, skirt_base), MEMBER(HeightFieldPush, layer)}},
+      {"height field fragment",
+       {MEMBER(HeightFieldUniforms, camera_position), MEMBER(HeightFieldUniforms, rest_depth),
+        MEMBER(HeightFieldUniforms, sun_direction), MEMBER(HeightFieldUniforms, dry_threshold)}},
+      {"2D view",
+       {MEMBER(View2dPush, origin), MEMBER(View2dPush, pixels_per_metre), MEMBER(View2dPush, iso_level),
+        MEMBER(View2dPush, frame), MEMBER(View2dPush, wall_pixels), MEMBER(View2dPush, depth_cells)}},
+      {"2D particles",
+       {MEMBER(Particles2dPush, origin), MEMBER(Particles2dPush, pixels_per_metre), MEMBER(Particles2dPush, point_size),
+        MEMBER(Particles2dPush, frame), MEMBER(Particles2dPush, texture_width)}}};
+#undef MEMBER
+  const std::map<std::string, std::span<const uint32_t>> modules{
+      {"raymarch", liquid_shaders::raymarch_frag},           {"occupancy", liquid_shaders::occupancy_frag},
+      {"height field", liquid_shaders::height_field_vert},   {"height field fragment", liquid_shaders::height_field_frag},
+      {"2D view", liquid_shaders::view2d_frag},              {"2D particles", liquid_shaders::particles2d_vert}};
+  for (const auto& [module, members] : expected) {
+    INFO(module);
+    const std::map<std::string, uint32_t> found = member_layout(modules.at(module));
+    for (const auto& [member, offset] : members) {
       INFO(member);
       REQUIRE(found.count(member) == 1);
       CHECK(found.at(member) == offset);

@@ -1,19 +1,16 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "liquid/shared.h"
+#include "liquid/render/view_blocks.h"
 // Shallow-water view (section 6, figure 4), fragment stage: a lit sandy ground (darker where wet)
 // and a semi-transparent water surface with a Fresnel reflection of the sky and a sun highlight,
 // hidden where the water is thinner than the dry threshold.
-layout(set = 0, binding = LIQUID_BINDING_VIEW_UNIFORMS) uniform HeightFieldUniforms {
-  mat4 view_projection;
-  vec4 camera_position;  // xyz, world
-  vec4 sun_direction;    // xyz towards the sun
-  vec4 params;           // x rest depth (m), y dry threshold (m), z vertical scale, w skirt base (m)
-} r;
+layout(std140, set = 0, binding = LIQUID_BINDING_VIEW_UNIFORMS) uniform HeightFieldBlock {
+  HeightFieldUniforms r;
+};
 
-layout(push_constant) uniform HeightFieldPush {
-  int layer;  // 0 ground, 1 water
-} pc;
+layout(push_constant) uniform HeightFieldPushBlock {
+  HeightFieldPush pc;
+};
 
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec3 v_normal;
@@ -33,13 +30,13 @@ vec3 sky(vec3 direction) { return mix(k_sky_horizon, k_sky_zenith, sqrt(clamp(di
 void main() {
   // The inside of a side wall (seen across the plane) is not drawn: the walls are the outside of
   // the slab of ground and of the water column.
-  vec3 view = normalize(r.camera_position.xyz - v_world);
+  vec3 view = normalize(r.camera_position - v_world);
   if (dot(vec3(v_outward.x, 0.0, v_outward.y), view) < 0.0) discard;
   vec3 n = normalize(v_normal);
-  vec3 sun = normalize(r.sun_direction.xyz);
-  float rest_depth = r.params.x, threshold = r.params.y;
+  vec3 sun = normalize(r.sun_direction);
+  float rest_depth = r.rest_depth, threshold = r.dry_threshold;
 
-  if (pc.layer == 0) {
+  if (pc.layer == LIQUID_HEIGHT_FIELD_GROUND) {
     // Wet sand under the water is darker; light: sun (Lambert) plus an ambient term.
     float wet = smoothstep(threshold, 2.0 * threshold, v_depth);
     vec3 albedo = k_sand * mix(1.0, 0.7, wet);

@@ -7,18 +7,16 @@
 // a base height (ground) or to the ground (water), so both meshes get side walls.
 #extension GL_GOOGLE_include_directive : require
 #include "liquid/common.glsl"
+#include "liquid/render/view_blocks.h"
 
-layout(set = 0, binding = LIQUID_BINDING_VIEW_UNIFORMS) uniform HeightFieldUniforms {
-  mat4 view_projection;
-  vec4 camera_position;  // xyz, world
-  vec4 sun_direction;    // xyz towards the sun
-  vec4 params;           // x rest depth (m), y dry threshold (m), z vertical scale, w skirt base (m)
-} r;
+layout(std140, set = 0, binding = LIQUID_BINDING_VIEW_UNIFORMS) uniform HeightFieldBlock {
+  HeightFieldUniforms r;
+};
 layout(set = 0, binding = LIQUID_BINDING_HEIGHT_FIELD_DENSITY) uniform sampler2D u_density;  // rho / rho0, linear filtering
 
-layout(push_constant) uniform HeightFieldPush {
-  int layer;  // 0 ground, 1 water
-} pc;
+layout(push_constant) uniform HeightFieldPushBlock {
+  HeightFieldPush pc;
+};
 
 layout(location = 0) out vec3 v_world;
 layout(location = 1) out vec3 v_normal;
@@ -29,20 +27,20 @@ layout(location = 3) out vec2 v_outward;  // side walls: outward direction (x, z
 float water_depth(ivec2 c) {
   ivec2 n = grid_cells().xy;
   c = clamp(c, ivec2(0), n - 1);
-  return r.params.x * textureLod(u_density, (vec2(c) + 0.5) / vec2(n), 0.0).r;
+  return r.rest_depth * textureLod(u_density, (vec2(c) + 0.5) / vec2(n), 0.0).r;
 }
 
 // Height of this layer's surface over cell c, m: b, or b + h for the water.
 float surface(ivec2 c) {
   c = clamp(c, ivec2(0), grid_cells().xy - 1);
   float b = ground_height(cell_center(ivec3(c, 0)).xy);
-  return pc.layer == 1 ? b + water_depth(c) : b;
+  return pc.layer == LIQUID_HEIGHT_FIELD_WATER ? b + water_depth(c) : b;
 }
 
 void main() {
   ivec2 n = grid_cells().xy;
   float h = cell_size();
-  float scale = r.params.z;
+  float scale = r.vertical_scale;
   // Vertex g in [0, n + 1]^2: g - 1 is the cell, 0 and n + 1 are the edge ring.
   ivec2 g = ivec2(gl_VertexIndex % (n.x + 2), gl_VertexIndex / (n.x + 2));
   ivec2 c = clamp(g - 1, ivec2(0), n - 1);
@@ -54,7 +52,7 @@ void main() {
   vec3 normal;
   if (edge) {
     // Side wall: the ground drops to the base, the water to the ground.
-    height = pc.layer == 1 ? ground_height(xy) : r.params.w;
+    height = pc.layer == LIQUID_HEIGHT_FIELD_WATER ? ground_height(xy) : r.skirt_base;
     vec2 outward = vec2(g.x == 0 ? -1.0 : (g.x == n.x + 1 ? 1.0 : 0.0), g.y == 0 ? -1.0 : (g.y == n.y + 1 ? 1.0 : 0.0));
     normal = normalize(vec3(outward.x, 0.0, outward.y));
     v_outward = outward;

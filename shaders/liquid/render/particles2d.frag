@@ -1,13 +1,10 @@
 #version 450
 // 2D view, particles: a small round dot, alpha-blended over the liquid.
-layout(push_constant) uniform Particles2dPush {
-  vec2 origin;
-  float pixels_per_metre;
-  float point_size;
-  vec2 frame;
-  int texture_width;
-  float alpha;  // opacity of one point
-} pc;
+#extension GL_GOOGLE_include_directive : require
+#include "liquid/render/view_blocks.h"
+layout(push_constant) uniform Particles2dPushBlock {
+  Particles2dPush pc;
+};
 
 layout(location = 0) out vec4 out_color;
 

@@ -3,17 +3,12 @@
 // from the particle texture by gl_VertexIndex (no vertex buffer) and mapped into the same fitted
 // domain rectangle as view2d.frag.
 #extension GL_GOOGLE_include_directive : require
-#include "liquid/shared.h"
+#include "liquid/render/view_blocks.h"
 layout(set = 0, binding = LIQUID_BINDING_PARTICLES2D_POSITIONS) uniform sampler2D u_positions;  // RGBA32F, xyz m, nearest
 
-layout(push_constant) uniform Particles2dPush {
-  vec2 origin;             // framebuffer pixel of the domain's (0, 0) corner (its bottom left)
-  float pixels_per_metre;  // domain scale on screen
-  float point_size;        // pixels
-  vec2 frame;              // framebuffer size, pixels
-  int texture_width;       // particle texture width, texels
-  float alpha;             // opacity of one point
-} pc;
+layout(push_constant) uniform Particles2dPushBlock {
+  Particles2dPush pc;
+};
 
 void main() {
   ivec2 texel = ivec2(gl_VertexIndex % pc.texture_width, gl_VertexIndex / pc.texture_width);

@@ -9,15 +9,11 @@
 #extension GL_GOOGLE_include_directive : require
 #define DIM 3
 #include "liquid/common.glsl"
+#include "liquid/render/view_blocks.h"
 
-layout(set = 0, binding = LIQUID_BINDING_VIEW_UNIFORMS) uniform RenderUniforms {
-  mat4 inverse_view_projection;
-  mat4 view_projection;
-  vec4 camera_position;  // xyz
-  vec4 sun_direction;    // xyz towards the sun
-  vec4 params;           // x iso level, y fine step (cells), z brick size (cells), w bisection steps
-  ivec4 bricks;          // xyz occupancy volume size
-} r;
+layout(std140, set = 0, binding = LIQUID_BINDING_VIEW_UNIFORMS) uniform RaymarchBlock {
+  RaymarchUniforms r;
+};
 layout(set = 0, binding = LIQUID_BINDING_RAYMARCH_DENSITY) uniform sampler3D u_density;    // rho / rho0, linear filtering
 layout(set = 0, binding = LIQUID_BINDING_RAYMARCH_OCCUPANCY) uniform sampler3D u_occupancy;  // per-brick max, nearest
 
@@ -38,7 +34,7 @@ vec2 intersect_box(vec3 origin, vec3 inv_dir, vec3 lo, vec3 hi) {
 vec3 sky(vec3 dir) {
   float up = clamp(dir.y * 0.5 + 0.5, 0.0, 1.0);
   vec3 color = mix(vec3(0.78, 0.80, 0.82), vec3(0.30, 0.52, 0.85), pow(up, 0.8));
-  float sun = max(dot(dir, r.sun_direction.xyz), 0.0);
+  float sun = max(dot(dir, r.sun_direction), 0.0);
   return color + vec3(1.0, 0.95, 0.85) * (pow(sun, 400.0) * 6.0 + pow(sun, 12.0) * 0.15);
 }
 
@@ -102,7 +98,7 @@ float trace_obstacles(vec3 origin, vec3 dir, out int hit_index) {
 
 vec3 shade_obstacle(int index, vec3 p, vec3 view_dir) {
   vec3 n = obstacle_normal(index, p);
-  vec3 l = r.sun_direction.xyz;
+  vec3 l = r.sun_direction;
   float diffuse = max(dot(n, l), 0.0);
   float spec = pow(max(dot(n, normalize(l - view_dir)), 0.0), 48.0);
   vec3 base = vec3(0.62, 0.6, 0.58);
@@ -129,10 +125,10 @@ vec3 background(vec3 origin, vec3 dir, out float depth_t) {
 // First crossing of the iso level inside [t_enter, t_exit], or k_no_hit.
 float march_liquid(vec3 origin, vec3 dir, float t_enter, float t_exit) {
   float h = cell_size();
-  float iso = r.params.x;
-  float fine = r.params.y * h;
-  float brick_size = r.params.z * h;
-  ivec3 bricks = r.bricks.xyz;
+  float iso = r.iso_level;
+  float fine = r.fine_step_cells * h;
+  float brick_size = r.brick_cells * h;
+  ivec3 bricks = r.bricks;
 
   // 3D DDA over the bricks (Amanatides and Woo).
   vec3 p = origin + dir * (t_enter + 1e-5);
@@ -157,7 +153,7 @@ float march_liquid(vec3 origin, vec3 dir, float t_enter, float t_exit) {
         if (d > iso) {
           // Bisection between the last sample outside and this one inside.
           float a = previous_t, b = s;
-          for (int k = 0; k < int(r.params.w); ++k) {
+          for (int k = 0; k < r.bisection_steps; ++k) {
             float m = 0.5 * (a + b);
             if (density_at(origin + dir * m) > iso) b = m;
             else a = m;
@@ -231,7 +227,7 @@ float clip_depth(vec3 p) {
 void main() {
   vec2 ndc = v_uv * 2.0 - 1.0;
   vec4 far_point = r.inverse_view_projection * vec4(ndc, 1.0, 1.0);
-  vec3 origin = r.camera_position.xyz;
+  vec3 origin = r.camera_position;
   vec3 dir = normalize(far_point.xyz / far_point.w - origin);
 
   vec2 span = intersect_box(origin, 1.0 / dir, vec3(0.0), u.domain);
@@ -259,12 +255,12 @@ void main() {
     for (int k = 0; k < 16; ++k) {
       q += refracted_dir * step_length;
       if (any(lessThan(q, vec3(0.0))) || any(greaterThan(q, u.domain))) break;
-      if (density_at(q) > r.params.x) thickness += step_length;
+      if (density_at(q) > r.iso_level) thickness += step_length;
     }
     float behind_t;
     vec3 behind = background(p + refracted_dir * 1e-3, refracted_dir, behind_t);
     vec3 transmitted = behind * exp(-k_absorption * (thickness + 0.02)) + vec3(0.01, 0.05, 0.08) * (1.0 - exp(-2.0 * thickness));
-    float spec = pow(max(dot(n, normalize(r.sun_direction.xyz - dir)), 0.0), 180.0);
+    float spec = pow(max(dot(n, normalize(r.sun_direction - dir)), 0.0), 180.0);
     color = mix(transmitted, reflected, fresnel) + vec3(1.0, 0.97, 0.9) * spec * 1.5;
     depth_t = t_liquid;
   } else {

@@ -6,17 +6,13 @@
 // the tank's walls frame the domain on the left, right and bottom.
 #extension GL_GOOGLE_include_directive : require
 #include "liquid/common.glsl"
+#include "liquid/render/view_blocks.h"
 
 layout(set = 0, binding = LIQUID_BINDING_VIEW2D_DENSITY) uniform sampler2D u_density;  // rho / rho0, linear filtering
 
-layout(push_constant) uniform View2dPush {
-  vec2 origin;             // framebuffer pixel of the domain's (0, 0) corner (its bottom left)
-  float pixels_per_metre;  // domain scale on screen
-  float iso_level;         // surface where rho / rho0 crosses this
-  vec2 frame;              // framebuffer size, pixels
-  float wall_pixels;       // tank wall thickness, pixels
-  float depth_cells;       // how far (cells) the depth search looks up for the surface
-} pc;
+layout(push_constant) uniform View2dPushBlock {
+  View2dPush pc;
+};
 
 layout(location = 0) in vec2 v_uv;
 layout(location = 0) out vec4 out_color;

@@ -1,0 +1,74 @@
+// The views' own uniform and push-constant blocks, written once for the C++ that fills them
+// (liquid/render/*.cpp) and the shaders that read them (shaders/liquid/render/*). Same rules as
+// shared.h: C++ types are glm's, LIQUID_STRUCT blocks are std140, LIQUID_PUSH blocks std430.
+#ifndef LIQUID_VIEW_BLOCKS_H
+#define LIQUID_VIEW_BLOCKS_H
+
+#include "../shared.h"
+
+// Height field: which mesh a draw makes.
+#define LIQUID_HEIGHT_FIELD_GROUND 0
+#define LIQUID_HEIGHT_FIELD_WATER 1
+
+#ifdef __cplusplus
+namespace liquid::gpu {
+#endif
+
+// Raymarch (raymarch.frag), at LIQUID_BINDING_VIEW_UNIFORMS.
+LIQUID_STRUCT(RaymarchUniforms) {
+  mat4 inverse_view_projection;
+  mat4 view_projection;
+  vec3 camera_position;    // m
+  float iso_level;         // the surface: rho / rho0 crosses this
+  vec3 sun_direction;      // towards the sun, unit
+  float fine_step_cells;   // march step inside occupied bricks
+  ivec3 bricks;            // occupancy volume size
+  float brick_cells;       // occupancy brick edge, cells
+  int bisection_steps;     // refinements of a crossing
+};
+
+// Occupancy (occupancy.frag), push constants.
+LIQUID_PUSH(OccupancyPush) {
+  int brick_cells;
+};
+
+// Height field (height_field.vert/.frag), at LIQUID_BINDING_VIEW_UNIFORMS.
+LIQUID_STRUCT(HeightFieldUniforms) {
+  mat4 view_projection;
+  vec3 camera_position;    // world, m
+  float rest_depth;        // m
+  vec3 sun_direction;      // towards the sun, unit
+  float dry_threshold;     // m: water thinner than this is not drawn
+  float vertical_scale;
+  float skirt_base;        // m: where the side walls end below the bed
+};
+
+LIQUID_PUSH(HeightFieldPush) {
+  int layer;  // LIQUID_HEIGHT_FIELD_GROUND or LIQUID_HEIGHT_FIELD_WATER
+};
+
+// 2D view (view2d.frag), push constants.
+LIQUID_PUSH(View2dPush) {
+  vec2 origin;             // framebuffer pixel of the domain's (0, 0) corner (its bottom left)
+  float pixels_per_metre;  // domain scale on screen
+  float iso_level;         // surface where rho / rho0 crosses this
+  vec2 frame;              // framebuffer size, pixels
+  float wall_pixels;       // tank wall thickness, pixels
+  float depth_cells;       // how far (cells) the depth search looks up for the surface
+};
+
+// 2D particles (particles2d.vert/.frag), push constants.
+LIQUID_PUSH(Particles2dPush) {
+  vec2 origin;             // as View2dPush
+  float pixels_per_metre;
+  float point_size;        // pixels
+  vec2 frame;              // framebuffer size, pixels
+  int texture_width;       // particle texture width, texels
+  float alpha;             // opacity of one point
+};
+
+#ifdef __cplusplus
+}  // namespace liquid::gpu
+#endif
+
+#endif
