@@ -1,161 +1,21 @@
-#include "liquid/scene.h"
-
+// The scene's keys: which exist, their units, defaults and allowed ranges (see the README's scene
+// table). JSON syntax and duplicate keys are handled in scene_json.cpp.
 #include "liquid/gpu_types.h"
+#include "liquid/scene.h"
+#include "liquid/scene_reader.h"
 
-#include <nlohmann/json.hpp>
+#include <filesystem>
 
-#include <algorithm>
-#include <cfloat>
-#include <cmath>
-#include <cstdint>
-#include <fstream>
-#include <initializer_list>
-#include <set>
-#include <sstream>
-
-namespace liquid {
+namespace liquid::scene_reader {
 namespace {
-
-using Json = nlohmann::json;
 
 constexpr double k_max_domain_extent = 100.0;  // m
 constexpr int k_min_grid_resolution = 8;
 constexpr int k_max_grid_resolution = 2048;
 constexpr double k_max_gravity = 1000.0;        // m/s^2 per component
 constexpr double k_max_speed = 1000.0;          // m/s per component
-constexpr double k_max_length = 100.0;          // m, radii, half extents, hill sizes
 constexpr double k_max_frequency = 1000.0;      // Hz
 constexpr int k_max_emitter_capacity = 1 << 24;  // 16M particles
-
-// Readable form of a number for messages: 0.6, 12, 1000000, 1e-06.
-std::string format_number(double value) {
-  if (value == std::floor(value) && std::abs(value) < 1e15) return std::to_string(std::int64_t(value));
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
-
-std::string child(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
-
-std::string element(const std::string& path, size_t index) { return path + "[" + std::to_string(index) + "]"; }
-
-// Walks one document: knows the source name (prefix of every message) and, once read, the
-// dimension and domain that later fields are checked against.
-class Reader {
- public:
-  explicit Reader(std::string source) : source_(std::move(source)) {}
-
-  [[noreturn]] void fail(const std::string& path, const std::string& reason) const {
-    throw SceneError(source_ + ": " + path + ": " + reason);
-  }
-
-  // Requires `value` to be an object whose keys are all in `allowed`.
-  void check_keys(const Json& value, const std::string& path, std::initializer_list<const char*> allowed) const {
-    if (!value.is_object()) fail(path, std::string("must be an object, got ") + value.type_name());
-    for (const auto& item : value.items()) {
-      const bool known = std::any_of(allowed.begin(), allowed.end(), [&](const char* k) { return item.key() == k; });
-      if (!known) fail(child(path, item.key()), "unknown key");
-    }
-  }
-
-  // The member `key` of an object, or nullptr when absent.
-  static const Json* find(const Json& object, const char* key) {
-    const auto it = object.find(key);
-    return it == object.end() ? nullptr : &*it;
-  }
-
-  const Json& require(const Json& object, const std::string& path, const char* key) const {
-    const Json* value = find(object, key);
-    if (!value) fail(child(path, key), "missing required key");
-    return *value;
-  }
-
-  // A finite number that also fits a float (the solver's precision).
-  double number(const Json& value, const std::string& path) const {
-    if (!value.is_number()) fail(path, std::string("must be a number, got ") + value.type_name());
-    const double x = value.get<double>();
-    if (!std::isfinite(x) || std::abs(x) > double(FLT_MAX)) fail(path, "must be a finite number");
-    return x;
-  }
-
-  // A number in [lo, hi]; `lo_open` / `hi_open` exclude the bound.
-  double number_in(const Json& value, const std::string& path, double lo, double hi, bool lo_open = false,
-                   bool hi_open = false) const {
-    const double x = number(value, path);
-    if ((lo_open ? x <= lo : x < lo) || (hi_open ? x >= hi : x > hi))
-      fail(path, "must be in " + std::string(lo_open ? "(" : "[") + format_number(lo) + ", " + format_number(hi) +
-                     (hi_open ? ")" : "]") + ", got " + format_number(x));
-    return x;
-  }
-
-  // An integer in [lo, hi]; an integral float such as 64.0 is accepted.
-  int integer_in(const Json& value, const std::string& path, int lo, int hi) const {
-    if (!value.is_number()) fail(path, std::string("must be an integer, got ") + value.type_name());
-    const double x = value.get<double>();
-    if (!std::isfinite(x) || x != std::floor(x)) fail(path, "must be an integer, got " + format_number(x));
-    if (x < lo || x > hi)
-      fail(path, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + format_number(x));
-    return int(x);
-  }
-
-  std::string string(const Json& value, const std::string& path) const {
-    if (!value.is_string()) fail(path, std::string("must be a string, got ") + value.type_name());
-    return value.get<std::string>();
-  }
-
-  // One of a fixed set of strings; returns its index in `choices`.
-  size_t choice(const Json& value, const std::string& path, std::initializer_list<const char*> choices) const {
-    const std::string text = string(value, path);
-    std::string list;
-    size_t index = 0;
-    for (const char* option : choices) {
-      if (text == option) return index;
-      list += (index++ ? ", \"" : "\"") + std::string(option) + "\"";
-    }
-    fail(path, "must be one of " + list + ", got \"" + text + "\"");
-  }
-
-  // A vector of exactly `length` finite numbers, each with |x| <= bound; z = 0 when length is 2.
-  glm::vec3 vector(const Json& value, const std::string& path, int length, double bound = k_max_length) const {
-    if (!value.is_array()) fail(path, std::string("must be an array of numbers, got ") + value.type_name());
-    if (int(value.size()) != length)
-      fail(path, "must have " + std::to_string(length) + " components, got " + std::to_string(value.size()));
-    glm::vec3 v(0.0f);
-    for (int i = 0; i < length; ++i) v[i] = float(number_in(value[size_t(i)], element(path, size_t(i)), -bound, bound));
-    return v;
-  }
-
-  // A vector of the scene's dimension.
-  glm::vec3 scene_vector(const Json& value, const std::string& path, double bound = k_max_length) const {
-    return vector(value, path, dimension_, bound);
-  }
-
-  // A scene vector that must lie in the closed domain box.
-  glm::vec3 point_in_domain(const Json& value, const std::string& path) const {
-    const glm::vec3 p = scene_vector(value, path);
-    for (int a = 0; a < dimension_; ++a)
-      if (p[a] < 0.0f || p[a] > domain_[a]) fail(path, "must be inside the domain " + describe_domain());
-    return p;
-  }
-
-  // "[0, 1] x [0, 0.6]".
-  std::string describe_domain() const {
-    std::string text;
-    for (int a = 0; a < dimension_; ++a) text += (a ? " x [0, " : "[0, ") + format_number(domain_[a]) + "]";
-    return text;
-  }
-
-  void set_space(int dimension, glm::vec3 domain) {
-    dimension_ = dimension;
-    domain_ = domain;
-  }
-  int dimension() const { return dimension_; }
-
- private:
-  std::string source_;
-  int dimension_ = 2;
-  glm::vec3 domain_{0.0f};
-};
 
 // ---- Nested objects --------------------------------------------------------------------------
 
@@ -379,6 +239,8 @@ void read_contents(const Reader& r, const Json& doc, Scene& scene) {
     r.fail("fluid_blocks", "the scene needs at least one fluid block or one emitter");
 }
 
+}  // namespace
+
 Scene read_scene(const Json& doc, const std::string& source_name) {
   Reader r(source_name);
   if (!doc.is_object()) r.fail("(document)", std::string("must be a JSON object, got ") + doc.type_name());
@@ -399,103 +261,4 @@ Scene read_scene(const Json& doc, const std::string& source_name) {
   return scene;
 }
 
-// ---- JSON syntax -------------------------------------------------------------------------------
-
-// Tracks where the parser is ("fluid_blocks[1].min") so a repeated key, which nlohmann would
-// silently resolve to its last value, is reported by path.
-class DuplicateKeyCheck {
- public:
-  explicit DuplicateKeyCheck(std::string source) : source_(std::move(source)) {}
-
-  bool operator()(int, Json::parse_event_t event, Json& parsed) {
-    using Event = Json::parse_event_t;
-    switch (event) {
-      case Event::object_start:
-      case Event::array_start:
-        count_element();
-        frames_.push_back({event == Event::array_start, -1, {}, {}});
-        break;
-      case Event::object_end:
-      case Event::array_end:
-        frames_.pop_back();
-        break;
-      case Event::key: {
-        Frame& top = frames_.back();
-        top.key = parsed.get<std::string>();
-        if (!top.keys.insert(top.key).second) throw SceneError(source_ + ": " + path() + ": duplicate key");
-        break;
-      }
-      case Event::value:
-        count_element();
-        break;
-    }
-    return true;
-  }
-
- private:
-  struct Frame {
-    bool array;
-    int index;
-    std::string key;
-    std::set<std::string> keys;
-  };
-
-  void count_element() {
-    if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
-  }
-
-  std::string path() const {
-    std::string text;
-    for (const Frame& f : frames_)
-      text = f.array ? element(text, size_t(std::max(f.index, 0))) : child(text, f.key);
-    return text;
-  }
-
-  std::string source_;
-  std::vector<Frame> frames_;
-};
-
-// 1-based line of byte offset `byte` (nlohmann's 1-based position of the offending character).
-int line_of(const std::string& text, size_t byte) {
-  const size_t end = std::min(text.size(), byte > 0 ? byte - 1 : 0);
-  return 1 + int(std::count(text.begin(), text.begin() + std::ptrdiff_t(end), '\n'));
-}
-
-// nlohmann's "[json.exception.parse_error.101] parse error at line 3, column 7: syntax error while
-// parsing value - invalid literal; ..." reduced to "while parsing value - invalid literal; ...".
-std::string syntax_reason(const std::string& what) {
-  std::string reason = what;
-  if (reason.rfind("[json.exception", 0) == 0)
-    if (const size_t bracket = reason.find("] "); bracket != std::string::npos) reason = reason.substr(bracket + 2);
-  if (const size_t column = reason.find("column "); column != std::string::npos)
-    if (const size_t colon = reason.find(": ", column); colon != std::string::npos) reason = reason.substr(colon + 2);
-  const std::string prefix = "syntax error ";
-  if (reason.rfind(prefix, 0) == 0) reason = reason.substr(prefix.size());
-  return reason;
-}
-
-}  // namespace
-
-Scene parse_scene(const std::string& json_text, const std::string& source_name) {
-  Json doc;
-  try {
-    doc = Json::parse(json_text, DuplicateKeyCheck(source_name));
-  } catch (const Json::parse_error& e) {
-    throw SceneError(source_name + ": line " + std::to_string(line_of(json_text, e.byte)) +
-                     ": JSON syntax error: " + syntax_reason(e.what()));
-  } catch (const Json::exception& e) {  // e.g. a number literal too large for a double
-    throw SceneError(source_name + ": JSON error: " + syntax_reason(e.what()));
-  }
-  return read_scene(doc, source_name);
-}
-
-Scene load_scene(const std::filesystem::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw SceneError(path.string() + ": cannot open scene file");
-  std::ostringstream text;
-  text << file.rdbuf();
-  if (file.bad()) throw SceneError(path.string() + ": cannot read scene file");
-  return parse_scene(text.str(), path.string());
-}
-
-}  // namespace liquid
+}  // namespace liquid::scene_reader

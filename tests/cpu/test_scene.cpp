@@ -1,6 +1,7 @@
 // Scene loading with no GPU: every shipped scene parses, defaults and conversions are right, and
 // each kind of malformed scene is rejected with a message naming the file and the field.
 #include "liquid/scene.h"
+#include "tests/support/scenes.h"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -13,10 +14,9 @@
 using namespace liquid;
 using Catch::Contains;
 using Json = nlohmann::json;
+using test_scenes::k_scene_dir;
 
 namespace {
-
-const std::filesystem::path k_scene_dir = std::filesystem::path(LIQUID_ASSET_DIR) / "scenes";
 
 const std::vector<std::string> k_shipped_scenes = {
     "dam_break_2d.json", "dam_break_3d.json", "paper_2d_16k.json", "paper_2d_32k.json",

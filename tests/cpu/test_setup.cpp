@@ -2,8 +2,7 @@
 // lattice, kernel normalisation and rest density, emitters, device limits, and the physical
 // sanity of every shipped scene.
 #include "liquid/setup.h"
-#include "liquid/specialization.h"
-#include "liquid/uniforms.h"
+#include "tests/support/scenes.h"
 
 #include <catch2/catch.hpp>
 
@@ -17,25 +16,11 @@
 
 using namespace liquid;
 using Catch::Contains;
+using namespace test_scenes;
 
 namespace {
 
-const std::filesystem::path k_scene_dir = std::filesystem::path(LIQUID_ASSET_DIR) / "scenes";
 constexpr double k_pi = 3.14159265358979323846;
-
-std::vector<std::filesystem::path> shipped_scenes() {
-  std::vector<std::filesystem::path> paths;
-  for (const auto& entry : std::filesystem::directory_iterator(k_scene_dir))
-    if (entry.path().extension() == ".json") paths.push_back(entry.path());
-  std::sort(paths.begin(), paths.end());
-  return paths;
-}
-
-Scene scene_of(const char* file) { return load_scene(k_scene_dir / file); }
-
-SimulationSetup setup_of(const char* file, const DeviceLimits& limits = {}) {
-  return make_setup(scene_of(file), limits);
-}
 
 // A liquid scene with one block, built in code.
 Scene block_scene(int dimension, glm::vec3 domain, FluidBlock block, float spacing) {
@@ -383,33 +368,6 @@ TEST_CASE("shipped scenes are in the stable weakly compressible regime", "[setup
   }
 }
 
-TEST_CASE("the wall table holds the kernel's mass beyond a plane", "[setup][uniforms]") {
-  for (int dimension : {2, 3}) {
-    for (double r : {1.5, 3.0, 8.0}) {
-      // A plane through the centre cuts the symmetric kernel in half; none is beyond r.
-      CHECK(liquid::kernel_mass_beyond_wall(dimension, r, 0.0) == Approx(0.5).margin(1e-3));
-      CHECK(liquid::kernel_mass_beyond_wall(dimension, r, r) == 0.0);
-      double previous = 0.5;
-      for (double a = 0.5; a < r; a += 1.0) {
-        const double beyond = liquid::kernel_mass_beyond_wall(dimension, r, a);
-        CHECK(beyond <= previous);
-        CHECK(beyond >= 0.0);
-        previous = beyond;
-      }
-    }
-  }
-  // 2D, r = 3, half a cell away: the share of (1 - z^2/9)^3.5 beyond z = 0.5 is 0.3121; the
-  // solver's 16-interval rule gives 0.3565 (see uniforms.cpp for why it is kept).
-  CHECK(liquid::kernel_mass_beyond_wall(2, 3.0, 0.5) == Approx(0.3565).margin(1e-3));
-  // The uniform block carries the table for k + 0.5 cells, k = 0..7.
-  liquid::SimulationSetup setup;
-  setup.dimension = 3;
-  setup.kernel_radius_cells = 3.0f;
-  const liquid::gpu::SolverUniforms u = liquid::make_uniforms(Scene{}, setup, {});
-  CHECK(u.wall_kernel_beyond[0][1] == Approx(liquid::kernel_mass_beyond_wall(3, 3.0, 1.5)));
-  CHECK(u.wall_kernel_beyond[0][3] == 0.0f);
-}
-
 TEST_CASE("fluid blocks are carved around the obstacles they overlap", "[setup]") {
   const Scene scene = parse_scene(R"({
     "name": "carved", "dimension": 2, "domain": [1.0, 0.5], "grid_resolution": 64,
@@ -422,29 +380,4 @@ TEST_CASE("fluid blocks are carved around the obstacles they overlap", "[setup]"
   CHECK(setup.capacity == setup.initial_particles);
   CHECK(2000 - setup.initial_particles == Approx(3.14159 * 85 * 85 / 100).epsilon(0.1));
   for (const glm::vec4& p : setup.positions) REQUIRE(glm::length(glm::vec2(p) - glm::vec2(0.5f, 0.1f)) >= 0.085f);
-}
-
-TEST_CASE("the shaders' specialization follows the scene's features", "[setup]") {
-  // constant_id layout of shaders/liquid/common.glsl (tests/cpu/test_shaders.cpp checks the ids):
-  // obstacle count, 8 kinds, shallow water, integer gamma, emitters, ground hills.
-  namespace id = specialization_id;
-  const std::vector<int32_t> dam = scene_specialization(scene_of("dam_break_2d.json"), setup_of("dam_break_2d.json"));
-  CHECK(dam == std::vector<int32_t>{0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 5, 0, 0});
-
-  const std::vector<int32_t> obstacles = scene_specialization(scene_of("obstacles_2d.json"), setup_of("obstacles_2d.json"));
-  REQUIRE(obstacles.size() == id::count);
-  CHECK(obstacles[id::obstacle_count] == 3);
-  CHECK(std::vector<int32_t>(obstacles.begin() + id::first_obstacle_kind, obstacles.begin() + id::first_obstacle_kind + 3) ==
-        std::vector<int32_t>{0, 1, 2});  // sphere, box, metaballs
-
-  const std::vector<int32_t> shallow = scene_specialization(scene_of("shallow_water.json"), setup_of("shallow_water.json"));
-  CHECK(shallow[id::shallow_water] == 1);
-  CHECK(shallow[id::integer_gamma] == 1);  // gamma = 1: P = g (h + b)
-  CHECK(shallow[id::ground_hills] == 3);
-
-  CHECK(scene_specialization(scene_of("paper_3d.json"), setup_of("paper_3d.json"))[id::has_emitters] == 1);  // the jet
-
-  Scene fractional = load_scene(k_scene_dir / "dam_break_2d.json");
-  fractional.gamma = 6.5f;
-  CHECK(scene_specialization(fractional, make_setup(fractional, {}))[id::integer_gamma] == 0);  // pow() in the shader
 }
