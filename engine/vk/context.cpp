@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
+#include <optional>
 #include <vector>
 
 namespace engine::vk {
@@ -33,14 +34,33 @@ bool has_layer(const char* name) {
                      [&](const VkLayerProperties& l) { return std::strcmp(l.layerName, name) == 0; });
 }
 
-bool has_device_extension(VkPhysicalDevice device, const char* name) {
+std::vector<std::string> device_extensions(VkPhysicalDevice device) {
   uint32_t count = 0;
   vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr);
-  std::vector<VkExtensionProperties> extensions(count);
-  vkEnumerateDeviceExtensionProperties(device, nullptr, &count, extensions.data());
-  return std::any_of(extensions.begin(), extensions.end(), [&](const VkExtensionProperties& e) {
-    return std::strcmp(e.extensionName, name) == 0;
-  });
+  std::vector<VkExtensionProperties> properties(count);
+  vkEnumerateDeviceExtensionProperties(device, nullptr, &count, properties.data());
+  std::vector<std::string> names;
+  for (const auto& e : properties) names.push_back(e.extensionName);
+  return names;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
+}
+
+// The first queue family with graphics that the host's filter (if any) accepts.
+std::optional<uint32_t> graphics_family(VkInstance instance, VkPhysicalDevice device, const ContextOptions& options) {
+  uint32_t count = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(count);
+  vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
+  for (uint32_t i = 0; i < count; ++i)
+    if ((families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) &&
+        (!options.queue_family_filter || options.queue_family_filter(instance, device, i)))
+      return i;
+  return std::nullopt;
 }
 
 // Lower is better: the automatic choice prefers a real GPU and falls back to lavapipe.
@@ -55,25 +75,18 @@ int type_rank(VkPhysicalDeviceType type) {
 }
 
 // Why a device cannot run us, or "" when it can.
-std::string unsuitability(VkPhysicalDevice device) {
+std::string unsuitability(VkInstance instance, VkPhysicalDevice device, const ContextOptions& options) {
   VkPhysicalDeviceProperties props{};
   vkGetPhysicalDeviceProperties(device, &props);
-  if (props.apiVersion < VK_API_VERSION_1_3) return "Vulkan 1.3 is not supported";
-  if (!has_device_extension(device, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME))
-    return "VK_KHR_push_descriptor is not supported";
-  VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-  VkPhysicalDeviceFeatures2 f2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f13};
-  vkGetPhysicalDeviceFeatures2(device, &f2);
-  if (!f13.dynamicRendering || !f13.synchronization2) return "dynamic rendering or synchronization2 missing";
-  if (!f2.features.geometryShader) return "geometry shaders are not supported";
-  if (!f2.features.largePoints) return "large points are not supported";
-  uint32_t count = 0;
-  vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
-  std::vector<VkQueueFamilyProperties> families(count);
-  vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
-  for (const auto& family : families)
-    if (family.queueFlags & VK_QUEUE_GRAPHICS_BIT) return "";
-  return "no graphics queue";
+  DeviceFeatures supported;
+  supported.query(device);
+  const std::vector<std::string> extensions = device_extensions(device);
+  std::vector<std::string> missing = missing_requirements(supported, extensions, props.apiVersion);
+  for (const char* extension : options.device_extensions)
+    if (std::find(extensions.begin(), extensions.end(), extension) == extensions.end()) missing.push_back(extension);
+  if (!missing.empty()) return "not supported: " + joined(missing);
+  if (!graphics_family(instance, device, options)) return "no graphics queue family the host accepts";
+  return "";
 }
 
 std::string lower(std::string s) {
@@ -89,8 +102,44 @@ Context::Context(const ContextOptions& options) : print_messages_(options.print_
     if (const char* env = std::getenv("LIQUID_DEVICE")) preference = env;
   try {
     create_instance(options);
-    pick_physical_device(preference);
-    create_device();
+    pick_physical_device(preference, options);
+    create_device(options);
+    finish_setup();
+  } catch (...) {
+    release();
+    throw;
+  }
+}
+
+Context::Context(const HostDevice& host, const ContextOptions& options)
+    : instance_(host.instance),
+      physical_device_(host.physical_device),
+      device_(host.device),
+      queue_family_(host.queue_family),
+      print_messages_(options.print_validation_messages),
+      owns_device_(false) {
+  try {
+    if (!instance_ || !physical_device_ || !device_)
+      throw NoDeviceError("the host device is incomplete (instance, physical device and device are required)");
+    read_device_properties();
+    DeviceFeatures enabled;
+    enabled.read_chain(host.enabled_features);
+    const std::vector<std::string> missing =
+        missing_requirements(enabled, host.enabled_device_extensions, std::min(host.api_version, properties_.apiVersion));
+    if (!missing.empty())
+      throw NoDeviceError("the host's Vulkan device lacks what the library needs: " + joined(missing));
+    uint32_t count = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(physical_device_, &count, nullptr);
+    std::vector<VkQueueFamilyProperties> families(count);
+    vkGetPhysicalDeviceQueueFamilyProperties(physical_device_, &count, families.data());
+    if (queue_family_ >= count || !(families[queue_family_].queueFlags & VK_QUEUE_GRAPHICS_BIT))
+      throw NoDeviceError("the host's queue family " + std::to_string(queue_family_) + " has no graphics");
+    if (host.queue_index >= families[queue_family_].queueCount)
+      throw NoDeviceError("the host's queue index " + std::to_string(host.queue_index) + " does not exist");
+    vertex_layer_output_ = enabled.v12.shaderOutputLayer == VK_TRUE;
+    vkGetDeviceQueue(device_, queue_family_, host.queue_index, &queue_);
+    if (host.debug_utils) create_messenger();
+    finish_setup();
   } catch (...) {
     release();
     throw;
@@ -101,9 +150,11 @@ Context::~Context() { release(); }
 
 void Context::release() {
   if (device_) {
-    vkDeviceWaitIdle(device_);
+    // A host's device may still run the host's own work: wait for our queue only.
+    if (owns_device_) vkDeviceWaitIdle(device_);
+    else if (queue_) vkQueueWaitIdle(queue_);
     if (command_pool_) vkDestroyCommandPool(device_, command_pool_, nullptr);
-    vkDestroyDevice(device_, nullptr);
+    if (owns_device_) vkDestroyDevice(device_, nullptr);
     device_ = VK_NULL_HANDLE;
   }
   if (messenger_) {
@@ -113,7 +164,7 @@ void Context::release() {
     messenger_ = VK_NULL_HANDLE;
   }
   if (instance_) {
-    vkDestroyInstance(instance_, nullptr);
+    if (owns_device_) vkDestroyInstance(instance_, nullptr);
     instance_ = VK_NULL_HANDLE;
   }
 }
@@ -145,6 +196,7 @@ void Context::create_instance(const ContextOptions& options) {
   messenger_info.pfnUserCallback = debug_callback;
   messenger_info.pUserData = this;
 
+  extensions.insert(extensions.end(), options.instance_extensions.begin(), options.instance_extensions.end());
   VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
   info.pApplicationInfo = &app;
   if (options.validation) {
@@ -167,16 +219,25 @@ void Context::create_instance(const ContextOptions& options) {
                         result_name(result) + ")");
   VK_CHECK(result);
 
-  if (options.validation) {
-    auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-        vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
-    VK_CHECK(create(instance_, &messenger_info, nullptr, &messenger_));
-    set_object_name_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
-        vkGetInstanceProcAddr(instance_, "vkSetDebugUtilsObjectNameEXT"));
-  }
+  if (options.validation) create_messenger();
 }
 
-void Context::pick_physical_device(const std::string& preference) {
+void Context::create_messenger() {
+  VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+  info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                     VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+  info.pfnUserCallback = debug_callback;
+  info.pUserData = this;
+  auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+      vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
+  if (!create) throw std::runtime_error("VK_EXT_debug_utils is not enabled on the instance");
+  VK_CHECK(create(instance_, &info, nullptr, &messenger_));
+  set_object_name_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
+      vkGetInstanceProcAddr(instance_, "vkSetDebugUtilsObjectNameEXT"));
+}
+
+void Context::pick_physical_device(const std::string& preference, const ContextOptions& options) {
   uint32_t count = 0;
   const VkResult result = vkEnumeratePhysicalDevices(instance_, &count, nullptr);
   if (result != VK_SUCCESS || count == 0) throw NoDeviceError("no Vulkan device found");
@@ -188,7 +249,7 @@ void Context::pick_physical_device(const std::string& preference) {
   for (uint32_t i = 0; i < count; ++i) {
     VkPhysicalDeviceProperties props{};
     vkGetPhysicalDeviceProperties(devices[i], &props);
-    const std::string why = unsuitability(devices[i]);
+    const std::string why = unsuitability(instance_, devices[i], options);
     if (!why.empty()) {
       reasons += std::string(reasons.empty() ? "" : "; ") + props.deviceName + ": " + why;
       continue;
@@ -211,7 +272,10 @@ void Context::pick_physical_device(const std::string& preference) {
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
   physical_device_ = candidates.front().second;
+  read_device_properties();
+}
 
+void Context::read_device_properties() {
   VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
   VkPhysicalDeviceProperties2 props2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &driver};
   vkGetPhysicalDeviceProperties2(physical_device_, &props2);
@@ -220,50 +284,34 @@ void Context::pick_physical_device(const std::string& preference) {
   vkGetPhysicalDeviceMemoryProperties(physical_device_, &memory_properties_);
 }
 
-void Context::create_device() {
-  uint32_t count = 0;
-  vkGetPhysicalDeviceQueueFamilyProperties(physical_device_, &count, nullptr);
-  std::vector<VkQueueFamilyProperties> families(count);
-  vkGetPhysicalDeviceQueueFamilyProperties(physical_device_, &count, families.data());
-  for (uint32_t i = 0; i < count; ++i)
-    if (families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) {
-      queue_family_ = i;
-      break;
-    }
-
+void Context::create_device(const ContextOptions& options) {
+  queue_family_ = *graphics_family(instance_, physical_device_, options);
   const float priority = 1.0f;
   VkDeviceQueueCreateInfo queue_info{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
   queue_info.queueFamilyIndex = queue_family_;
   queue_info.queueCount = 1;
   queue_info.pQueuePriorities = &priority;
 
-  VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-  f13.dynamicRendering = VK_TRUE;
-  f13.synchronization2 = VK_TRUE;
-  VkPhysicalDeviceVulkan12Features supported12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
-  VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &supported12};
-  vkGetPhysicalDeviceFeatures2(physical_device_, &supported);
-  VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &f13};
-  f12.hostQueryReset = VK_TRUE;
-  // gl_Layer from the vertex shader: the 3D splat routes each particle's slices without a
-  // geometry shader.
-  f12.shaderOutputLayer = supported12.shaderOutputLayer;
-  vertex_layer_output_ = supported12.shaderOutputLayer == VK_TRUE;
-  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f12};
-  features.features.geometryShader = VK_TRUE;
-  features.features.largePoints = VK_TRUE;
+  DeviceFeatures supported, enabled;
+  supported.query(physical_device_);
+  enable_required(enabled, supported);
+  if (options.enable_features) options.enable_features(enabled, supported);
+  vertex_layer_output_ = enabled.v12.shaderOutputLayer == VK_TRUE;
 
-  const char* extensions[] = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
-  VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};
+  std::vector<const char*> extensions = required_device_extensions();
+  extensions.insert(extensions.end(), options.device_extensions.begin(), options.device_extensions.end());
+  VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, enabled.chain()};
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queue_info;
-  info.enabledExtensionCount = 1;
-  info.ppEnabledExtensionNames = extensions;
+  info.enabledExtensionCount = uint32_t(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
   VK_CHECK(vkCreateDevice(physical_device_, &info, nullptr, &device_));
   vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
+}
+
+void Context::finish_setup() {
   cmd_push_descriptor_set = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
       vkGetDeviceProcAddr(device_, "vkCmdPushDescriptorSetKHR"));
-
   VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   pool_info.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
   pool_info.queueFamilyIndex = queue_family_;

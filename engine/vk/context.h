@@ -1,13 +1,19 @@
-// The headless Vulkan context: instance, one physical device, one graphics queue, a command pool,
-// and (when asked) the validation layer with synchronization validation and a message counter.
+// The Vulkan context the library runs on: instance, one physical device, one graphics queue, a
+// command pool, and (when asked) the validation layer with synchronization validation and a message
+// counter. It either creates all of that itself or adopts a host engine's own instance, device and
+// queue without owning them.
 #pragma once
+
+#include "engine/vk/device_requirements.h"
 
 #include <vulkan/vulkan.h>
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace engine::vk {
 
@@ -27,11 +33,40 @@ struct ContextOptions {
   std::string device;
   // Print validation messages to stderr as they come (they are counted either way).
   bool print_validation_messages = true;
+
+  // When the context creates the device: more instance and device extensions (for a window:
+  // VK_KHR_surface + the platform's surface extension, and VK_KHR_swapchain), more features on top
+  // of the library's (`enable` is what will be enabled, `supported` what the device has), and a
+  // test for the queue family (e.g. that it can present to the host's surface).
+  std::vector<const char*> instance_extensions;
+  std::vector<const char*> device_extensions;
+  std::function<void(DeviceFeatures& enable, const DeviceFeatures& supported)> enable_features;
+  std::function<bool(VkInstance, VkPhysicalDevice, uint32_t queue_family)> queue_family_filter;
+};
+
+// A host engine's own device, for Context(const HostDevice&): nothing here is destroyed by the
+// library. The host creates its device with k_required_api_version, required_device_extensions()
+// and enable_required() (device_requirements.h) and passes what it enabled, so that a missing
+// requirement is reported by name instead of failing later.
+struct HostDevice {
+  VkInstance instance = VK_NULL_HANDLE;
+  VkPhysicalDevice physical_device = VK_NULL_HANDLE;
+  VkDevice device = VK_NULL_HANDLE;
+  uint32_t queue_family = 0;  // must support graphics
+  uint32_t queue_index = 0;
+  uint32_t api_version = VK_API_VERSION_1_3;   // VkApplicationInfo::apiVersion the host asked for
+  std::vector<std::string> enabled_device_extensions;
+  const void* enabled_features = nullptr;      // the VkDeviceCreateInfo::pNext chain it used
+  // The instance was created with VK_EXT_debug_utils (and, for tests, the validation layer): the
+  // context then adds a messenger that counts validation messages.
+  bool debug_utils = false;
 };
 
 class Context {
  public:
   explicit Context(const ContextOptions& options = {});
+  // Adopts a host's device. Throws NoDeviceError naming every requirement the device lacks.
+  explicit Context(const HostDevice& host, const ContextOptions& options = {});
   ~Context();
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
@@ -49,6 +84,8 @@ class Context {
   std::string driver_description() const { return driver_description_; }
   bool is_cpu_device() const { return properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
   bool validation_enabled() const { return messenger_ != VK_NULL_HANDLE; }
+  // False when the device is a host's (adopted): the host destroys it.
+  bool owns_device() const { return owns_device_; }
   // Whether vertex shaders may write gl_Layer (Vulkan 1.2 shaderOutputLayer).
   bool supports_vertex_layer_output() const { return vertex_layer_output_; }
 
@@ -73,8 +110,11 @@ class Context {
 
  private:
   void create_instance(const ContextOptions& options);
-  void pick_physical_device(const std::string& preference);
-  void create_device();
+  void create_messenger();
+  void pick_physical_device(const std::string& preference, const ContextOptions& options);
+  void read_device_properties();
+  void create_device(const ContextOptions& options);
+  void finish_setup();
   void release();
 
   VkInstance instance_ = VK_NULL_HANDLE;
@@ -88,6 +128,7 @@ class Context {
   uint32_t queue_family_ = 0;
   VkCommandPool command_pool_ = VK_NULL_HANDLE;
   bool print_messages_ = true;
+  bool owns_device_ = true;
   bool vertex_layer_output_ = false;
   std::atomic<uint32_t> validation_messages_{0};
   mutable std::string last_message_;

@@ -67,9 +67,28 @@ Image::Image(Context& context, const ImageDesc& desc, const std::string& name)
   VK_CHECK(vkAllocateMemory(device, &alloc, nullptr, &memory));
   objects_->memory = {device, memory, vkFreeMemory};
   VK_CHECK(vkBindImageMemory(device, image, memory, 0));
+  create_views(context);
+  context.set_name(VK_OBJECT_TYPE_IMAGE, reinterpret_cast<uint64_t>(image), name);
+}
 
+Image Image::wrap(Context& context, VkImage image, const ImageDesc& desc, const std::string& name,
+                  const ImageSyncState& state) {
+  if (image == VK_NULL_HANDLE) throw std::invalid_argument("Image::wrap: '" + name + "' is a null VkImage");
+  Image wrapped;
+  wrapped.desc_ = desc;
+  wrapped.name_ = name;
+  wrapped.sync_ = state;
+  // Borrowed: destroying the wrapper leaves the host's image alone.
+  wrapped.objects_->image = {context.device(), image, [](VkDevice, VkImage, const VkAllocationCallbacks*) {}};
+  wrapped.create_views(context);
+  return wrapped;
+}
+
+void Image::create_views(Context& context) {
+  const VkDevice device = context.device();
+  const ImageDesc& desc = desc_;
   VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-  view.image = image;
+  view.image = objects_->image.get();
   view.format = desc.format;
   view.subresourceRange = full_range();
   view.viewType = desc.kind == ImageKind::Image3D        ? VK_IMAGE_VIEW_TYPE_3D
@@ -89,7 +108,6 @@ Image::Image(Context& context, const ImageDesc& desc, const std::string& name)
     }
     objects_->attachment_view = create_view();
   }
-  context.set_name(VK_OBJECT_TYPE_IMAGE, reinterpret_cast<uint64_t>(image), name);
 }
 
 VkImageAspectFlags Image::aspect() const {

@@ -41,6 +41,18 @@ struct ImageSyncState {
   VkPipelineStageFlags2 read_stages = 0;  // readers since the last write
   VkAccessFlags2 read_access = 0;
   VkPipelineStageFlags2 visible_stages = 0;  // stages that already see the last write
+
+  // An image in `layout` whose last use was a write by `stages` with `access` (for example a host's
+  // colour target just rendered: COLOR_ATTACHMENT_OPTIMAL, COLOR_ATTACHMENT_OUTPUT,
+  // COLOR_ATTACHMENT_WRITE). The graph's first use waits for that write.
+  static ImageSyncState after_write(VkImageLayout layout, VkPipelineStageFlags2 stages, VkAccessFlags2 access) {
+    return {layout, stages, access, 0, 0, 0};
+  }
+  // An image in `layout` whose writes are all visible, last read by `stages` (or never used:
+  // UNDEFINED with no stages, e.g. a swapchain image just acquired).
+  static ImageSyncState after_read(VkImageLayout layout, VkPipelineStageFlags2 stages, VkAccessFlags2 access) {
+    return {layout, 0, 0, stages, access, 0};
+  }
 };
 
 bool is_depth_format(VkFormat format);
@@ -50,6 +62,15 @@ class Image {
  public:
   Image() = default;
   Image(Context& context, const ImageDesc& desc, const std::string& name);
+
+  // A host-owned VkImage (its colour or depth target, a swapchain image) made usable by the graph:
+  // the views are created and owned here, the image and its memory stay the host's and must
+  // outlive this object. `desc.usage` is the usage the host created it with; `state` is where the
+  // host left it. The graph updates sync_state() as it runs, so after the frame the host reads the
+  // layout and last access it was left in.
+  static Image wrap(Context& context, VkImage image, const ImageDesc& desc, const std::string& name,
+                    const ImageSyncState& state);
+  bool owns_memory() const { return bool(objects_->memory); }
 
   VkImage handle() const { return objects_->image.get(); }
   // View for sampling: 2D, 2D_ARRAY or 3D matching the kind.
@@ -71,6 +92,8 @@ class Image {
     UniqueHandle<VkImageView> sampled_view;
     UniqueHandle<VkImageView> attachment_view;
   };
+
+  void create_views(Context& context);
 
   HandleGroup<Objects> objects_;
   ImageDesc desc_{};

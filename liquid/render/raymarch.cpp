@@ -22,9 +22,22 @@ namespace {
 constexpr float k_fine_step_cells = 0.6f;
 constexpr int k_bisection_steps = 5;
 
+// The scene's constants plus the raymarch's own (constant_id LIQUID_RAYMARCH_COMPOSITE_ID).
+std::vector<int32_t> raymarch_specialization(const LiquidNode& node, bool composite) {
+  static_assert(LIQUID_RAYMARCH_COMPOSITE_ID == specialization_id::count, "the raymarch's constant follows the scene's");
+  std::vector<int32_t> constants = scene_specialization(node.scene(), node.setup());
+  constants.push_back(composite ? 1 : 0);
+  return constants;
+}
+
 }  // namespace
 
-RaymarchPass::RaymarchPass(engine::vk::Context& context, const LiquidNode& node)
+glm::mat4 raymarch_view_projection(const SimulationSetup& setup, const CameraView& camera, float aspect) {
+  const float far_plane = 4.0f * glm::length(setup.domain) + glm::length(camera.position - camera.target) * 2.0f;
+  return view_projection(camera, aspect, 0.01f, far_plane);
+}
+
+RaymarchPass::RaymarchPass(engine::vk::Context& context, const LiquidNode& node, bool composite)
     : node_(node),
       occupancy_(context, engine::vk::GraphicsPipelineDesc{
                               .name = "liquid.occupancy",
@@ -39,6 +52,9 @@ RaymarchPass::RaymarchPass(engine::vk::Context& context, const LiquidNode& node)
                              .vertex = engine::passes::fullscreen_vertex_shader(),
                              .fragment = liquid_shaders::raymarch_frag,
                              .color_formats = {k_color_format},
+                             // Composited: blended over the host's colour (the shader writes the
+                             // liquid's coverage in alpha).
+                             .blend = {composite ? engine::vk::BlendMode::Alpha : engine::vk::BlendMode::None},
                              .depth_format = k_depth_format,
                              .depth_test = true,
                              .depth_write = true,
@@ -46,20 +62,23 @@ RaymarchPass::RaymarchPass(engine::vk::Context& context, const LiquidNode& node)
                                           {LIQUID_BINDING_VIEW_UNIFORMS, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
                                           {LIQUID_BINDING_RAYMARCH_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
                                           {LIQUID_BINDING_RAYMARCH_OCCUPANCY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
-                             .specialization = scene_specialization(node.scene(), node.setup())}),
+                             .specialization = raymarch_specialization(node, composite)}),
       linear_(context, VK_FILTER_LINEAR),
       nearest_(context, VK_FILTER_NEAREST),
-      uniforms_(context, node, sizeof(gpu::RaymarchUniforms)) {}
+      uniforms_(context, node, sizeof(gpu::RaymarchUniforms)),
+      composite_(composite) {}
 
 RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
-                                           const RenderSettings& settings, const CameraView& camera) {
+                                           const RenderSettings& settings, const CameraView& camera,
+                                           const HostTargets* targets) {
+  if (bool(targets) != composite_)
+    throw std::logic_error(composite_ ? "liquid.raymarch: a compositing pass draws into host targets"
+                                      : "liquid.raymarch: host targets need a compositing pass");
   const SimulationSetup& setup = node_.setup();
   const engine::vk::UniformSlice solver = uniforms_.begin_frame();
 
   const glm::ivec3 bricks = (setup.grid_cells + k_brick_cells - 1) / k_brick_cells;
-  const float aspect = float(settings.width) / float(settings.height);
-  const float far_plane = 4.0f * glm::length(setup.domain) + glm::length(camera.position - camera.target) * 2.0f;
-  const glm::mat4 vp = view_projection(camera, aspect, 0.01f, far_plane);
+  const glm::mat4 vp = raymarch_view_projection(setup, camera, float(settings.width) / float(settings.height));
   gpu::RaymarchUniforms render{};
   render.inverse_view_projection = glm::inverse(vp);
   render.view_projection = vp;
@@ -114,9 +133,14 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
         d.bindings.bind_image(b, LIQUID_BINDING_RAYMARCH_DENSITY, density, linear_.handle());
         d.bindings.bind_image(b, LIQUID_BINDING_RAYMARCH_OCCUPANCY, occupancy, nearest_.handle());
         Outputs& out = d.out;
-        out.color = b.write(b.create("liquid.color", color_desc), Access::ColorAttachmentWrite);
-        out.depth = b.write(b.create("liquid.depth", depth_desc), Access::DepthAttachmentWrite,
-                            engine::graph::clear_depth(1.0f));
+        if (targets) {  // over the host's colour, tested against and written into its depth
+          out.color = b.write(targets->color, Access::ColorAttachmentBlend);
+          out.depth = b.write(targets->depth, Access::DepthAttachmentWrite, {engine::graph::LoadOp::Load, {}});
+        } else {
+          out.color = b.write(b.create("liquid.color", color_desc), Access::ColorAttachmentWrite);
+          out.depth = b.write(b.create("liquid.depth", depth_desc), Access::DepthAttachmentWrite,
+                              engine::graph::clear_depth(1.0f));
+        }
       },
       [](PassContext& ctx, const RaymarchData& d) {
         d.bindings.bind_and_push(ctx);

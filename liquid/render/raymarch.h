@@ -13,16 +13,21 @@
 
 namespace liquid {
 
+// The view-projection the raymarch uses (near plane 1 cm, far plane beyond the domain and camera).
+glm::mat4 raymarch_view_projection(const SimulationSetup& setup, const CameraView& camera, float aspect);
+
 class RaymarchPass {
  public:
-  RaymarchPass(engine::vk::Context& context, const LiquidNode& node);
+  // `composite`: draw the liquid alone into host targets (see HostTargets) instead of a full frame.
+  RaymarchPass(engine::vk::Context& context, const LiquidNode& node, bool composite);
 
   struct Outputs {
     engine::graph::ImageHandle color;
     engine::graph::ImageHandle depth;
   };
+  // With `targets` (a compositing pass), draws into them; otherwise into new images.
   Outputs add_to(engine::graph::RenderGraph& graph, const LiquidImages& images, const RenderSettings& settings,
-                 const CameraView& camera);
+                 const CameraView& camera, const HostTargets* targets = nullptr);
 
   static constexpr int k_brick_cells = 4;  // occupancy block edge, in grid cells
 
@@ -33,6 +38,7 @@ class RaymarchPass {
   engine::vk::Sampler linear_;
   engine::vk::Sampler nearest_;
   ViewUniforms uniforms_;
+  bool composite_ = false;
 };
 
 }  // namespace liquid

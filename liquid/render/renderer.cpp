@@ -20,16 +20,42 @@ LiquidRenderer::LiquidRenderer(engine::vk::Context& context, const LiquidNode& n
   if (setup.shallow_water)
     height_field_ = std::make_unique<HeightFieldPass>(context, node);
   else if (setup.dimension == 3)
-    raymarch_ = std::make_unique<RaymarchPass>(context, node);
+    raymarch_ = std::make_unique<RaymarchPass>(context, node, settings.composite);
   else
     view2d_ = std::make_unique<View2dPass>(context, node);
+  if (settings.composite && !raymarch_)
+    throw std::invalid_argument("liquid: compositing into host targets needs a 3D liquid scene");
   if (settings.fxaa) fxaa_ = std::make_unique<engine::passes::FxaaPass>(context, k_color_format);
+}
+
+glm::mat4 LiquidRenderer::view_projection(const CameraView& camera) const {
+  return raymarch_view_projection(node_.setup(), camera, float(settings_.width) / float(settings_.height));
 }
 
 LiquidRenderer::~LiquidRenderer() = default;
 
 RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
+                                     const CameraView& camera, const HostTargets& targets) {
+  if (!settings_.composite) throw std::logic_error("liquid: add_to with host targets needs RenderSettings::composite");
+  const auto check = [&](engine::graph::ImageHandle image, VkFormat format, const char* what) {
+    const engine::vk::ImageDesc& d = graph.image_desc(image);
+    if (d.kind != engine::vk::ImageKind::Image2D || d.format != format || d.width != settings_.width ||
+        d.height != settings_.height)
+      throw std::invalid_argument(std::string("liquid: the host's ") + what + " target '" + graph.image_name(image) +
+                                  "' must be a " + std::to_string(settings_.width) + "x" +
+                                  std::to_string(settings_.height) + " 2D image of the renderer's format");
+  };
+  check(targets.color, k_color_format, "colour");
+  check(targets.depth, k_depth_format, "depth");
+  const RaymarchPass::Outputs r = raymarch_->add_to(graph, images, settings_, camera, &targets);
+  RenderOutputs out{r.color, r.depth, r.color};
+  if (fxaa_) out.final = fxaa_->add_to(graph, out.color);
+  return out;
+}
+
+RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
                                      const CameraView& camera) {
+  if (settings_.composite) throw std::logic_error("liquid: a compositing renderer draws into host targets");
   RenderOutputs out;
   if (raymarch_) {
     const RaymarchPass::Outputs r = raymarch_->add_to(graph, images, settings_, camera);

@@ -27,6 +27,19 @@ struct RenderSettings {
   float iso_level = 0.5f;  // surface where rho / rho0 crosses this value
   bool fxaa = true;
   bool draw_particles = false;  // 2D views: the particles as points over the liquid
+  // 3D: draw into the host's own colour and depth targets (add_to with HostTargets) instead of a
+  // frame of the renderer's own with its floor, sky and tank.
+  bool composite = false;
+};
+
+// A host's own targets for compositing (RenderSettings::composite): its colour (RGBA8 UNORM) and
+// depth (D32_SFLOAT) images at the renderer's size, imported into the graph with their contents
+// (engine::vk::Image::wrap + RenderGraph::import_image). The liquid is blended over the colour
+// where its surface is nearer than the host's depth, and writes its own depth there, so host
+// geometry in front hides the liquid and the host's later passes see the liquid's depth.
+struct HostTargets {
+  engine::graph::ImageHandle color;
+  engine::graph::ImageHandle depth;
 };
 
 struct RenderOutputs {
@@ -46,7 +59,16 @@ class LiquidRenderer {
   ~LiquidRenderer();
 
   RenderOutputs add_to(engine::graph::RenderGraph& graph, const LiquidImages& images, const CameraView& camera);
+  // Composites into the host's targets (3D scenes, RenderSettings::composite); `color` and `depth`
+  // of the result are the targets' new versions, `final` the FXAA output (or `color`).
+  RenderOutputs add_to(engine::graph::RenderGraph& graph, const LiquidImages& images, const CameraView& camera,
+                       const HostTargets& targets);
   const RenderSettings& settings() const { return settings_; }
+
+  // The view-projection (Vulkan clip space, y down, depth 0..1) the 3D view uses for `camera` at
+  // the renderer's aspect ratio: a host compositing with depth draws its geometry with this matrix
+  // so that its depths and the liquid's agree.
+  glm::mat4 view_projection(const CameraView& camera) const;
 
  private:
   const LiquidNode& node_;

@@ -105,7 +105,12 @@ TEST_CASE("shaders declare the specialization ids the host fills in", "[shaders]
       {"height field", liquid_shaders::height_field_vert}};
   for (const auto& [name, spirv] : modules) {
     INFO(name);
-    const std::map<std::string, uint32_t> found = specialization_ids(spirv);
+    std::map<std::string, uint32_t> found = specialization_ids(spirv);
+    // The raymarch has one of its own after the scene's (liquid/render/raymarch.cpp checks the id).
+    if (name == "raymarch") {
+      CHECK(found["COMPOSITE"] == uint32_t(LIQUID_RAYMARCH_COMPOSITE_ID));
+      found.erase("COMPOSITE");
+    }
     // Each module declares all of them (they come from one include) and each with the host's id.
     CHECK(found == expected);
   }

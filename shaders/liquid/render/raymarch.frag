@@ -17,6 +17,11 @@ layout(std140, set = 0, binding = LIQUID_BINDING_VIEW_UNIFORMS) uniform Raymarch
 layout(set = 0, binding = LIQUID_BINDING_RAYMARCH_DENSITY) uniform sampler3D u_density;    // rho / rho0, linear filtering
 layout(set = 0, binding = LIQUID_BINDING_RAYMARCH_OCCUPANCY) uniform sampler3D u_occupancy;  // per-brick max, nearest
 
+// Composited into a host's frame (LiquidRenderer with HostTargets): no floor, sky or tank of our
+// own; the liquid is blended over the host's colour with its coverage in alpha, and pixels that
+// show no liquid are left to the host.
+layout(constant_id = LIQUID_RAYMARCH_COMPOSITE_ID) const bool COMPOSITE = false;
+
 layout(location = 0) in vec2 v_uv;
 layout(location = 0) out vec4 out_color;
 
@@ -257,13 +262,27 @@ void main() {
       if (any(lessThan(q, vec3(0.0))) || any(greaterThan(q, u.domain))) break;
       if (density_at(q) > r.iso_level) thickness += step_length;
     }
+    float spec = pow(max(dot(n, normalize(r.sun_direction - dir)), 0.0), 180.0);
+    vec3 scattered = vec3(0.01, 0.05, 0.08) * (1.0 - exp(-2.0 * thickness));
+    if (COMPOSITE) {
+      // What shows through is the host's colour behind (blending): it is dimmed by the mean
+      // transmittance; the rest is reflection, scattering and highlight.
+      vec3 transmittance = exp(-k_absorption * (thickness + 0.02));
+      float through = (1.0 - fresnel) * dot(transmittance, vec3(1.0 / 3.0));
+      vec3 own = fresnel * reflected + (1.0 - fresnel) * scattered + vec3(1.0, 0.97, 0.9) * spec * 1.5;
+      own = own / (1.0 + 0.15 * own);
+      float coverage = 1.0 - through;
+      gl_FragDepth = clip_depth(p);
+      out_color = vec4(pow(clamp(own / max(coverage, 1e-3), 0.0, 1.0), vec3(1.0 / 2.2)), coverage);
+      return;
+    }
     float behind_t;
     vec3 behind = background(p + refracted_dir * 1e-3, refracted_dir, behind_t);
-    vec3 transmitted = behind * exp(-k_absorption * (thickness + 0.02)) + vec3(0.01, 0.05, 0.08) * (1.0 - exp(-2.0 * thickness));
-    float spec = pow(max(dot(n, normalize(r.sun_direction - dir)), 0.0), 180.0);
+    vec3 transmitted = behind * exp(-k_absorption * (thickness + 0.02)) + scattered;
     color = mix(transmitted, reflected, fresnel) + vec3(1.0, 0.97, 0.9) * spec * 1.5;
     depth_t = t_liquid;
   } else {
+    if (COMPOSITE) discard;
     color = background(origin, dir, depth_t);
   }
 

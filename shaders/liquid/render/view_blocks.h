@@ -6,6 +6,10 @@
 
 #include "../shared.h"
 
+// Raymarch: the specialization constant that makes it draw the liquid alone over a host's targets
+// (its id follows the scene's constants of common.glsl; raymarch.cpp checks that).
+#define LIQUID_RAYMARCH_COMPOSITE_ID 13
+
 // Height field: which mesh a draw makes.
 #define LIQUID_HEIGHT_FIELD_GROUND 0
 #define LIQUID_HEIGHT_FIELD_WATER 1

@@ -1,0 +1,28 @@
+# Install rules and the package files, so a host finds the libraries with
+#   find_package(RasterLiquids CONFIG REQUIRED)  ->  RasterLiquids::engine, RasterLiquids::liquid
+# against an install prefix (cmake --install) or this build tree. Public headers go under
+# include/rasterliquids/ with the same paths as in the source tree (#include "liquid/node.h").
+# The SPIR-V stays embedded in the (static) shader libraries, which are installed beside them.
+include(CMakePackageConfigHelpers)
+set(package_dir "${CMAKE_INSTALL_LIBDIR}/cmake/RasterLiquids")
+
+install(TARGETS rasterliquids_engine rasterliquids_engine_shaders rasterliquids_liquid rasterliquids_liquid_shaders
+        EXPORT RasterLiquidsTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        INCLUDES DESTINATION ${RASTERLIQUIDS_INCLUDE_DIR})
+install(DIRECTORY engine liquid DESTINATION ${RASTERLIQUIDS_INCLUDE_DIR} FILES_MATCHING PATTERN "*.h")
+install(FILES shaders/liquid/shared.h DESTINATION ${RASTERLIQUIDS_INCLUDE_DIR}/shaders/liquid)
+install(FILES shaders/liquid/render/view_blocks.h DESTINATION ${RASTERLIQUIDS_INCLUDE_DIR}/shaders/liquid/render)
+install(EXPORT RasterLiquidsTargets NAMESPACE RasterLiquids:: DESTINATION ${package_dir})
+
+configure_package_config_file(cmake/RasterLiquidsConfig.cmake.in
+  "${PROJECT_BINARY_DIR}/RasterLiquidsConfig.cmake" INSTALL_DESTINATION ${package_dir})
+write_basic_package_version_file("${PROJECT_BINARY_DIR}/RasterLiquidsConfigVersion.cmake"
+  COMPATIBILITY SameMinorVersion)
+install(FILES "${PROJECT_BINARY_DIR}/RasterLiquidsConfig.cmake" "${PROJECT_BINARY_DIR}/RasterLiquidsConfigVersion.cmake"
+              cmake/EmbedShaders.cmake
+        DESTINATION ${package_dir})
+
+# The build tree as a package too (find_package with RasterLiquids_DIR=<build>).
+export(EXPORT RasterLiquidsTargets NAMESPACE RasterLiquids:: FILE "${PROJECT_BINARY_DIR}/RasterLiquidsTargets.cmake")
+file(COPY cmake/EmbedShaders.cmake DESTINATION "${PROJECT_BINARY_DIR}")

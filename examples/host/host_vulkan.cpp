@@ -1,0 +1,139 @@
+#include "host_vulkan.h"
+
+#include "engine/vk/device_requirements.h"
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+
+void host_check(VkResult result, const char* call) {
+  if (result != VK_SUCCESS) throw std::runtime_error(std::string(call) + " failed (VkResult " + std::to_string(result) + ")");
+}
+
+HostVulkan::HostVulkan(bool with_validation) : validation(with_validation) {
+  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+  app.pApplicationName = "liquid_host";
+  app.apiVersion = engine::vk::k_required_api_version;
+  const char* layer = "VK_LAYER_KHRONOS_validation";
+  const char* debug_utils = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
+  VkValidationFeatureEnableEXT sync = VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
+  VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+  features.enabledValidationFeatureCount = 1;
+  features.pEnabledValidationFeatures = &sync;
+  VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+  info.pApplicationInfo = &app;
+  if (validation) {
+    info.pNext = &features;
+    info.enabledLayerCount = 1;
+    info.ppEnabledLayerNames = &layer;
+    info.enabledExtensionCount = 1;
+    info.ppEnabledExtensionNames = &debug_utils;
+  }
+  host_check(vkCreateInstance(&info, nullptr, &instance), "vkCreateInstance");
+
+  // The first device with Vulkan 1.3, what the library needs, and a graphics queue.
+  uint32_t count = 0;
+  vkEnumeratePhysicalDevices(instance, &count, nullptr);
+  std::vector<VkPhysicalDevice> devices(count);
+  vkEnumeratePhysicalDevices(instance, &count, devices.data());
+  std::string reasons;
+  for (VkPhysicalDevice candidate : devices) {
+    VkPhysicalDeviceProperties props{};
+    vkGetPhysicalDeviceProperties(candidate, &props);
+    engine::vk::DeviceFeatures supported;
+    supported.query(candidate);
+    uint32_t n = 0;
+    vkEnumerateDeviceExtensionProperties(candidate, nullptr, &n, nullptr);
+    std::vector<VkExtensionProperties> available(n);
+    vkEnumerateDeviceExtensionProperties(candidate, nullptr, &n, available.data());
+    std::vector<std::string> names;
+    for (const auto& e : available) names.push_back(e.extensionName);
+    const auto missing = engine::vk::missing_requirements(supported, names, props.apiVersion);
+    if (!missing.empty()) {
+      reasons += std::string(props.deviceName) + " lacks " + missing.front() + "; ";
+      continue;
+    }
+    physical_device = candidate;
+    engine::vk::enable_required(enabled, supported);
+    break;
+  }
+  if (!physical_device) throw std::runtime_error("no Vulkan device can run the liquid: " + reasons);
+
+  vkGetPhysicalDeviceQueueFamilyProperties(physical_device, &count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(count);
+  vkGetPhysicalDeviceQueueFamilyProperties(physical_device, &count, families.data());
+  queue_family = uint32_t(std::find_if(families.begin(), families.end(),
+                                       [](const auto& f) { return (f.queueFlags & VK_QUEUE_GRAPHICS_BIT) != 0; }) -
+                          families.begin());
+  const float priority = 1.0f;
+  VkDeviceQueueCreateInfo queue_info{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+  queue_info.queueFamilyIndex = queue_family;
+  queue_info.queueCount = 1;
+  queue_info.pQueuePriorities = &priority;
+  std::vector<const char*> extensions = engine::vk::required_device_extensions();
+  for (const char* e : extensions) device_extensions.push_back(e);
+  VkDeviceCreateInfo device_info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, enabled.chain()};
+  device_info.queueCreateInfoCount = 1;
+  device_info.pQueueCreateInfos = &queue_info;
+  device_info.enabledExtensionCount = uint32_t(extensions.size());
+  device_info.ppEnabledExtensionNames = extensions.data();
+  host_check(vkCreateDevice(physical_device, &device_info, nullptr, &device), "vkCreateDevice");
+  vkGetDeviceQueue(device, queue_family, 0, &queue);
+}
+
+HostVulkan::~HostVulkan() {
+  if (device) {
+    vkDeviceWaitIdle(device);
+    vkDestroyDevice(device, nullptr);
+  }
+  if (instance) vkDestroyInstance(instance, nullptr);
+}
+
+engine::vk::HostDevice HostVulkan::host_device() const {
+  engine::vk::HostDevice host;
+  host.instance = instance;
+  host.physical_device = physical_device;
+  host.device = device;
+  host.queue_family = queue_family;
+  host.queue_index = 0;
+  host.api_version = engine::vk::k_required_api_version;
+  host.enabled_device_extensions = device_extensions;
+  host.enabled_features = &enabled.core;
+  host.debug_utils = validation;
+  return host;
+}
+
+HostImage::HostImage(VkPhysicalDevice physical_device, VkDevice device_, uint32_t width, uint32_t height,
+                     VkFormat format, VkImageUsageFlags usage)
+    : device(device_) {
+  VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+  info.imageType = VK_IMAGE_TYPE_2D;
+  info.format = format;
+  info.extent = {width, height, 1};
+  info.mipLevels = 1;
+  info.arrayLayers = 1;
+  info.samples = VK_SAMPLE_COUNT_1_BIT;
+  info.tiling = VK_IMAGE_TILING_OPTIMAL;
+  info.usage = usage;
+  info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  host_check(vkCreateImage(device, &info, nullptr, &image), "vkCreateImage");
+  VkMemoryRequirements requirements{};
+  vkGetImageMemoryRequirements(device, image, &requirements);
+  VkPhysicalDeviceMemoryProperties memory_properties{};
+  vkGetPhysicalDeviceMemoryProperties(physical_device, &memory_properties);
+  uint32_t type = 0;
+  while (type < memory_properties.memoryTypeCount &&
+         !((requirements.memoryTypeBits & (1u << type)) &&
+           (memory_properties.memoryTypes[type].propertyFlags & VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT)))
+    ++type;
+  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  alloc.allocationSize = requirements.size;
+  alloc.memoryTypeIndex = type;
+  host_check(vkAllocateMemory(device, &alloc, nullptr, &memory), "vkAllocateMemory");
+  host_check(vkBindImageMemory(device, image, memory, 0), "vkBindImageMemory");
+}
+
+HostImage::~HostImage() {
+  if (image) vkDestroyImage(device, image, nullptr);
+  if (memory) vkFreeMemory(device, memory, nullptr);
+}

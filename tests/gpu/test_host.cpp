@@ -1,0 +1,304 @@
+// The library inside a host engine: a device the host created itself (adopted, not owned), the
+// host's own images in the graph (written by the liquid, read back by the host from the state the
+// graph reports), depth compositing against the host's depth, and frames in flight.
+#include "engine/graph/transfer.h"
+#include "engine/vk/buffer.h"
+#include "engine/vk/commands.h"
+#include "examples/host/host_vulkan.h"
+#include "liquid/render/renderer.h"
+#include "tests/gpu/liquid_helpers.h"
+#include "tests/support/gpu.h"
+#include "tests/support/image_compare.h"
+
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <cstring>
+#include <memory>
+
+using engine::vk::Image;
+using engine::vk::ImageDesc;
+using engine::vk::ImageKind;
+using engine::vk::ImageSyncState;
+
+namespace {
+
+constexpr uint32_t k_width = 160;
+constexpr uint32_t k_height = 120;
+constexpr VkImageUsageFlags k_color_usage =
+    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+constexpr VkImageUsageFlags k_depth_usage =
+    VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+// The host's background: a colour the liquid's shading never produces.
+constexpr std::array<uint8_t, 4> k_magenta{255, 0, 255, 255};
+
+// The host's targets: VkImages with memory of their own (HostImage), wrapped for the graph.
+struct HostTargets {
+  explicit HostTargets(engine::vk::Context& context)
+      : color_image(context.physical_device(), context.device(), k_width, k_height, liquid::k_color_format, k_color_usage),
+        depth_image(context.physical_device(), context.device(), k_width, k_height, liquid::k_depth_format, k_depth_usage),
+        color(Image::wrap(context, color_image.image,
+                          ImageDesc{ImageKind::Image2D, k_width, k_height, 1, liquid::k_color_format, k_color_usage},
+                          "host.color", {})),
+        depth(Image::wrap(context, depth_image.image,
+                          ImageDesc{ImageKind::Image2D, k_width, k_height, 1, liquid::k_depth_format, k_depth_usage},
+                          "host.depth", {})) {}
+  HostImage color_image, depth_image;
+  Image color, depth;
+};
+
+// Barrier from wherever `image` stands to `layout` for transfers.
+void to_transfer(VkCommandBuffer cmd, Image& image, VkImageLayout layout, VkAccessFlags2 access, bool keep) {
+  const ImageSyncState& s = image.sync_state();
+  VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+  b.srcStageMask = s.write_stages | s.read_stages;
+  b.srcAccessMask = s.write_access;
+  b.dstStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
+  b.dstAccessMask = access;
+  b.oldLayout = keep ? s.layout : VK_IMAGE_LAYOUT_UNDEFINED;
+  b.newLayout = layout;
+  b.image = image.handle();
+  b.subresourceRange = image.full_range();
+  VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  dependency.imageMemoryBarrierCount = 1;
+  dependency.pImageMemoryBarriers = &b;
+  vkCmdPipelineBarrier2(cmd, &dependency);
+}
+
+// The host's own pass, outside the graph: the colour cleared to magenta, the depth to 1 (the far
+// plane). Leaves both as transfer writes.
+void host_clear(VkCommandBuffer cmd, HostTargets& t) {
+  to_transfer(cmd, t.color, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_ACCESS_2_TRANSFER_WRITE_BIT, false);
+  to_transfer(cmd, t.depth, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_ACCESS_2_TRANSFER_WRITE_BIT, false);
+  const VkClearColorValue magenta{{1.0f, 0.0f, 1.0f, 1.0f}};
+  const VkImageSubresourceRange color_range = t.color.full_range();
+  vkCmdClearColorImage(cmd, t.color.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &magenta, 1, &color_range);
+  const VkClearDepthStencilValue far{1.0f, 0};
+  const VkImageSubresourceRange depth_range = t.depth.full_range();
+  vkCmdClearDepthStencilImage(cmd, t.depth.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &far, 1, &depth_range);
+  t.color.sync_state() = ImageSyncState::after_write(VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                                     VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  t.depth.sync_state() = t.color.sync_state();
+}
+
+// Host objects as depth: bands [x0, x1) of every row at depth d, the rest at the far plane
+// (uploaded into the host's depth through the graph).
+std::vector<float> banded_depth(const std::vector<std::array<float, 3>>& bands) {
+  std::vector<float> depth(size_t(k_width) * k_height, 1.0f);
+  for (const auto& [x0, x1, d] : bands)
+    for (uint32_t y = 0; y < k_height; ++y)
+      for (uint32_t x = uint32_t(x0); x < uint32_t(x1); ++x) depth[size_t(y) * k_width + x] = d;
+  return depth;
+}
+
+// The host reads an image back with its own copy, from the layout and access the graph left.
+std::vector<std::byte> host_read(engine::vk::Context& context, Image& image, uint32_t texel_bytes) {
+  engine::vk::Buffer buffer(context, VkDeviceSize(k_width) * k_height * texel_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                            engine::vk::MemoryUsage::HostVisible, "host.readback");
+  engine::vk::CommandBuffer cmd(context);
+  VkCommandBuffer c = cmd.begin();
+  to_transfer(c, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_2_TRANSFER_READ_BIT, true);
+  VkBufferImageCopy region{};
+  region.imageSubresource = {image.aspect(), 0, 0, 1};
+  region.imageExtent = {k_width, k_height, 1};
+  vkCmdCopyImageToBuffer(c, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer.handle(), 1, &region);
+  cmd.submit_and_wait();
+  image.sync_state() = ImageSyncState::after_read(VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                                  VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+  buffer.invalidate();
+  const auto* bytes = static_cast<const std::byte*>(buffer.mapped());
+  return {bytes, bytes + buffer.size()};
+}
+
+struct Composite {
+  engine::vk::Rgba8Image color;
+  std::vector<float> depth;
+  ImageSyncState color_state;  // where the graph left the host's colour
+};
+
+// One frame: the host's clear (and depth bands), then the node's steps and the composited
+// raymarch into the host's targets, recorded into the same command buffer; the host reads back.
+Composite composite_frame(liquid::LiquidNode& node, HostTargets& targets, int steps,
+                          const std::vector<std::array<float, 3>>& depth_bands) {
+  engine::vk::Context& context = test::gpu();
+  liquid::LiquidRenderer renderer(context, node,
+                                  {.width = k_width, .height = k_height, .fxaa = false, .composite = true});
+  engine::graph::RenderGraph graph(&context);
+  engine::vk::CommandBuffer cmd(context);
+  VkCommandBuffer c = cmd.begin();
+  host_clear(c, targets);
+  const engine::graph::ImageHandle color = graph.import_image("host.color", targets.color);
+  engine::graph::ImageHandle depth = graph.import_image("host.depth", targets.depth);
+  if (!depth_bands.empty()) {
+    const std::vector<float> values = banded_depth(depth_bands);
+    depth = engine::graph::add_upload(graph, depth, std::as_bytes(std::span(values)), "host.depth_bands");
+  }
+  const liquid::LiquidImages images = node.add_to(graph, steps);
+  renderer.add_to(graph, images, liquid::default_camera(node.scene(), node.setup()), {color, depth});
+  graph.compile();
+  graph.execute(c);
+  cmd.submit_and_wait();
+  Composite out;
+  out.color_state = targets.color.sync_state();
+  const std::vector<std::byte> rgba = host_read(context, targets.color, 4);
+  out.color = {k_width, k_height, std::vector<uint8_t>(rgba.size())};
+  std::memcpy(out.color.pixels.data(), rgba.data(), rgba.size());
+  const std::vector<std::byte> d = host_read(context, targets.depth, 4);
+  out.depth.resize(size_t(k_width) * k_height);
+  std::memcpy(out.depth.data(), d.data(), out.depth.size() * sizeof(float));
+  return out;
+}
+
+bool is_magenta(const engine::vk::Rgba8Image& image, size_t pixel) {
+  return std::memcmp(&image.pixels[pixel * 4], k_magenta.data(), 4) == 0;
+}
+
+}  // namespace
+
+TEST_CASE("a host's own device is adopted, not owned, and runs the node with zero validation messages", "[host]") {
+  HostVulkan host(/*validation=*/true);
+  {
+    engine::vk::Context context(host.host_device());
+    CHECK_FALSE(context.owns_device());
+    CHECK(context.device() == host.device);
+    CHECK(context.queue_family() == host.queue_family);
+    liquid::LiquidNode node(context, test::shipped_scene("small_3d"));
+    engine::graph::RenderGraph graph(&context);
+    engine::vk::CommandBuffer cmd(context);
+    for (int frame = 0; frame < 3; ++frame) {
+      graph.reset();
+      node.add_to(graph, 5);
+      graph.compile();
+      graph.execute(cmd.begin());
+      cmd.submit_and_wait();
+    }
+    const liquid::Diagnostics d = node.diagnose();
+    CHECK(d.active_particles == node.setup().initial_particles);
+    CHECK(d.non_finite == 0);
+    INFO("last validation message: " << context.last_validation_message());
+    CHECK(context.validation_message_count() == 0u);
+  }
+  // The context is gone; the host's device is still the host's to use and destroy.
+  CHECK(vkDeviceWaitIdle(host.device) == VK_SUCCESS);
+}
+
+TEST_CASE("a host device without a feature the library needs is refused, naming the feature", "[host]") {
+  HostVulkan host(/*validation=*/false);
+  // The same physical device, created without geometry shaders.
+  engine::vk::DeviceFeatures supported, enabled;
+  supported.query(host.physical_device);
+  engine::vk::enable_required(enabled, supported);
+  enabled.core.features.geometryShader = VK_FALSE;
+  const float priority = 1.0f;
+  VkDeviceQueueCreateInfo queue{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+  queue.queueFamilyIndex = host.queue_family;
+  queue.queueCount = 1;
+  queue.pQueuePriorities = &priority;
+  const std::vector<const char*> extensions = engine::vk::required_device_extensions();
+  VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, enabled.chain()};
+  info.queueCreateInfoCount = 1;
+  info.pQueueCreateInfos = &queue;
+  info.enabledExtensionCount = uint32_t(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
+  VkDevice device = VK_NULL_HANDLE;
+  REQUIRE(vkCreateDevice(host.physical_device, &info, nullptr, &device) == VK_SUCCESS);
+  engine::vk::HostDevice lacking = host.host_device();
+  lacking.device = device;
+  lacking.enabled_features = enabled.chain();
+  CHECK_THROWS_WITH(engine::vk::Context(lacking), Catch::Contains("geometryShader"));
+  lacking.enabled_device_extensions.clear();
+  CHECK_THROWS_WITH(engine::vk::Context(lacking), Catch::Contains("VK_KHR_push_descriptor"));
+  vkDestroyDevice(device, nullptr);
+}
+
+TEST_CASE("the liquid composites into a host's own images, which the host reads back from the state the graph "
+          "reports",
+          "[host]") {
+  engine::vk::Context& context = test::gpu();
+  liquid::LiquidNode node(context, test::shipped_scene("small_3d"));
+  HostTargets targets(context);  // host images on the suite's device, with memory of their own
+  const Composite frame = composite_frame(node, targets, 30, {});
+  // The graph left the colour as a colour attachment written by the raymarch.
+  CHECK(frame.color_state.layout == VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+  CHECK((frame.color_state.write_stages & VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT) != 0);
+  size_t liquid = 0, host = 0;
+  for (size_t i = 0; i < size_t(k_width) * k_height; ++i) {
+    if (is_magenta(frame.color, i)) {
+      ++host;
+      REQUIRE(frame.depth[i] == 1.0f);  // untouched: the host's own depth
+    } else {
+      ++liquid;
+      REQUIRE(frame.depth[i] < 1.0f);  // the liquid's depth, for the host's later passes
+    }
+  }
+  INFO(liquid << " liquid pixels, " << host << " host pixels");
+  CHECK(liquid > size_t(k_width) * k_height / 20);
+  CHECK(host > size_t(k_width) * k_height / 4);
+  const test::CompareResult golden =
+      test::compare_with_golden(frame.color, "host_composite", test::CompareTolerance{12, 0.01});
+  INFO(golden.message);
+  CHECK(golden.passed);
+  REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("host geometry in front of the liquid hides it; host geometry behind it is covered", "[host]") {
+  engine::vk::Context& context = test::gpu();
+  liquid::LiquidNode plain_node(context, test::shipped_scene("small_3d"));
+  HostTargets targets(context);
+  const Composite open = composite_frame(plain_node, targets, 30, {});
+  // The same state again, now with a host object in front (depth 0) over the left half of the
+  // liquid and one just in front of the far plane (behind the liquid) over its right half.
+  uint32_t x_min = k_width, x_max = 0;
+  for (uint32_t y = 0; y < k_height; ++y)
+    for (uint32_t x = 0; x < k_width; ++x)
+      if (!is_magenta(open.color, size_t(y) * k_width + x)) x_min = std::min(x_min, x), x_max = std::max(x_max, x);
+  REQUIRE(x_min < x_max);
+  const float x_front = 0.5f * float(x_min + x_max), x_behind = x_front;
+  liquid::LiquidNode node(context, test::shipped_scene("small_3d"));
+  const Composite banded = composite_frame(node, targets, 30, {{0.0f, x_front, 0.0f}, {x_behind, float(k_width), 0.99999f}});
+  size_t hidden = 0, covered = 0;
+  for (uint32_t y = 0; y < k_height; ++y)
+    for (uint32_t x = 0; x < k_width; ++x) {
+      const size_t i = size_t(y) * k_width + x;
+      if (is_magenta(open.color, i)) continue;  // no liquid at this pixel
+      if (x < uint32_t(x_front)) {
+        REQUIRE(is_magenta(banded.color, i));  // the host object in front wins
+        REQUIRE(banded.depth[i] == 0.0f);
+        ++hidden;
+      } else if (x >= uint32_t(x_behind)) {
+        REQUIRE_FALSE(is_magenta(banded.color, i));  // the liquid covers the object behind
+        REQUIRE(banded.depth[i] < 0.99999f);
+        REQUIRE(banded.depth[i] == open.depth[i]);
+        ++covered;
+      }
+    }
+  INFO(hidden << " hidden, " << covered << " covered liquid pixels");
+  CHECK(hidden > 50);
+  CHECK(covered > 50);
+  REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("two frames in flight, each with its own graph and command buffer, have no hazards", "[host]") {
+  engine::vk::Context& context = test::gpu();
+  liquid::LiquidNode node(context, test::shipped_scene("small_3d"), liquid::LiquidOptions{.frames_in_flight = 2});
+  liquid::LiquidRenderer renderer(context, node, {.width = k_width, .height = k_height});
+  struct Slot {
+    explicit Slot(engine::vk::Context& c) : graph(&c), cmd(c) {}
+    engine::graph::RenderGraph graph;
+    engine::vk::CommandBuffer cmd;
+  };
+  std::array<std::unique_ptr<Slot>, 2> slots{std::make_unique<Slot>(context), std::make_unique<Slot>(context)};
+  for (int frame = 0; frame < 6; ++frame) {
+    Slot& slot = *slots[size_t(frame) % 2];
+    VkCommandBuffer cmd = slot.cmd.begin();  // waits for the frame that used this slot two frames ago
+    slot.graph.reset();
+    const liquid::LiquidImages images = node.add_to(slot.graph, 4);
+    renderer.add_to(slot.graph, images, liquid::default_camera(node.scene(), node.setup()));
+    slot.graph.compile();
+    slot.graph.execute(cmd);
+    slot.cmd.submit();  // not waited for: the next frame is recorded while this one runs
+  }
+  for (auto& slot : slots) slot->cmd.wait();
+  CHECK(node.diagnose().non_finite == 0);
+  REQUIRE_NO_VALIDATION_MESSAGES();
+}
