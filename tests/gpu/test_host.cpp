@@ -302,3 +302,28 @@ TEST_CASE("two frames in flight, each with its own graph and command buffer, hav
   CHECK(node.diagnose().non_finite == 0);
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
+
+TEST_CASE("a context the library creates takes a host's extra extensions, features and queue-family test", "[host]") {
+  bool asked = false;
+  engine::vk::ContextOptions options;
+  options.validation = true;
+  options.instance_extensions = {VK_KHR_SURFACE_EXTENSION_NAME};
+  options.device_extensions = {VK_KHR_SWAPCHAIN_EXTENSION_NAME};
+  options.enable_features = [&](engine::vk::DeviceFeatures& enable, const engine::vk::DeviceFeatures& supported) {
+    asked = true;
+    enable.core.features.fillModeNonSolid = supported.core.features.fillModeNonSolid;
+  };
+  {
+    engine::vk::Context context(options);
+    CHECK(context.owns_device());
+    CHECK(asked);
+    // The swapchain entry points exist only when VK_KHR_swapchain was enabled on the device.
+    CHECK(vkGetDeviceProcAddr(context.device(), "vkCreateSwapchainKHR") != nullptr);
+    CHECK(context.validation_message_count() == 0u);
+  }
+  options.queue_family_filter = [](VkInstance, VkPhysicalDevice, uint32_t) { return false; };
+  CHECK_THROWS_WITH(engine::vk::Context(options), Catch::Contains("no graphics queue family the host accepts"));
+  options.queue_family_filter = nullptr;
+  options.device_extensions = {"VK_NO_such_extension"};
+  CHECK_THROWS_WITH(engine::vk::Context(options), Catch::Contains("VK_NO_such_extension"));
+}
