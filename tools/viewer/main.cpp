@@ -5,6 +5,7 @@
 // No display, a bad flag or a bad scene: one line on stderr and a non-zero exit.
 #include "tools/cli.h"
 #include "tools/viewer/app.h"
+#include "tools/viewer/script.h"
 
 #include <cstdlib>
 #include <filesystem>
@@ -48,6 +49,7 @@ int main(int argc, char** argv) {
     o.pacing = pacing == "wall" ? viewer::Pacing::WallTime : viewer::Pacing::FixedSteps;
     if (!o.screenshot.empty() && o.frames == 0) throw std::invalid_argument("--screenshot needs --frames");
     if (!std::filesystem::is_regular_file(o.scene)) throw std::invalid_argument(o.scene.string() + ": no such scene file");
+    if (!o.script.empty()) viewer::Script{o.script};  // a bad script is refused before any window opens
     return viewer::run_viewer(o);
   });
 }

@@ -62,6 +62,7 @@ Viewer::Viewer(const ViewerOptions& options)
   std::printf("liquid_viewer: %s on %s, %ux%u %s, %s\n", options.scene.string().c_str(), context_->device_name().c_str(),
               swapchain_->extent().width, swapchain_->extent().height, stats_.present_mode.c_str(),
               swapchain_->bgra() ? "BGRA swapchain (the present pass writes RGBA into it)" : "RGBA swapchain");
+  std::fflush(stdout);  // the window is up (a test waits for this line)
 }
 
 Viewer::~Viewer() {

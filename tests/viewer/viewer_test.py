@@ -1,0 +1,145 @@
+#!/usr/bin/env python3
+"""Runs liquid_viewer under its own Xvfb (with_xvfb.sh) as a person would, with replayed input, and
+checks what the node read back at exit (--report) against the same run without the input.
+
+  viewer_test.py MODE --viewer PATH --with-xvfb PATH --scenes DIR --scripts DIR --out DIR [--compare PATH]
+MODE: drag | obstacle | resize | golden | bad_reload. Every run has --validation: any validation
+message makes the viewer exit non-zero and the test fail.
+"""
+import argparse
+import json
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+SIZE = ["--width", "320", "--height", "240"]
+
+
+def run(args, name, viewer_args, expect_success=True, before=None):
+    report = os.path.join(args.out, name + ".json")
+    if os.path.exists(report):
+        os.remove(report)
+    command = [args.with_xvfb, args.viewer, *viewer_args, "--validation", "--report", report]
+    print("$", " ".join(command), flush=True)
+    result = subprocess.run(command, capture_output=True, text=True, timeout=300)
+    print(result.stdout, result.stderr, sep="", flush=True)
+    if expect_success and result.returncode != 0:
+        sys.exit(f"FAIL: {name}: exit code {result.returncode}")
+    with open(report) as f:
+        r = json.load(f)
+    if r["validation_messages"] != 0:
+        sys.exit(f"FAIL: {name}: {r['validation_messages']} validation message(s)")
+    return r
+
+
+def check(condition, message):
+    print(("ok: " if condition else "FAIL: ") + message, flush=True)
+    if not condition:
+        sys.exit(1)
+
+
+def com(r):
+    return r["diagnostics"]["center_of_mass"]
+
+
+def drag(args):
+    # A left drag up and to the right through the 2D dam's column (tests/viewer/drag_2d.json).
+    scene = os.path.join(args.scenes, "dam_break_2d.json")
+    common = [scene, "--frames", "30", "--steps-per-frame", "16", *SIZE, "--no-panel"]
+    base = run(args, "drag_none", common)
+    dragged = run(args, "drag", [*common, "--script", os.path.join(args.scripts, "drag_2d.json")])
+    # The brush's last place: the script's last cursor (88, 110) in the 320 x 240 window's 2D
+    # layout (liquid::fit_view2d: 308.48 pixels per metre, domain corner at pixel (6, 213)).
+    brush = dragged["last_brush"]
+    check(abs(brush[0] - (88 - 6) / 308.48) < 2e-3 and abs(brush[1] - (213 - 110) / 308.48) < 2e-3,
+          f"the brush followed the cursor: last at {brush[:2]}")
+    dx = com(dragged)[0] - com(base)[0]
+    dy = com(dragged)[1] - com(base)[1]
+    check(dx > 3e-3 and dy > 5e-3, f"the liquid moved the drag's way (up and right): centre of mass moved by ({dx:.4f}, {dy:.4f}) m")
+    check(dragged["diagnostics"]["outside_domain"] == 0, "no particle left the domain")
+
+
+def obstacle(args):
+    # A right drag of the sphere of obstacles_2d (at (0.3, 0.22) m) 72 pixels up into the liquid.
+    scene = os.path.join(args.scenes, "obstacles_2d.json")
+    common = [scene, "--frames", "34", "--steps-per-frame", "16", *SIZE, "--no-panel"]
+    base = run(args, "obstacle_none", common)
+    moved = run(args, "obstacle", [*common, "--script", os.path.join(args.scripts, "obstacle_2d.json")])
+    before, after = base["obstacles"][0], moved["obstacles"][0]
+    expected_y = 0.22 + 72 / 308.48
+    check(abs(before[1] - 0.22) < 1e-6, f"without the drag the sphere stays at y = {before[1]:.4f}")
+    check(abs(after[0] - 0.3) < 2e-3 and abs(after[1] - expected_y) < 5e-3,
+          f"the sphere followed the cursor to {after[:2]} (expected (0.3, {expected_y:.4f}))")
+    dy = com(moved)[1] - com(base)[1]
+    check(dy > 5e-3, f"the liquid was pushed up: centre of mass {dy:.4f} m higher than without the drag")
+    inside = moved["diagnostics"]["inside_obstacles"]
+    check(inside <= 0.005 * moved["diagnostics"]["active_particles"], f"pushed, not tunnelled: {inside} particles inside obstacles")
+
+
+def resize(args):
+    scene = os.path.join(args.scenes, "dam_break_2d.json")
+    shot = os.path.join(args.out, "resize.png")
+    r = run(args, "resize", [scene, "--frames", "14", "--steps-per-frame", "4", *SIZE, "--screenshot", shot,
+                             "--script", os.path.join(args.scripts, "resize.json")])
+    check(r["frames"] == 14, f"every frame was drawn: {r['frames']} of 14")
+    check(r["swapchain_recreations"] >= 2, f"the swapchain was recreated {r['swapchain_recreations']} times")
+    check((r["width"], r["height"]) == (256, 160), f"the last frame is {r['width']} x {r['height']}")
+    with open(shot, "rb") as f:
+        data = f.read()
+    width, height = int.from_bytes(data[16:20], "big"), int.from_bytes(data[20:24], "big")
+    check((width, height) == (256, 160), f"the screenshot after the resize is {width} x {height}")
+
+
+def golden(args):
+    scene = os.path.join(args.scenes, "dam_break_2d.json")
+    shot = os.path.join(args.out, "viewer_dam_break_2d.png")
+    run(args, "golden", [scene, "--frames", "12", "--steps-per-frame", "16", "--width", "256", "--height", "192",
+                         "--no-panel", "--screenshot", shot])
+    result = subprocess.run([args.compare, shot, "viewer_dam_break_2d"], capture_output=True, text=True)
+    print(result.stdout, result.stderr, sep="")
+    check(result.returncode == 0, "the last frame matches tests/goldens/viewer_dam_break_2d.png")
+
+
+def bad_reload(args):
+    # A scene edited on disk while the viewer runs: a bad edit is reported, the old scene keeps running.
+    scene = os.path.join(args.out, "edited_2d.json")
+    shutil.copy(os.path.join(args.scenes, "dam_break_2d.json"), scene)
+    command = [args.with_xvfb, args.viewer, scene, "--frames", "60", *SIZE, "--validation", "--report",
+               os.path.join(args.out, "bad_reload.json")]
+    viewer = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    started = viewer.stdout.readline()  # the viewer prints its first line once the window is up
+    print(started, end="")
+    time.sleep(0.05)
+    with open(scene) as f:
+        edited = json.load(f)
+    edited["stiffness"] = -1
+    with open(scene, "w") as f:
+        json.dump(edited, f)
+    out, err = viewer.communicate(timeout=300)
+    print(out, err, sep="")
+    check(started.startswith("liquid_viewer: "), "the viewer started")
+    check(viewer.returncode == 0, f"the viewer kept running to its last frame (exit {viewer.returncode})")
+    with open(os.path.join(args.out, "bad_reload.json")) as f:
+        r = json.load(f)
+    check("stiffness" in r["scene_error"], f"the bad edit's error is shown: {r['scene_error']!r}")
+    check(r["diagnostics"]["active_particles"] > 0 and r["steps"] > 0, "the old scene kept running")
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("mode", choices=["drag", "obstacle", "resize", "golden", "bad_reload"])
+    p.add_argument("--viewer", required=True)
+    p.add_argument("--with-xvfb", required=True)
+    p.add_argument("--scenes", required=True)
+    p.add_argument("--scripts", required=True)
+    p.add_argument("--out", required=True)
+    p.add_argument("--compare")
+    args = p.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+    globals()[args.mode](args)
+
+
+if __name__ == "__main__":
+    main()
