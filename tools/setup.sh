@@ -8,6 +8,7 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
   libglm-dev libstb-dev catch2 nlohmann-json3-dev libcli11-dev
   python3
+  libglfw3-dev libimgui-dev xvfb
 )
 
 missing=()

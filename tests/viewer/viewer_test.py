@@ -3,7 +3,7 @@
 checks what the node read back at exit (--report) against the same run without the input.
 
   viewer_test.py MODE --viewer PATH --with-xvfb PATH --scenes DIR --scripts DIR --out DIR [--compare PATH]
-MODE: drag | obstacle | resize | golden | bad_reload. Every run has --validation: any validation
+MODE: drag | obstacle | hit3d | resize | golden | bad_reload. Every run has --validation: any validation
 message makes the viewer exit non-zero and the test fail.
 """
 import argparse
@@ -78,6 +78,22 @@ def obstacle(args):
     check(inside <= 0.005 * moved["diagnostics"]["active_particles"], f"pushed, not tunnelled: {inside} particles inside obstacles")
 
 
+def hit3d(args):
+    # 3D: a press over the dam's column lands on its surface (the block's front face, z = 0.5 m);
+    # a press over empty space lands in the plane through the domain centre facing the camera.
+    scene = os.path.join(args.scenes, "dam_break_3d.json")
+    script = os.path.join(args.scripts, "hit_3d.json")
+    on = run(args, "hit_liquid", [scene, "--frames", "3", *SIZE, "--no-panel", "--script", script])["last_brush"]
+    check(abs(on[2] - 0.5) < 0.02 and 0.0 < on[0] < 0.35 and 0.0 < on[1] < 0.42,
+          f"over the liquid the brush is on its surface: {on}")
+    off = run(args, "hit_empty", [scene, "--frames", "6", *SIZE, "--no-panel", "--script", script])["last_brush"]
+    position, target, centre = [0.5, 0.75, 1.5], [0.5, 0.2, 0.25], [0.5, 0.3, 0.25]  # the scene's camera
+    forward = [t - p for t, p in zip(target, position)]
+    norm = sum(f * f for f in forward) ** 0.5
+    distance = sum((o - c) * f / norm for o, c, f in zip(off, centre, forward))
+    check(abs(distance) < 0.01 and off[0] > 0.5, f"over empty space it is in the plane through the centre: {off}")
+
+
 def resize(args):
     scene = os.path.join(args.scenes, "dam_break_2d.json")
     shot = os.path.join(args.out, "resize.png")
@@ -129,7 +145,7 @@ def bad_reload(args):
 
 def main():
     p = argparse.ArgumentParser()
-    p.add_argument("mode", choices=["drag", "obstacle", "resize", "golden", "bad_reload"])
+    p.add_argument("mode", choices=["drag", "obstacle", "hit3d", "resize", "golden", "bad_reload"])
     p.add_argument("--viewer", required=True)
     p.add_argument("--with-xvfb", required=True)
     p.add_argument("--scenes", required=True)

@@ -69,6 +69,7 @@ int WallClock::steps(double wall_seconds, double time_step, int cap) {
   lag_ += std::clamp(wall_seconds, 0.0, 0.25);  // a stall (a window drag, a reload) is not caught up
   const int n = std::min(int(std::floor(lag_ / time_step)), cap);
   lag_ -= n * time_step;
+  lag_ = std::min(lag_, 1.0);  // past a second behind, the viewer stops trying to catch up
   return std::max(n, 0);
 }
 

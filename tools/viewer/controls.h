@@ -32,7 +32,7 @@ const char* key_help();
 int key_code(const std::string& name);
 
 // WallTime pacing: steps this frame for `wall_seconds` since the last frame, carrying the
-// remainder; the lag is the simulated time behind wall time that the cap left.
+// remainder; the lag is the simulated time behind wall time that the cap left (at most 1 s).
 class WallClock {
  public:
   int steps(double wall_seconds, double time_step, int cap);

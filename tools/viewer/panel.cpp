@@ -30,7 +30,7 @@ PanelRequest draw_panel(Settings& s, MouseTools& mouse, liquid::LiquidNode& node
                         const std::vector<std::filesystem::path>& scenes, const std::filesystem::path& current) {
   PanelRequest request;
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(390, 0), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowBgAlpha(0.8f);
   ImGui::Begin("liquid_viewer");
   ImGui::Text("%.1f fps (%.1f ms), %ux%u, %s", stats.fps, stats.frame_ms, stats.width, stats.height,
@@ -81,7 +81,7 @@ PanelRequest draw_panel(Settings& s, MouseTools& mouse, liquid::LiquidNode& node
     ImGui::Text("max rho/rho0 %.3f, max speed %.2f m/s", d.max_density_ratio, d.max_speed);
     ImGui::Text("kinetic %.4g J, mechanical %.4g J", d.kinetic_energy, d.mechanical_energy);
   }
-  if (ImGui::CollapsingHeader("GPU time per pass (ms)")) {
+  if (ImGui::CollapsingHeader("GPU time per pass (ms)", ImGuiTreeNodeFlags_DefaultOpen)) {
     double total = 0.0;
     for (const auto& p : stats.passes) {
       ImGui::Text("%-28s %8.3f", p.name.c_str(), p.milliseconds);

@@ -29,9 +29,15 @@ void Viewer::write_report(const std::filesystem::path& path) {
   r["swapchain_recreations"] = swapchain_->recreations();
   r["present_mode"] = present_mode_name(swapchain_->present_mode());
   r["validation_messages"] = context_->validation_message_count();
-  r["fps"] = stats_.fps;
+  r["fps"] = stats_.fps;  // the panel's, over the last half second
+  // Over the whole run after the first frame (pipelines and the first upload excluded).
+  if (drawn_frames_ > 1 && last_frame_time_ > first_frame_time_)
+    r["average_fps"] = (drawn_frames_ - 1) / (last_frame_time_ - first_frame_time_);
   r["scene_error"] = stats_.scene_error;
   if (last_brush_) r["last_brush"] = vec(*last_brush_);
+  nlohmann::json passes = nlohmann::json::object();  // GPU ms of the last timed frame, by pass
+  for (const auto& p : stats_.passes) passes[p.name] = p.milliseconds;
+  r["gpu_ms"] = passes;
   nlohmann::json obstacles = nlohmann::json::array();
   for (const auto& pose : node.obstacle_poses(node.time())) obstacles.push_back(vec(pose.center));
   r["obstacles"] = obstacles;

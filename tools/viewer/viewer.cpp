@@ -210,13 +210,15 @@ int Viewer::run() {
     }
     ++drawn_frames_;
     ++fps_frames_;
+    if (first_frame_time_ < 0.0) first_frame_time_ = now;
+    last_frame_time_ = now;
     if (now - fps_time_ >= 0.5) {
       stats_.fps = fps_frames_ / (now - fps_time_);
       stats_.frame_ms = 1000.0 * (now - fps_time_) / fps_frames_;
       fps_time_ = now;
       fps_frames_ = 0;
     }
-    if (settings_.panel && drawn_frames_ % 30 == 0) refresh_diagnostics();
+    if (settings_.panel && drawn_frames_ % 30 == 1) refresh_diagnostics();
     if (++frame_ >= options_.frames && options_.frames > 0) break;
   }
   wait_all();

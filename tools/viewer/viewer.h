@@ -72,6 +72,8 @@ class Viewer {
   int drawn_frames_ = 0;    // frames presented
   int screenshots_ = 0;
   double fps_time_ = 0.0;
+  double first_frame_time_ = -1.0;  // glfwGetTime() when the first frame was submitted
+  double last_frame_time_ = 0.0;
   int fps_frames_ = 0;
   std::optional<glm::vec3> last_brush_;  // for the report
 };
