@@ -221,7 +221,7 @@ void read_physics(const Reader& r, const Json& doc, Scene& scene) {
 
 void read_contents(const Reader& r, const Json& doc, Scene& scene) {
   const bool shallow = scene.mode == SimulationMode::ShallowWater;
-  scene.fluid_blocks = read_array<FluidBlock>(r, doc, "fluid_blocks", 1 << 20, read_fluid_block);
+  scene.fluid_blocks = read_array<FluidBlock>(r, doc, "fluid_blocks", k_max_fluid_blocks, read_fluid_block);
   scene.emitters = read_array<Emitter>(r, doc, "emitters", gpu::k_max_emitters, read_emitter);
   scene.obstacles = read_array<Obstacle>(r, doc, "obstacles", gpu::k_max_obstacles, read_obstacle);
   size_t balls = 0;

@@ -5,6 +5,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
@@ -19,6 +20,14 @@ class SceneError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// What a scene file may hold, checked while it is read so that no input can make the loader spend
+// more than a fraction of a second or more than a few tens of MB (a scene is a few kB; these are
+// far above anything a scene needs). Each is refused with one line naming the file.
+constexpr std::size_t k_max_scene_bytes = std::size_t(4) << 20;  // 4 MiB of JSON text
+constexpr int k_max_scene_nesting = 8;          // the deepest scene is 6: obstacles[i].balls[j].center
+constexpr int k_max_fluid_blocks = 1 << 14;     // also the most elements of any array in the file
+constexpr int k_max_scene_values = 1 << 19;     // JSON values in the whole file (a 3D block is 13)
 
 enum class SimulationMode {
   Liquid,        // the chapter's liquid: P = k (rho/rho0)^gamma with gravity
@@ -82,6 +91,9 @@ struct Camera {
 
 struct Scene {
   std::string name;                 // file stem unless "name" is given
+  // Where it was read from (the file, or parse_scene's source_name): the prefix of every error
+  // found later (by make_setup). Empty for a scene built in code, whose errors start with `name`.
+  std::string source;
   int dimension = 2;                // 2 or 3
   SimulationMode mode = SimulationMode::Liquid;
   glm::vec3 domain{1.0f};           // m, box [0, domain]; z ignored in 2D
@@ -109,7 +121,8 @@ struct Scene {
 // Parses and validates a scene. `source_name` prefixes every error message.
 Scene parse_scene(const std::string& json_text, const std::string& source_name);
 
-// Reads and parses a file; a missing or unreadable file is a SceneError naming the path.
+// Reads and parses a file; a missing, unreadable or oversized file, or a folder, is a SceneError
+// naming the path.
 Scene load_scene(const std::filesystem::path& path);
 
 }  // namespace liquid

@@ -33,7 +33,10 @@ std::string format_number(double value) {
   return out.str();
 }
 
-[[noreturn]] void fail(const Scene& scene, const std::string& reason) { throw SceneError(scene.name + ": " + reason); }
+// "dam.json: fluid_blocks: ...": the file (the name for a scene built in code), then the field.
+[[noreturn]] void fail(const Scene& scene, const std::string& field, const std::string& reason) {
+  throw SceneError((scene.source.empty() ? scene.name : scene.source) + ": " + field + ": " + reason);
+}
 
 // The chapter's kernel w(d, r) = (1 - d^2/r^2)^3 for d < r, from the squared distance.
 double kernel_weight(double distance_squared, double radius) {
@@ -92,12 +95,14 @@ void check_grid_limits(const Scene& scene, const SimulationSetup& setup, const D
   const char* limit_name = three_d ? "max_image_dimension_3d" : "max_image_dimension_2d";
   for (int a = 0; a < scene.dimension; ++a)
     if (cells[a] > per_axis)
-      fail(scene, "grid " + describe_grid(cells) + " exceeds the device limit of " + std::to_string(per_axis) +
-                      " texels per axis (" + limit_name + ")");
+      fail(scene, "grid_resolution",
+           "grid " + describe_grid(cells) + " exceeds the device limit of " + std::to_string(per_axis) +
+               " texels per axis (" + limit_name + ")");
   if (three_d && cells.z > limits.max_framebuffer_layers)
-    fail(scene, "grid " + describe_grid(cells) + " needs " + std::to_string(cells.z) +
-                    " framebuffer layers, past the device limit of " + std::to_string(limits.max_framebuffer_layers) +
-                    " (max_framebuffer_layers)");
+    fail(scene, "grid_resolution",
+         "grid " + describe_grid(cells) + " needs " + std::to_string(cells.z) +
+             " framebuffer layers, past the device limit of " + std::to_string(limits.max_framebuffer_layers) +
+             " (max_framebuffer_layers)");
 }
 
 // Whether a lattice point lies inside (or within half a spacing of) an obstacle at t = 0. Such a
@@ -120,7 +125,7 @@ void fill_block(const Scene& scene, size_t index, glm::ivec3 counts, SimulationS
   for (int a = 0; a < scene.dimension; ++a) {
     const double first = double(block.min[a]) + 0.5 * s, last = double(block.min[a]) + (counts[a] - 0.5) * s;
     if (first < 0.0 || last > double(setup.domain[a]))
-      fail(scene, "fluid_blocks[" + std::to_string(index) + "]: particles span [" + format_number(first) + ", " +
+      fail(scene, "fluid_blocks[" + std::to_string(index) + "]", "particles span [" + format_number(first) + ", " +
                       format_number(last) + "] m on axis " + std::to_string(a) +
                       ", outside the domain snapped to whole cells [0, " + format_number(setup.domain[a]) + "] m");
   }
@@ -174,18 +179,18 @@ std::vector<glm::ivec3> count_particles(const Scene& scene, std::int64_t& initia
     counts.push_back(lattice_counts(scene.fluid_blocks[i], scene.dimension, scene.particle_spacing));
     const std::int64_t n = lattice_size(counts.back());
     if (n <= 0)
-      fail(scene, "fluid_blocks[" + std::to_string(i) + "]: produces no particle at spacing " +
+      fail(scene, "fluid_blocks[" + std::to_string(i) + "]", "produces no particle at spacing " +
                       format_number(scene.particle_spacing) + " m (the block is thinner than one spacing)");
     initial += n;
   }
   if (initial > k_max_initial_particles)
-    fail(scene, "fluid blocks hold " + std::to_string(initial) + " particles, more than the supported " +
+    fail(scene, "fluid_blocks", "hold " + std::to_string(initial) + " particles, more than the supported " +
                     std::to_string(k_max_initial_particles) + "; increase particle_spacing");
   capacity = initial;
   for (const Emitter& e : scene.emitters) capacity += std::max(0, e.capacity);
-  if (capacity <= 0) fail(scene, "the scene has no particle: add a fluid block or an emitter");
+  if (capacity <= 0) fail(scene, "fluid_blocks", "the scene has no particle: add a fluid block or an emitter");
   if (capacity > std::numeric_limits<int>::max())
-    fail(scene, "capacity of " + std::to_string(capacity) + " particles does not fit a 32-bit index");
+    fail(scene, "emitters", "capacity of " + std::to_string(capacity) + " particles does not fit a 32-bit index");
   return counts;
 }
 
@@ -193,7 +198,7 @@ void check_emitters(const Scene& scene, const SimulationSetup& setup) {
   for (size_t i = 0; i < scene.emitters.size(); ++i)
     for (int a = 0; a < scene.dimension; ++a)
       if (scene.emitters[i].position[a] < 0.0f || scene.emitters[i].position[a] > setup.domain[a])
-        fail(scene, "emitters[" + std::to_string(i) + "]: position is outside the domain snapped to whole cells (" +
+        fail(scene, "emitters[" + std::to_string(i) + "].position", "is outside the domain snapped to whole cells (" +
                         format_number(setup.domain[a]) + " m on axis " + std::to_string(a) + ")");
 }
 
@@ -207,7 +212,7 @@ double kernel_integral_cells(int dimension, double radius_cells) {
 
 SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
   if (scene.dimension != 2 && scene.dimension != 3)
-    fail(scene, "dimension must be 2 or 3, got " + std::to_string(scene.dimension));
+    fail(scene, "dimension", "must be 2 or 3, got " + std::to_string(scene.dimension));
   SimulationSetup setup;
   setup.dimension = scene.dimension;
   setup.shallow_water = scene.mode == SimulationMode::ShallowWater;
@@ -222,9 +227,10 @@ SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
   const std::vector<glm::ivec3> counts = count_particles(scene, initial, capacity);
   const glm::i64vec2 texture = particle_texture_size(capacity);
   if (texture.x > limits.max_image_dimension_2d || texture.y > limits.max_image_dimension_2d)
-    fail(scene, "capacity of " + std::to_string(capacity) + " particles needs a " + std::to_string(texture.x) + " x " +
-                    std::to_string(texture.y) + " particle texture, past the device limit of " +
-                    std::to_string(limits.max_image_dimension_2d) + " texels per axis (max_image_dimension_2d)");
+    fail(scene, scene.emitters.empty() ? "fluid_blocks" : "emitters",
+         "capacity of " + std::to_string(capacity) + " particles needs a " + std::to_string(texture.x) + " x " +
+             std::to_string(texture.y) + " particle texture, past the device limit of " +
+             std::to_string(limits.max_image_dimension_2d) + " texels per axis (max_image_dimension_2d)");
   setup.initial_particles = int(initial);
   setup.capacity = int(capacity);
   setup.particle_texture = glm::ivec2(texture);
@@ -236,7 +242,7 @@ SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
   const double radius = scene.kernel_radius_cells;
   // Farther apart than the kernel radius, no particle would see another: no pressure at all.
   if (spacing >= radius * h)
-    fail(scene, "particle_spacing " + format_number(spacing) + " m is not below the kernel radius (" +
+    fail(scene, "particle_spacing", format_number(spacing) + " m is not below the kernel radius (" +
                     format_number(radius) + " cells of " + format_number(h) +
                     " m); lower particle_spacing or grid_resolution");
   check_emitters(scene, setup);
@@ -249,7 +255,7 @@ SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
   const int carved = setup.initial_particles - int(setup.positions.size());
   setup.initial_particles -= carved;
   setup.capacity -= carved;
-  if (setup.capacity <= 0) fail(scene, "the obstacles cover every particle of the fluid blocks");
+  if (setup.capacity <= 0) fail(scene, "obstacles", "cover every particle of the fluid blocks");
 
   const double mass = scene.density * std::pow(spacing, d);
   const double scale = mass / (std::pow(h, d) * kernel_integral_cells(d, radius));

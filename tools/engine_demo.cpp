@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
   uint32_t size = 512;
   bool validation = false;
   app.add_option("-o,--out", out_dir, "output folder");
-  app.add_option("--size", size, "image size in pixels")->check(CLI::Range(16u, 4096u));
+  app.add_option("--size", size, "image size in pixels")->check(tools::integer_range(16, 4096));
   app.add_flag("--validation", validation, "enable the Vulkan validation layer");
   return tools::run_main(app, argc, argv, "engine_demo", [&] { return run(out_dir, size, validation); });
 }

@@ -11,7 +11,13 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <system_error>
 #include <map>
 #include <vector>
 
@@ -29,9 +35,24 @@ void print_diagnostics(const liquid::Diagnostics& d) {
               d.inside_obstacles, d.non_finite, d.max_density_ratio, d.kinetic_energy, d.max_speed);
 }
 
+// Fails now, not after the whole run, when `path` cannot be written: it is a folder, or its
+// folder is missing or read-only. Probes with the temporary file the final write will use.
+void check_output_file(const std::filesystem::path& path) {
+  if (std::filesystem::is_directory(path)) throw std::runtime_error(path.string() + ": is a directory");
+  std::filesystem::path probe = path;
+  probe += ".partial";
+  {
+    std::ofstream file(probe, std::ios::trunc);
+    if (!file) throw std::runtime_error(path.string() + ": cannot write (" + std::strerror(errno) + ")");
+  }
+  std::error_code ignored;
+  std::filesystem::remove(probe, ignored);
+}
+
 int run(const std::string& scene_path, int steps, int report_every, bool validation, const std::string& dump_path) {
-  engine::vk::Context context(engine::vk::ContextOptions{.validation = validation});
   const liquid::Scene scene = liquid::load_scene(scene_path);
+  if (!dump_path.empty()) check_output_file(dump_path);
+  engine::vk::Context context(engine::vk::ContextOptions{.validation = validation});
   liquid::LiquidNode node(context, scene);
   const auto& s = node.setup();
   std::printf("scene %s: %dD, %d particles (capacity %d), grid %dx%dx%d, h = %.4g m, dt = %.3g s, k = %.4g, "
@@ -46,16 +67,19 @@ int run(const std::string& scene_path, int steps, int report_every, bool validat
   tools::FrameLoop loop(context);
   std::map<std::string, std::vector<double>> pass_ms;
   std::vector<double> step_ms;
-  const int batch = std::max(1, std::min(report_every, node.substeps()));
+  // One submission per batch of at most the scene's substeps, cut so that batches end on every
+  // multiple of report_every (the reports fall on the steps asked for). The state is checked after
+  // every batch, whatever the report interval: diagnose() throws at the first unstable batch.
   int done = 0;
   while (done < steps) {
-    const int n = std::min(batch, steps - done);
+    const int next_report = std::min(steps, (done / report_every + 1) * report_every);
+    const int n = std::min(node.substeps(), next_report - done);
     const tools::FrameTime frame = loop.run([&](engine::graph::RenderGraph& graph) { node.add_to(graph, n); });
     step_ms.push_back(frame.wall_ms / n);
     for (const auto& t : frame.passes) pass_ms[t.name].push_back(t.milliseconds);
-    const int reports_before = done / report_every;
     done += n;
-    if (done / report_every > reports_before || done == steps) print_diagnostics(node.diagnose());
+    const liquid::Diagnostics d = node.diagnose();
+    if (done == next_report) print_diagnostics(d);
   }
   if (!dump_path.empty()) {
     const auto snapshot = node.read_particles();
@@ -85,8 +109,9 @@ int main(int argc, char** argv) {
   std::string dump_path;
   app.add_option("--dump-particles", dump_path, "write the final particles as CSV");
   app.add_option("scene", scene, "scene JSON file")->required();
-  app.add_option("-n,--steps", steps, "simulation steps")->check(CLI::Range(1, 10000000));
-  app.add_option("-r,--report-every", report_every, "steps between diagnostics lines")->check(CLI::Range(1, 1000000));
+  app.add_option("-n,--steps", steps, "simulation steps")->check(tools::integer_range(1, 10000000));
+  app.add_option("-r,--report-every", report_every, "steps between diagnostics lines (the state is checked every batch)")
+      ->check(tools::integer_range(1, 1000000));
   app.add_flag("--validation", validation, "enable the Vulkan validation layer");
   return tools::run_main(app, argc, argv, "liquid_run",
                          [&] { return run(scene, steps, report_every, validation, dump_path); });

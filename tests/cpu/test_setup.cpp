@@ -16,6 +16,7 @@
 
 using namespace liquid;
 using Catch::Contains;
+using Catch::StartsWith;
 using namespace test_scenes;
 
 namespace {
@@ -251,7 +252,8 @@ TEST_CASE("scenes past the device limits are rejected naming the limit", "[setup
   small_2d.max_image_dimension_2d = 100;
   // dam_break_2d: 15965 particles need a 128-wide particle texture.
   REQUIRE_THROWS_WITH(setup_of("dam_break_2d.json", small_2d),
-                      Contains("Dam break 2D: capacity of 15965 particles") && Contains("max_image_dimension_2d") &&
+                      Contains("dam_break_2d.json: fluid_blocks: capacity of 15965 particles") &&
+                          Contains("max_image_dimension_2d") &&
                           Contains("100"));
   small_2d.max_image_dimension_2d = 128;
   Scene wide = load_scene(k_scene_dir / "rest_pool_2d.json");
@@ -263,13 +265,32 @@ TEST_CASE("scenes past the device limits are rejected naming the limit", "[setup
   DeviceLimits small_3d;
   small_3d.max_image_dimension_3d = 48;
   REQUIRE_THROWS_WITH(setup_of("dam_break_3d.json", small_3d),
-                      Contains("grid 64 x 38 x 32 exceeds the device limit of 48") &&
+                      Contains("dam_break_3d.json: grid_resolution: grid 64 x 38 x 32 exceeds the device limit") &&
+                          Contains("of 48") &&
                           Contains("max_image_dimension_3d"));
   small_3d = {};
   small_3d.max_framebuffer_layers = 16;
   REQUIRE_THROWS_WITH(setup_of("dam_break_3d.json", small_3d),
                       Contains("32 framebuffer layers") && Contains("16 (max_framebuffer_layers)"));
   CHECK_NOTHROW(setup_of("dam_break_3d.json", {2048, 64, 32}));
+}
+
+TEST_CASE("errors found by the setup name the scene's file and the field", "[setup]") {
+  const auto scene_file = [](const std::string& text) { return parse_scene(text, "scenes/x.json"); };
+  // A sphere that covers the whole block: nothing is left to simulate.
+  const Scene covered = scene_file(R"({"name": "Covered", "dimension": 2, "domain": [1, 1],
+      "particle_spacing": 0.01, "fluid_blocks": [{"min": [0.4, 0.4], "max": [0.6, 0.6]}],
+      "obstacles": [{"shape": "sphere", "center": [0.5, 0.5], "radius": 0.3}]})");
+  REQUIRE_THROWS_WITH(make_setup(covered, {}), StartsWith("scenes/x.json: obstacles: cover every particle"));
+  // 4000 x 4000 x 4000 particles: past the CPU guard, refused before any is made.
+  const Scene huge = scene_file(R"({"name": "Huge", "dimension": 3, "domain": [1, 1, 1],
+      "particle_spacing": 0.00025, "grid_resolution": 2048, "fluid_blocks": [{"min": [0, 0, 0], "max": [1, 1, 1]}]})");
+  REQUIRE_THROWS_WITH(make_setup(huge, {}), StartsWith("scenes/x.json: fluid_blocks: hold ") &&
+                                               Contains("particles, more than the supported 67108864"));
+  // A scene built in code has no file: its name stands in.
+  Scene coded = covered;
+  coded.source.clear();
+  REQUIRE_THROWS_WITH(make_setup(coded, {}), StartsWith("Covered: obstacles: "));
 }
 
 TEST_CASE("fluid blocks that cannot be filled are rejected", "[setup]") {

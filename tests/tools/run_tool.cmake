@@ -1,6 +1,6 @@
 # Runs a command-line tool as a user would and checks what it leaves behind. Used by ctest:
 #   cmake -DTOOL=... -DARGS="a;b" [-DENV="K=V;..."] -DEXPECT=success|failure [-DSTDERR_REGEX=...]
-#         [-DOUT_DIR=... -DEXPECT_FILES="f1;f2"] [-DEXPECT_NO_DIR=...] -P run_tool.cmake
+#         [-DSTDOUT_REGEX=...] [-DOUT_DIR=... -DEXPECT_FILES="f1;f2"] [-DEXPECT_NO_DIR=...] -P run_tool.cmake
 # A failure must print exactly one line on stderr, matching STDERR_REGEX, and must leave no
 # partial file; a success must produce every expected file and no *.partial file.
 if(OUT_DIR)
@@ -43,6 +43,10 @@ else()
   if(EXPECT_NO_DIR AND EXISTS "${EXPECT_NO_DIR}")
     message(FATAL_ERROR "a failed run left ${EXPECT_NO_DIR} behind")
   endif()
+endif()
+# Either way, what the tool printed on stdout ("^$": nothing) when the test says.
+if(DEFINED STDOUT_REGEX AND NOT out MATCHES "${STDOUT_REGEX}")
+  message(FATAL_ERROR "stdout does not match '${STDOUT_REGEX}'")
 endif()
 if(OUT_DIR AND EXISTS "${OUT_DIR}")
   file(GLOB partial "${OUT_DIR}/*.partial")

@@ -91,14 +91,17 @@ int main(int argc, char** argv) {
   o.scenes_dir = default_scenes_dir();
   app.add_option("-o,--json", o.json_path, "JSON output file (its folder is created)");
   app.add_option("--scenes", o.scenes_dir, "folder holding paper_*.json and shallow_water.json")->check(CLI::ExistingDirectory);
-  auto* warmup = app.add_option("--warmup", o.warmup, "untimed frames before timing")->check(CLI::Range(0, 1000));
-  auto* runs = app.add_option("--runs", o.runs, "timed frames per paper configuration")->check(CLI::Range(1, 100000));
+  auto* warmup =
+      app.add_option("--warmup", o.warmup, "untimed frames before timing")->check(tools::integer_range(0, 1000));
+  auto* runs =
+      app.add_option("--runs", o.runs, "timed frames per paper configuration")->check(tools::integer_range(1, 100000));
   auto* scaling_runs =
-      app.add_option("--scaling-runs", o.scaling_runs, "timed frames per scaling point")->check(CLI::Range(1, 100000));
+      app.add_option("--scaling-runs", o.scaling_runs, "timed frames per scaling point")
+          ->check(tools::integer_range(1, 100000));
   app.add_option("--steps-per-frame", o.steps_per_frame, "solver steps per frame (the paper: 1)")
-      ->check(CLI::Range(1, 1000));
-  app.add_option("--width", o.width, "frame width in pixels")->check(CLI::Range(16u, 16384u));
-  app.add_option("--height", o.height, "frame height in pixels")->check(CLI::Range(16u, 16384u));
+      ->check(tools::integer_range(1, 1000));
+  app.add_option("--width", o.width, "frame width in pixels")->check(tools::integer_range(16, 16384));
+  app.add_option("--height", o.height, "frame height in pixels")->check(tools::integer_range(16, 16384));
   app.add_option("--only", o.only, "run only configurations whose name contains this (repeatable; see --list)");
   app.add_flag("--quick", o.quick, "a short run: 1 warm-up and 2 timed frames unless given");
   auto* scaling = app.add_flag("--scaling", o.scaling_only, "run only the scaling set");
