@@ -12,8 +12,17 @@ Diagnostics compute_diagnostics(const Scene& scene, const SimulationSetup& setup
   Diagnostics d;
   d.step = step;
   d.time = time;
+  d.time_step = setup.time_step;  // the node replaces it with the last step's when steps adapt
   d.active_particles = int(particles.positions.size());
   const double m = setup.particle_mass;
+  // Potential energy relative to the domain's lowest corner along gravity (the floor for g = -y).
+  const glm::dvec3 g(setup.gravity);
+  double lowest = 0.0;
+  for (int corner = 0; corner < (1 << setup.dimension); ++corner) {
+    glm::dvec3 p(0.0);
+    for (int a = 0; a < setup.dimension; ++a) p[a] = (corner >> a) & 1 ? double(setup.domain[a]) : 0.0;
+    lowest = std::min(lowest, -glm::dot(g, p));
+  }
   glm::dvec3 weighted(0.0);
   for (size_t i = 0; i < particles.positions.size(); ++i) {
     const glm::vec3 x = particles.positions[i];
@@ -38,10 +47,12 @@ Diagnostics compute_diagnostics(const Scene& scene, const SimulationSetup& setup
     }
     const double speed2 = glm::dot(glm::dvec3(v), glm::dvec3(v));
     d.kinetic_energy += 0.5 * m * speed2;
+    d.potential_energy += m * (-glm::dot(g, glm::dvec3(x)) - lowest);
     d.max_speed = std::max(d.max_speed, float(std::sqrt(speed2)));
     weighted += glm::dvec3(x);
   }
   d.mass = m * d.active_particles;
+  d.mechanical_energy = d.kinetic_energy + d.potential_energy;
   const int finite_count = d.active_particles - d.non_finite;
   if (finite_count > 0) d.center_of_mass = glm::vec3(weighted / double(finite_count));
   for (float r : density_ratio)

@@ -59,6 +59,11 @@ struct Diagnostics {
   float max_density_ratio = 0.0f;  // max rho / rho0 over the grid
   double mass = 0.0;               // kg, active particles * particle mass
   double kinetic_energy = 0.0;     // J, sum 1/2 m |u|^2
+  // J, sum m |g| (height above the domain's lowest point along gravity): zero for liquid lying on
+  // the floor, so its share of the mechanical energy is the part gravity can still release.
+  double potential_energy = 0.0;
+  double mechanical_energy = 0.0;  // J, kinetic + potential
+  double time_step = 0.0;          // s, the last step's dt
   float max_speed = 0.0f;          // m/s
   glm::vec3 center_of_mass{0.0f};  // m
 };

@@ -56,7 +56,7 @@ struct FrameStats {
 std::string stats_header(const FrameStats& first) {
   std::string header =
       "frame,step,time_s,active_particles,outside_domain,inside_obstacles,non_finite,max_density_ratio,mass_kg,"
-      "kinetic_energy_J,max_speed_m_s,wall_ms";
+      "kinetic_energy_J,potential_energy_J,mechanical_energy_J,time_step_s,max_speed_m_s,wall_ms";
   for (const auto& [name, ms] : first.pass_ms) header += ",gpu_ms." + name;
   return header + "\n";
 }
@@ -66,7 +66,8 @@ std::string stats_row(const FrameStats& row, const FrameStats& first) {
   std::ostringstream out;
   out << row.frame << ',' << d.step << ',' << d.time << ',' << d.active_particles << ',' << d.outside_domain << ','
       << d.inside_obstacles << ',' << d.non_finite << ',' << d.max_density_ratio << ',' << d.mass << ','
-      << d.kinetic_energy << ',' << d.max_speed << ',' << row.wall_ms;
+      << d.kinetic_energy << ',' << d.potential_energy << ',' << d.mechanical_energy << ',' << d.time_step << ','
+      << d.max_speed << ',' << row.wall_ms;
   for (const auto& [name, unused] : first.pass_ms) {
     const auto it = row.pass_ms.find(name);
     out << ',' << (it == row.pass_ms.end() ? 0.0 : it->second);

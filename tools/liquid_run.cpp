@@ -31,8 +31,9 @@ double median(std::vector<double> values) {
 }
 
 void print_diagnostics(const liquid::Diagnostics& d) {
-  std::printf("%7d %9.4f %9d %7d %8d %6d %9.3f %12.5g %9.3f\n", d.step, d.time, d.active_particles, d.outside_domain,
-              d.inside_obstacles, d.non_finite, d.max_density_ratio, d.kinetic_energy, d.max_speed);
+  std::printf("%7d %9.4f %9d %7d %8d %6d %9.3f %12.5g %12.5g %12.5g %9.3f\n", d.step, d.time, d.active_particles,
+              d.outside_domain, d.inside_obstacles, d.non_finite, d.max_density_ratio, d.kinetic_energy,
+              d.potential_energy, d.mechanical_energy, d.max_speed);
 }
 
 // Fails now, not after the whole run, when `path` cannot be written: it is a folder, or its
@@ -60,8 +61,8 @@ int run(const std::string& scene_path, int steps, int report_every, bool validat
               scene.name.c_str(), s.dimension, s.initial_particles, s.capacity, s.grid_cells.x, s.grid_cells.y,
               s.grid_cells.z, s.cell_size, scene.time_step, s.stiffness, s.gamma, s.rest_density);
   std::printf("device %s (%s)\n", context.device_name().c_str(), context.driver_description().c_str());
-  std::printf("%7s %9s %9s %7s %8s %6s %9s %12s %9s\n", "step", "time_s", "active", "outside", "inside_o", "nan",
-              "max_rho", "kinetic_J", "max_v");
+  std::printf("%7s %9s %9s %7s %8s %6s %9s %12s %12s %12s %9s\n", "step", "time_s", "active", "outside", "inside_o",
+              "nan", "max_rho", "kinetic_J", "potential_J", "total_J", "max_v");
   print_diagnostics(node.diagnose());
 
   tools::FrameLoop loop(context);
