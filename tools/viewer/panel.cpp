@@ -29,10 +29,10 @@ void live_parameters(liquid::LiquidNode& node) {
 PanelRequest draw_panel(Settings& s, MouseTools& mouse, liquid::LiquidNode& node, const Stats& stats,
                         const std::vector<std::filesystem::path>& scenes, const std::filesystem::path& current) {
   PanelRequest request;
-  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(390, 0), ImGuiCond_FirstUseEver);
+  // Top right: the scenes' liquid starts on the left.
+  ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 8, 8), ImGuiCond_Always, ImVec2(1, 0));
   ImGui::SetNextWindowBgAlpha(0.8f);
-  ImGui::Begin("liquid_viewer");
+  ImGui::Begin("liquid_viewer", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   ImGui::Text("%.1f fps (%.1f ms), %ux%u, %s", stats.fps, stats.frame_ms, stats.width, stats.height,
               stats.present_mode.c_str());
   ImGui::Text("t = %.3f s, step %d, %d steps this frame", node.time(), node.step_count(), stats.steps_this_frame);
