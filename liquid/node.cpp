@@ -46,6 +46,7 @@ LiquidNode::LiquidNode(engine::vk::Context& context, const Scene& scene, const L
   const std::vector<int32_t> specialization = scene_specialization(scene_, setup_);
   splat_ = std::make_unique<SplatPass>(context, setup_, format, specialization);
   grid_ = std::make_unique<GridPass>(context, setup_, specialization);
+  if (setup_.splat_adjoint_pressure) pressure_ = std::make_unique<PressurePass>(context, setup_, specialization);
   particle_update_ = std::make_unique<ParticleUpdatePass>(context, setup_, specialization);
   state_ = std::make_unique<LiquidState>(context, setup_, format);
   max_steps_per_frame_ = options.max_steps_per_frame > 0 ? options.max_steps_per_frame : scene.substeps;
@@ -97,6 +98,19 @@ std::vector<EmissionRange> LiquidNode::emit(double end_time, int& next_index) {
   return ranges;
 }
 
+LiquidNode::PressureImages LiquidNode::create_pressure_images(engine::graph::RenderGraph& graph) const {
+  if (!pressure_) return {};
+  return {graph.create_image("liquid.pressure", pressure_->image_desc()),
+          graph.create_image("liquid.potential", pressure_->image_desc())};
+}
+
+GridImages LiquidNode::add_grid(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
+                                ImageHandle splat, const GridImages& grids, PressureImages& pressure) const {
+  if (!pressure_) return grid_->add_to(graph, slice, splat, grids);
+  const ImageHandle potential = pressure_->add_to(graph, slice, splat, pressure.pressure, pressure.potential);
+  return grid_->add_to(graph, slice, splat, grids, potential);
+}
+
 LiquidImages LiquidNode::add_to(engine::graph::RenderGraph& graph, int steps) {
   if (steps > max_steps_per_frame_)
     throw std::invalid_argument("liquid: " + std::to_string(steps) + " steps in one frame, at most " +
@@ -110,6 +124,7 @@ LiquidImages LiquidNode::add_to(engine::graph::RenderGraph& graph, int steps) {
   ImageHandle splat = graph.import_image(s.splat.name(), s.splat);
   GridImages grids{graph.import_image(s.grid_velocity.name(), s.grid_velocity),
                    graph.import_image(s.density.name(), s.density)};
+  PressureImages pressure = create_pressure_images(graph);
 
   const float dt = setup_.time_step;
   for (int k = 0; k < steps; ++k) {
@@ -126,7 +141,7 @@ LiquidImages LiquidNode::add_to(engine::graph::RenderGraph& graph, int steps) {
 
     const int cur = s.current, next = 1 - s.current;
     splat = splat_->add_to(graph, slice, particles[cur], splat, active_);
-    grids = grid_->add_to(graph, slice, splat, grids);
+    grids = add_grid(graph, slice, splat, grids, pressure);
     particles[next] = particle_update_->add_to(graph, slice, particles[cur], splat, grids, particles[next],
                                                step.active_after);
     s.current = next;

@@ -11,6 +11,7 @@
 #include "liquid/setup.h"
 #include "liquid/solver/grid.h"
 #include "liquid/solver/particle_update.h"
+#include "liquid/solver/pressure.h"
 #include "liquid/solver/splat.h"
 #include "liquid/state.h"
 #include "liquid/types.h"
@@ -74,6 +75,14 @@ class LiquidNode {
   LiquidState& state() { return *state_; }
 
  private:
+  // The splat-adjoint pressure's two grid images for one graph (invalid handles without it).
+  struct PressureImages {
+    ImageHandle pressure, potential;
+  };
+  PressureImages create_pressure_images(engine::graph::RenderGraph& graph) const;
+  // One step's grid pass, after the splat-adjoint pressure passes when the scene uses them.
+  GridImages add_grid(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice, ImageHandle splat,
+                      const GridImages& grids, PressureImages& pressure) const;
   // This step's emission ranges, advancing the emitters' counts.
   std::vector<EmissionRange> emit(double end_time, int& next_index);
 
@@ -83,6 +92,7 @@ class LiquidNode {
   uint32_t frames_in_flight_ = 2;
   std::unique_ptr<SplatPass> splat_;
   std::unique_ptr<GridPass> grid_;
+  std::unique_ptr<PressurePass> pressure_;  // only with the splat-adjoint pressure
   std::unique_ptr<ParticleUpdatePass> particle_update_;
   std::unique_ptr<LiquidState> state_;
   std::unique_ptr<engine::vk::UniformArena> uniforms_;

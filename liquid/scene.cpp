@@ -213,6 +213,12 @@ void read_physics(const Reader& r, const Json& doc, Scene& scene) {
   if (const Json* v = Reader::find(doc, "splat_format"))
     scene.splat_format = r.choice(*v, "splat_format", {"rgba32f", "rgba16f"}) == 0 ? SplatFormat::Rgba32f
                                                                                    : SplatFormat::Rgba16f;
+  if (const Json* v = Reader::find(doc, "pressure_force")) {
+    if (shallow) r.fail("pressure_force", "not used in shallow_water mode");
+    scene.pressure_force = r.choice(*v, "pressure_force", {"chapter", "splat_adjoint"}) == 0
+                               ? PressureForce::Chapter
+                               : PressureForce::SplatAdjoint;
+  }
   if (const Json* v = Reader::find(doc, "rest_depth")) {
     if (!shallow) r.fail("rest_depth", "only allowed in shallow_water mode");
     scene.rest_depth = float(r.number_in(*v, "rest_depth", 0.0, k_max_length, true));
@@ -247,7 +253,7 @@ Scene read_scene(const Json& doc, const std::string& source_name) {
   r.check_keys(doc, "",
                {"name", "dimension", "mode", "domain", "grid_resolution", "gravity", "particle_spacing", "density",
                 "rest_density", "stiffness", "gamma", "kernel_radius_cells", "pic_ratio", "time_step", "substeps",
-                "wall_margin_cells", "splat_format", "rest_depth", "fluid_blocks", "emitters", "obstacles", "ground",
+                "wall_margin_cells", "splat_format", "pressure_force", "rest_depth", "fluid_blocks", "emitters", "obstacles", "ground",
                 "camera"});
   Scene scene;
   scene.name = std::filesystem::path(source_name).stem().string();

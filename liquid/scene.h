@@ -36,6 +36,11 @@ enum class SimulationMode {
 
 enum class SplatFormat { Rgba32f, Rgba16f };
 
+// How the grid pass turns pressure into force. Chapter: the central differences of P (section 4,
+// eq. 3). SplatAdjoint: of P smoothed with the splat's own kernel, the gradient of an energy, so
+// resting water stays at rest (docs/physics.md).
+enum class PressureForce { Chapter, SplatAdjoint };
+
 // A box of liquid filled with particles on a lattice of the scene's particle spacing.
 struct FluidBlock {
   glm::vec3 min{0.0f};       // m (z ignored in 2D)
@@ -110,6 +115,7 @@ struct Scene {
   int substeps = 8;                 // steps per rendered frame
   float wall_margin_cells = 0.5f;   // particles are clamped this many cells inside the walls
   SplatFormat splat_format = SplatFormat::Rgba32f;
+  PressureForce pressure_force = PressureForce::Chapter;
   float rest_depth = 0.1f;          // m, shallow water: water height where rho = rho0
   std::vector<FluidBlock> fluid_blocks;
   std::vector<Emitter> emitters;

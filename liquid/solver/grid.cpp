@@ -6,12 +6,33 @@
 #include "liquid/state.h"
 #include "liquid/uniforms.h"
 
+#include <stdexcept>
+
 namespace liquid {
 
 using engine::graph::Access;
 using engine::graph::PassBuilder;
 using engine::graph::PassContext;
 using engine::vk::DescriptorKind;
+
+namespace {
+
+std::span<const uint32_t> grid_fragment_shader(const SimulationSetup& setup) {
+  if (setup.splat_adjoint_pressure)
+    return setup.dimension == 3 ? liquid_shaders::grid_adjoint_frag_3d : liquid_shaders::grid_adjoint_frag_2d;
+  return setup.dimension == 3 ? liquid_shaders::grid_frag_3d : liquid_shaders::grid_frag_2d;
+}
+
+std::vector<engine::vk::DescriptorBinding> grid_bindings(const SimulationSetup& setup) {
+  std::vector<engine::vk::DescriptorBinding> bindings{
+      {LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
+      {LIQUID_BINDING_GRID_SPLAT, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}};
+  if (setup.splat_adjoint_pressure)
+    bindings.push_back({LIQUID_BINDING_GRID_POTENTIAL, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
+  return bindings;
+}
+
+}  // namespace
 
 GridPass::GridPass(engine::vk::Context& context, const SimulationSetup& setup,
                    const std::vector<int32_t>& specialization)
@@ -23,15 +44,18 @@ GridPass::GridPass(engine::vk::Context& context, const SimulationSetup& setup,
                                                    : engine::passes::fullscreen_vertex_shader(),
                     .geometry = setup.dimension == 3 ? engine::passes::fullscreen_layered_geometry_shader()
                                                      : std::span<const uint32_t>{},
-                    .fragment = setup.dimension == 3 ? liquid_shaders::grid_frag_3d : liquid_shaders::grid_frag_2d,
+                    .fragment = grid_fragment_shader(setup),
                     .color_formats = {k_grid_velocity_format, k_density_format},
-                    .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
-                                 {LIQUID_BINDING_GRID_SPLAT, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
+                    .bindings = grid_bindings(setup),
                     .specialization = specialization}),
-      nearest_(context, VK_FILTER_NEAREST) {}
+      nearest_(context, VK_FILTER_NEAREST),
+      splat_adjoint_(setup.splat_adjoint_pressure) {}
 
 GridImages GridPass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                            ImageHandle splat, const GridImages& grids) const {
+                            ImageHandle splat, const GridImages& grids, ImageHandle potential) const {
+  if (splat_adjoint_ != potential.valid())
+    throw std::logic_error(splat_adjoint_ ? "liquid.grid: the splat-adjoint pressure needs the potential image"
+                                          : "liquid.grid: a potential image was given to the chapter's grid pass");
   struct Data {
     engine::passes::PassBindings bindings;
     GridImages out;
@@ -43,6 +67,7 @@ GridImages GridPass::add_to(engine::graph::RenderGraph& graph, const engine::vk:
             d.bindings = engine::passes::PassBindings(pipeline_);
             d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
             d.bindings.bind_image(b, LIQUID_BINDING_GRID_SPLAT, splat, nearest_.handle());
+            if (potential.valid()) d.bindings.bind_image(b, LIQUID_BINDING_GRID_POTENTIAL, potential, nearest_.handle());
             d.out.velocity = b.write(grids.velocity, Access::ColorAttachmentWrite);
             d.out.density = b.write(grids.density, Access::ColorAttachmentWrite);
           },

@@ -19,13 +19,15 @@ class GridPass {
  public:
   GridPass(engine::vk::Context& context, const SimulationSetup& setup, const std::vector<int32_t>& specialization);
 
-  // Reads `splat`, writes the updated velocity (u', fluid flag) and rho / rho0 into `grids`.
+  // Reads `splat` (and, with the splat-adjoint pressure, PressurePass's `potential`), writes the
+  // updated velocity (u', fluid flag) and rho / rho0 into `grids`.
   GridImages add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle splat,
-                    const GridImages& grids) const;
+                    const GridImages& grids, ImageHandle potential = {}) const;
 
  private:
   engine::vk::GraphicsPipeline pipeline_;
   engine::vk::Sampler nearest_;
+  bool splat_adjoint_ = false;
 };
 
 }  // namespace liquid

@@ -27,8 +27,12 @@
 // Splat: the particle textures, read by the vertex stage.
 #define LIQUID_BINDING_SPLAT_POSITIONS 1
 #define LIQUID_BINDING_SPLAT_VELOCITIES 2
-// Grid pass: the splatted grid.
+// Grid pass: the splatted grid; with the splat-adjoint pressure, the smoothed pressure Phi.
 #define LIQUID_BINDING_GRID_SPLAT 1
+#define LIQUID_BINDING_GRID_POTENTIAL 2
+// Splat-adjoint pressure passes: the splat (pressure.frag), the cells' pressure (potential.frag).
+#define LIQUID_BINDING_PRESSURE_SPLAT 1
+#define LIQUID_BINDING_POTENTIAL_PRESSURE 1
 // Particle update: the particles, the splatted grid (u for FLIP) and the grid pass's u'.
 #define LIQUID_BINDING_PARTICLE_POSITIONS 1
 #define LIQUID_BINDING_PARTICLE_VELOCITIES 2

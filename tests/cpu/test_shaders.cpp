@@ -99,6 +99,10 @@ TEST_CASE("shaders declare the specialization ids the host fills in", "[shaders]
   REQUIRE(expected.size() == liquid::specialization_id::count);
   const std::map<std::string, std::span<const uint32_t>> modules{
       {"grid 2D", liquid_shaders::grid_frag_2d},         {"grid 3D", liquid_shaders::grid_frag_3d},
+      {"grid adjoint 2D", liquid_shaders::grid_adjoint_frag_2d},
+      {"grid adjoint 3D", liquid_shaders::grid_adjoint_frag_3d},
+      {"pressure 2D", liquid_shaders::pressure_frag_2d}, {"pressure 3D", liquid_shaders::pressure_frag_3d},
+      {"potential 2D", liquid_shaders::potential_frag_2d}, {"potential 3D", liquid_shaders::potential_frag_3d},
       {"particle 2D", liquid_shaders::particle_frag_2d}, {"particle 3D", liquid_shaders::particle_frag_3d},
       {"splat 2D", liquid_shaders::splat_vert_2d},       {"splat 3D", liquid_shaders::splat_vert_3d},
       {"raymarch", liquid_shaders::raymarch_frag},       {"2D view", liquid_shaders::view2d_frag},
@@ -162,8 +166,7 @@ TEST_CASE("the views' uniform and push-constant blocks have the same layout in C
        {MEMBER(RaymarchUniforms, inverse_view_projection), MEMBER(RaymarchUniforms, view_projection),
         MEMBER(RaymarchUniforms, camera_position), MEMBER(RaymarchUniforms, iso_level),
         MEMBER(RaymarchUniforms, sun_direction), MEMBER(RaymarchUniforms, fine_step_cells),
-        MEMBER(RaymarchUniforms, bricks), MEMBER(RaymarchUniforms, brick_cells),
-        MEMBER(RaymarchUniforms, bisection_steps)}},
+        MEMBER(RaymarchUniforms, bricks), MEMBER(RaymarchUniforms, brick_cells)}},
       {"occupancy", {MEMBER(OccupancyPush, brick_cells)}},
       {"height field",
        {MEMBER(HeightFieldUniforms, view_projection), MEMBER(HeightFieldUniforms, camera_position),

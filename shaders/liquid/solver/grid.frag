@@ -6,11 +6,21 @@
 //   u'  = u + dt (-grad P + g + f_ext)                 (eq. 2 and 3, forward Euler, central differences)
 // (with the Tait clamp described at pressure_from_density) then the boundary conditions: no flow
 // through the walls or into obstacles.
+// SPLAT_ADJOINT (the scene's "pressure_force": "splat_adjoint"): the gradient is taken of the
+// potential Phi = W^T P that potential.frag smoothed from pressure.frag's P with the splat's own
+// kernel, which makes the pressure force the gradient of an energy (docs/physics.md).
+#ifndef SPLAT_ADJOINT
+#define SPLAT_ADJOINT 0
+#endif
 // Outputs: target 0 = (u', fluid flag), target 1 = rho / rho0 (for rendering and diagnostics).
 #extension GL_GOOGLE_include_directive : require
 #include "liquid/common.glsl"
+#include "liquid/solver/pressure.glsl"
 
 layout(set = 0, binding = LIQUID_BINDING_GRID_SPLAT) uniform GRID_SAMPLER u_splat;
+#if SPLAT_ADJOINT
+layout(set = 0, binding = LIQUID_BINDING_GRID_POTENTIAL) uniform GRID_SAMPLER u_potential;
+#endif
 
 layout(location = 0) in vec2 v_uv;
 #if DIM == 3
@@ -20,34 +30,6 @@ layout(location = 0) out vec4 out_velocity;
 layout(location = 1) out float out_density;
 
 const float k_fluid_epsilon = 1e-6;
-
-// Fraction of the kernel's mass beyond a wall k + 0.5 cells from a cell centre (k >= 0), from the
-// table the CPU fills once per step (liquid/uniforms.cpp; r is at most LIQUID_MAX_KERNEL_RADIUS_CELLS). Selected with
-// comparisons, not an indexed read: an index that differs between fragments is a gather on lavapipe.
-float kernel_mass_beyond(int k) {
-  float beyond = 0.0;
-  [[unroll]] for (int i = 0; i < LIQUID_WALL_TABLE_SIZE; ++i)
-    beyond = k == i ? u.wall_kernel_beyond[i / 4][i % 4] : beyond;
-  return beyond;
-}
-
-// Share of the kernel inside the domain along one axis, for the cell at index i of n: near a wall
-// the kernel is cut off and the splatted density reads low, which would pull liquid against the
-// wall; dividing by the share removes that bias. It is 1 from r cells away from both walls.
-float axis_coverage(int i, int n) {
-  i = clamp(i, 0, n - 1);
-  return (1.0 - kernel_mass_beyond(i)) * (1.0 - kernel_mass_beyond(n - 1 - i));
-}
-
-// Liquid (default): Becker and Teschner's Tait form, which the chapter cites, clamped at zero:
-// P = max(k ((rho/rho0)^gamma - 1), 0). Its gradient equals the printed P = k (rho/rho0)^gamma's
-// wherever rho > rho0, but below rest density (the free surface, empty cells) it exerts no pull
-// and no push, so the surface stays sharp instead of boiling off. Shallow water uses the printed
-// form (with gamma = 1 it is the SWE's P = g (h + b)).
-float pressure_from_density(float rho) {
-  float ratio_pow = density_ratio_power(max(rho / u.rest_density, 0.0));
-  return shallow_water() ? u.stiffness * ratio_pow : u.stiffness * max(ratio_pow - 1.0, 0.0);
-}
 
 // Pressure at neighbour cell c (clamped into the grid, which makes the difference one-sided at the
 // walls) whose kernel share inside the domain is `coverage`: liquid plus obstacle or ground density.
@@ -72,6 +54,16 @@ void main() {
   bool fluid = splat.a > k_fluid_epsilon;
   vec3 velocity = fluid ? splat.rgb / splat.a : vec3(0.0);
 
+#if SPLAT_ADJOINT
+  // Central differences of Phi; fetch_grid clamps at the walls, where Phi is mirror-symmetric.
+  vec3 grad_p;
+  grad_p.x = fetch_grid(u_potential, c + ivec3(1, 0, 0)).r - fetch_grid(u_potential, c - ivec3(1, 0, 0)).r;
+  grad_p.y = fetch_grid(u_potential, c + ivec3(0, 1, 0)).r - fetch_grid(u_potential, c - ivec3(0, 1, 0)).r;
+  grad_p.z = 0.0;
+#if DIM == 3
+  grad_p.z = fetch_grid(u_potential, c + ivec3(0, 0, 1)).r - fetch_grid(u_potential, c - ivec3(0, 0, 1)).r;
+#endif
+#else
   // Wall coverage is a product over the axes, so each neighbour's is the centre's with one factor
   // swapped: 3 factors per axis instead of a full product per neighbour.
   vec3 below = vec3(1.0), here = vec3(1.0), above = vec3(1.0);
@@ -91,6 +83,7 @@ void main() {
 #if DIM == 3
   grad_p.z = pressure_at(c + ivec3(0, 0, 1), here.x * here.y * above.z) -
              pressure_at(c - ivec3(0, 0, 1), here.x * here.y * below.z);
+#endif
 #endif
   grad_p /= 2.0 * h;
 

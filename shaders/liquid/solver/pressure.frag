@@ -1,0 +1,28 @@
+#version 450
+// Splat-adjoint pressure, first pass: the pressure P of every cell (section 2.1's Tait form with the
+// walls' coverage, plus the obstacles' and the ground's artificial density, section 6), exactly as
+// grid.frag computes it for its neighbours. potential.frag then smooths it.
+// Output: target 0 = P (m^2/s^2).
+#extension GL_GOOGLE_include_directive : require
+#include "liquid/common.glsl"
+#include "liquid/solver/pressure.glsl"
+
+layout(set = 0, binding = LIQUID_BINDING_PRESSURE_SPLAT) uniform GRID_SAMPLER u_splat;
+
+layout(location = 0) in vec2 v_uv;
+#if DIM == 3
+layout(location = 1) flat in int v_layer;
+#endif
+layout(location = 0) out float out_pressure;
+
+void main() {
+  ivec3 c = ivec3(gl_FragCoord.xy, 0);
+#if DIM == 3
+  c.z = v_layer;
+#endif
+  float rho = u.density_scale * fetch_grid(u_splat, c).a / cell_coverage(c);
+  vec3 p = cell_center(c);
+  rho += obstacle_density(p);
+  if (shallow_water()) rho += u.rest_density * ground_height(p.xy) / u.rest_depth;
+  out_pressure = pressure_from_density(rho);
+}

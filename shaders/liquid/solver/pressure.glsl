@@ -1,0 +1,43 @@
+// The pressure of the grid pass (section 2.1) and the walls' kernel coverage, shared by grid.frag
+// and by the splat-adjoint pressure passes (pressure.frag, potential.frag). Include after
+// common.glsl.
+#ifndef LIQUID_PRESSURE_GLSL
+#define LIQUID_PRESSURE_GLSL
+
+// Fraction of the kernel's mass beyond a wall k + 0.5 cells from a cell centre (k >= 0), from the
+// table the CPU fills once per step (liquid/uniforms.cpp; r is at most LIQUID_MAX_KERNEL_RADIUS_CELLS). Selected with
+// comparisons, not an indexed read: an index that differs between fragments is a gather on lavapipe.
+float kernel_mass_beyond(int k) {
+  float beyond = 0.0;
+  [[unroll]] for (int i = 0; i < LIQUID_WALL_TABLE_SIZE; ++i)
+    beyond = k == i ? u.wall_kernel_beyond[i / 4][i % 4] : beyond;
+  return beyond;
+}
+
+// Share of the kernel inside the domain along one axis, for the cell at index i of n: near a wall
+// the kernel is cut off and the splatted density reads low, which would pull liquid against the
+// wall; dividing by the share removes that bias. It is 1 from r cells away from both walls.
+float axis_coverage(int i, int n) {
+  i = clamp(i, 0, n - 1);
+  return (1.0 - kernel_mass_beyond(i)) * (1.0 - kernel_mass_beyond(n - 1 - i));
+}
+
+// Liquid (default): Becker and Teschner's Tait form, which the chapter cites, clamped at zero:
+// P = max(k ((rho/rho0)^gamma - 1), 0). Its gradient equals the printed P = k (rho/rho0)^gamma's
+// wherever rho > rho0, but below rest density (the free surface, empty cells) it exerts no pull
+// and no push, so the surface stays sharp instead of boiling off. Shallow water uses the printed
+// form (with gamma = 1 it is the SWE's P = g (h + b)).
+float pressure_from_density(float rho) {
+  float ratio_pow = density_ratio_power(max(rho / u.rest_density, 0.0));
+  return shallow_water() ? u.stiffness * ratio_pow : u.stiffness * max(ratio_pow - 1.0, 0.0);
+}
+
+// Share of the kernel inside the domain at cell c: the product of the axes' shares.
+float cell_coverage(ivec3 c) {
+  ivec3 n = grid_cells();
+  float coverage = 1.0;
+  [[unroll]] for (int a = 0; a < DIM; ++a) coverage *= axis_coverage(c[a], n[a]);
+  return coverage;
+}
+
+#endif
