@@ -64,7 +64,7 @@ def drag(args):
 def obstacle(args):
     # A right drag of the sphere of obstacles_2d (at (0.3, 0.22) m) 72 pixels up into the liquid.
     scene = os.path.join(args.scenes, "obstacles_2d.json")
-    common = [scene, "--frames", "34", "--steps-per-frame", "16", *SIZE, "--no-panel"]
+    common = [scene, "--frames", "34", "--steps-per-frame", "8", *SIZE, "--no-panel"]
     base = run(args, "obstacle_none", common)
     moved = run(args, "obstacle", [*common, "--script", os.path.join(args.scripts, "obstacle_2d.json")])
     before, after = base["obstacles"][0], moved["obstacles"][0]
