@@ -37,3 +37,16 @@ TEST_CASE("potential energy is measured from the domain's floor along gravity", 
   // No gravity, no potential energy.
   CHECK(liquid::compute_diagnostics(scene, pool(glm::vec3(0.0f)), particles, {}, {}, 0, 0.0).potential_energy == 0.0);
 }
+
+TEST_CASE("pressure_force picks the chapter's or the splat-adjoint pressure gradient", "[energy][scene]") {
+  const std::string head = R"({"dimension": 2, "domain": [1.0, 0.5], "particle_spacing": 0.01,
+    "fluid_blocks": [{"min": [0.0, 0.0], "max": [0.2, 0.2]}])";
+  const liquid::Scene plain = liquid::parse_scene(head + "}", "plain.json");
+  CHECK(plain.pressure_force == liquid::PressureForce::Chapter);
+  CHECK_FALSE(liquid::make_setup(plain, {}).splat_adjoint_pressure);
+  const liquid::Scene adjoint = liquid::parse_scene(head + R"(, "pressure_force": "splat_adjoint"})", "adjoint.json");
+  CHECK(adjoint.pressure_force == liquid::PressureForce::SplatAdjoint);
+  CHECK(liquid::make_setup(adjoint, {}).splat_adjoint_pressure);
+  CHECK_THROWS_WITH(liquid::parse_scene(head + R"(, "pressure_force": "sph"})", "bad.json"),
+                    Catch::Contains("pressure_force"));
+}

@@ -1,0 +1,305 @@
+// liquid_validate: runs the physical checks of docs/physics.md and prints each figure against its
+// target: the pool at rest (kinetic energy, surface level, volume), a dam break with nothing but
+// gravity and the walls (no gain of mechanical energy, volume), and the collapsing column's surge
+// front against Martin and Moyce (1952) in 2D at three particle spacings and in 3D. Writes every
+// time series to a JSON file that tools/plot_validation.py turns into SVG plots.
+#include "engine/io/atomic_file.h"
+#include "engine/vk/context.h"
+#include "liquid/node.h"
+#include "liquid/scene.h"
+#include "liquid/validation.h"
+
+#include "tools/cli.h"
+#include "tools/frame_loop.h"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#ifndef LIQUID_SOURCE_DIR
+#define LIQUID_SOURCE_DIR "."
+#endif
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Options {
+  fs::path scenes;
+  fs::path out = "out/validation";
+  bool quick = false;
+  std::vector<std::string> only;
+  bool validation = false;
+};
+
+// One sample per rendered frame of simulated time.
+struct Sample {
+  double t = 0.0, kinetic = 0.0, potential = 0.0, mechanical = 0.0, volume = 0.0, front = 0.0;
+  double surface_spread = 0.0;  // largest |surface height - mean| over the grid's columns, m
+};
+
+struct Run {
+  std::string name;
+  liquid::SimulationSetup setup;
+  std::vector<Sample> samples;
+  double wall_s = 0.0;
+};
+
+// A target line: the figure, the bound, and whether it holds.
+struct Check {
+  std::string what;
+  double value = 0.0;
+  std::string bound;
+  bool met = false;
+};
+
+fs::path default_scenes() {
+  if (fs::exists("assets/scenes")) return "assets/scenes";
+  return fs::path(LIQUID_SOURCE_DIR) / "assets" / "scenes";
+}
+
+double spread(const std::vector<double>& heights) {
+  double sum = 0.0;
+  int n = 0;
+  for (double h : heights)
+    if (h >= 0.0) sum += h, ++n;
+  if (n == 0) return 0.0;
+  const double mean = sum / n;
+  double worst = 0.0;
+  for (double h : heights)
+    if (h >= 0.0) worst = std::max(worst, std::abs(h - mean));
+  return worst;
+}
+
+// Runs a scene for `seconds` of simulated time, sampling every `sample_every` steps (default: a
+// frame, the scene's substeps).
+Run run_scene(engine::vk::Context& context, const liquid::Scene& scene, double seconds, int sample_every = 0) {
+  Run run;
+  run.name = scene.name;
+  liquid::LiquidNode node(context, scene);
+  run.setup = node.setup();
+  tools::FrameLoop loop(context);
+  const auto start = std::chrono::steady_clock::now();
+  const int total = int(std::ceil(seconds / double(scene.time_step) - 1e-6));
+  int done = 0;
+  auto sample = [&] {
+    const liquid::ParticleSnapshot particles = node.read_particles();
+    const liquid::Diagnostics d = node.diagnose(particles);
+    const std::vector<float> rho = node.read_density_ratio();
+    Sample s;
+    s.t = node.time();
+    s.kinetic = d.kinetic_energy;
+    s.potential = d.potential_energy;
+    s.mechanical = d.mechanical_energy;
+    s.volume = liquid::occupied_volume(rho, run.setup);
+    s.front = liquid::surge_front(particles);
+    s.surface_spread = spread(liquid::surface_heights(rho, run.setup));
+    run.samples.push_back(s);
+  };
+  while (done < total) {
+    const int n = std::min(sample_every > 0 ? std::min(sample_every, scene.substeps) : scene.substeps, total - done);
+    loop.run([&](engine::graph::RenderGraph& graph) { node.add_to(graph, n); });
+    done += n;
+    sample();
+  }
+  run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  tools::fail_on_validation_messages(context.validation_message_count());
+  return run;
+}
+
+void print_check(const Check& c) {
+  std::printf("  %-58s %12.5g   target %-18s %s\n", c.what.c_str(), c.value, c.bound.c_str(), c.met ? "met" : "NOT MET");
+}
+
+std::string json_series(const Run& run) {
+  std::ostringstream out;
+  out.precision(8);
+  out << "{\"name\": \"" << run.name << "\", \"cell_size\": " << run.setup.cell_size
+      << ", \"particle_spacing\": " << run.setup.particle_spacing << ", \"particles\": " << run.setup.initial_particles
+      << ", \"wall_s\": " << run.wall_s << ", \"samples\": [";
+  for (size_t i = 0; i < run.samples.size(); ++i) {
+    const Sample& s = run.samples[i];
+    out << (i ? ", " : "") << "[" << s.t << ", " << s.kinetic << ", " << s.potential << ", " << s.mechanical << ", "
+        << s.volume << ", " << s.front << ", " << s.surface_spread << "]";
+  }
+  out << "]}";
+  return out.str();
+}
+
+std::string json_checks(const std::vector<Check>& checks) {
+  std::ostringstream out;
+  out.precision(8);
+  out << "[";
+  for (size_t i = 0; i < checks.size(); ++i)
+    out << (i ? ", " : "") << "{\"what\": \"" << checks[i].what << "\", \"value\": " << checks[i].value
+        << ", \"target\": \"" << checks[i].bound << "\", \"met\": " << (checks[i].met ? "true" : "false") << "}";
+  out << "]";
+  return out.str();
+}
+
+double relative_volume_drift(const Run& run, double from) {
+  double reference = -1.0, worst = 0.0;
+  for (const Sample& s : run.samples) {
+    if (s.t < from - 1e-9) continue;
+    if (reference < 0.0) reference = s.volume;
+    worst = std::max(worst, std::abs(s.volume / reference - 1.0));
+  }
+  return worst;
+}
+
+// The pool at rest: kinetic energy below 0.05 % of the potential energy from 1 s on and not
+// growing, the surface level within one cell, the volume within 1 %.
+void rest_pool(engine::vk::Context& context, const Options& o, std::vector<Check>& checks, std::vector<Run>& runs) {
+  const liquid::Scene scene = liquid::load_scene(o.scenes / "rest_pool_2d.json");
+  const double seconds = o.quick ? 2.0 : 10.0;
+  std::printf("rest pool (%s, %.0f s)...\n", scene.name.c_str(), seconds);
+  const Run run = run_scene(context, scene, seconds);
+  const double pe0 = run.samples.front().potential;
+  double worst_ratio = 0.0, early = 0.0, late = 0.0, worst_spread = 0.0;
+  const double middle = 1.0 + 0.5 * (seconds - 1.0);
+  for (const Sample& s : run.samples) {
+    if (s.t < 1.0 - 1e-9) continue;
+    worst_ratio = std::max(worst_ratio, s.kinetic / pe0);
+    (s.t < middle ? early : late) = std::max(s.t < middle ? early : late, s.kinetic);
+    worst_spread = std::max(worst_spread, s.surface_spread);
+  }
+  const double h = run.setup.cell_size;
+  checks.push_back({"rest pool: max KE / PE from 1 s", worst_ratio, "< 5e-4", worst_ratio < 5e-4});
+  checks.push_back({"rest pool: max KE second half / first half (from 1 s)", early > 0 ? late / early : 0.0, "<= 1",
+                    late <= early});
+  checks.push_back({"rest pool: max surface deviation from its mean, cells", worst_spread / h, "< 1",
+                    worst_spread < h});
+  const double drift = relative_volume_drift(run, 0.0);
+  checks.push_back({"rest pool: max volume change from the first frame", drift, "< 0.01", drift < 0.01});
+  runs.push_back(run);
+}
+
+// A dam break with nothing but gravity and the walls: no 1 s window after the first impact gains
+// more than 1 % of the initial potential energy; the volume after settling.
+void energy(engine::vk::Context& context, const Options& o, std::vector<Check>& checks, std::vector<Run>& runs) {
+  const liquid::Scene scene = liquid::load_scene(o.scenes / "dam_break_2d.json");
+  const double seconds = o.quick ? 3.0 : 10.0;
+  std::printf("dam break (%s, %.0f s)...\n", scene.name.c_str(), seconds);
+  const Run run = run_scene(context, scene, seconds);
+  const double pe0 = run.samples.front().potential;
+  // First impact: the front reaches the far wall.
+  double impact = seconds;
+  for (const Sample& s : run.samples)
+    if (s.front >= run.setup.domain.x - 2.0 * run.setup.cell_size) {
+      impact = s.t;
+      break;
+    }
+  std::vector<double> t, e;
+  for (const Sample& s : run.samples) t.push_back(s.t), e.push_back(s.mechanical);
+  const double gain = liquid::max_gain_in_window(t, e, impact, 1.0);
+  checks.push_back({"dam break: max gain of KE + PE in 1 s after impact / PE0", gain / pe0, "< 0.01",
+                    gain / pe0 < 0.01});
+  const double drift = std::abs(run.samples.back().volume / run.samples.front().volume - 1.0);
+  checks.push_back({"dam break: volume at the end against the first frame", drift, "< 0.01", drift < 0.01});
+  runs.push_back(run);
+}
+
+// The collapsing column: a = 0.1 m, height 2a, dry floor.
+liquid::Scene column_at(const liquid::Scene& base, double spacing) {
+  liquid::Scene s = base;
+  const double scale = spacing / base.particle_spacing;
+  s.particle_spacing = float(spacing);
+  s.grid_resolution = int(std::lround(*base.grid_resolution / scale));
+  s.time_step = float(base.time_step * scale);
+  s.substeps = int(std::lround(base.substeps / scale));
+  s.name = base.name + " (spacing " + tools::format_cli_number(spacing) + " m)";
+  return s;
+}
+
+void column(engine::vk::Context& context, const Options& o, const std::string& file, std::vector<double> spacings,
+            std::vector<Check>& checks, std::vector<Run>& runs) {
+  const liquid::Scene base = liquid::load_scene(o.scenes / file);
+  const double a = base.fluid_blocks.at(0).max.x - base.fluid_blocks.at(0).min.x;
+  const double g = glm::length(base.gravity);
+  const double t_end = 3.4 / std::sqrt(2.0 * g / a);
+  std::vector<liquid::FrontError> errors;
+  for (double spacing : spacings) {
+    const liquid::Scene scene = column_at(base, spacing);
+    std::printf("%s, %.3f s...\n", scene.name.c_str(), t_end);
+    // A sample every 2.5 ms (T steps of 0.035): the front is interpolated between samples.
+    Run run = run_scene(context, scene, t_end, std::max(1, int(std::lround(0.0025 / scene.time_step))));
+    std::vector<double> T{0.0}, Z{(base.fluid_blocks[0].max.x) / a};
+    for (const Sample& s : run.samples) T.push_back(s.t * std::sqrt(2.0 * g / a)), Z.push_back(s.front / a);
+    const liquid::FrontError e = liquid::compare_front(T, Z);
+    errors.push_back(e);
+    const std::string label = base.name + " at spacing " + tools::format_cli_number(spacing) + " m";
+    checks.push_back({label + ": mean |Z - Z_exp| / Z_exp", e.mean, "< 0.05", e.mean < 0.05});
+    checks.push_back({label + ": max |Z - Z_exp| / Z_exp", e.max, "< 0.10", e.max < 0.10});
+    run.name = label;
+    runs.push_back(run);
+  }
+  if (errors.size() > 1) {
+    bool converging = true;
+    for (size_t i = 1; i < errors.size(); ++i) converging = converging && errors[i].mean <= errors[i - 1].mean + 0.005;
+    checks.push_back({base.name + ": mean error finest / coarsest spacing", errors.back().mean / errors.front().mean,
+                      "<= 1, not rising", converging});
+  }
+}
+
+bool wanted(const Options& o, const std::string& name) {
+  return o.only.empty() || std::find(o.only.begin(), o.only.end(), name) != o.only.end();
+}
+
+int run(const Options& o) {
+  engine::vk::Context context(engine::vk::ContextOptions{.validation = o.validation});
+  std::printf("device %s (%s)%s\n", context.device_name().c_str(), context.driver_description().c_str(),
+              o.quick ? ", quick" : "");
+  std::vector<Check> checks;
+  std::vector<Run> runs;
+  if (wanted(o, "rest_pool")) rest_pool(context, o, checks, runs);
+  if (wanted(o, "energy")) energy(context, o, checks, runs);
+  if (wanted(o, "column")) {
+    column(context, o, "column_2d.json", o.quick ? std::vector<double>{0.004} : std::vector<double>{0.004, 0.002, 0.001},
+           checks, runs);
+    column(context, o, "column_3d.json", {0.004}, checks, runs);
+  }
+  std::printf("\n%-60s %12s   %-25s\n", "figure", "measured", "target");
+  int unmet = 0;
+  for (const Check& c : checks) {
+    print_check(c);
+    unmet += c.met ? 0 : 1;
+  }
+  std::ostringstream json;
+  json << "{\"device\": \"" << context.device_name() << "\", \"quick\": " << (o.quick ? "true" : "false")
+       << ", \"checks\": " << json_checks(checks) << ", \"runs\": [";
+  for (size_t i = 0; i < runs.size(); ++i) json << (i ? ",\n" : "\n") << json_series(runs[i]);
+  json << "]}\n";
+  fs::create_directories(o.out);
+  engine::io::write_file_atomically(o.out / "validation.json", json.str());
+  std::printf("\n%d of %zu targets met; series in %s (plot: python3 tools/plot_validation.py %s)\n",
+              int(checks.size()) - unmet, checks.size(), (o.out / "validation.json").string().c_str(),
+              (o.out / "validation.json").string().c_str());
+  return unmet == 0 ? 0 : 1;  // a target not met fails the command
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Runs the physical validation (rest pool, energy, collapsing column) and prints each figure "
+               "against its target"};
+  Options o;
+  std::string scenes, out = o.out.string();
+  app.add_option("--scenes", scenes, "folder holding rest_pool_2d, dam_break_2d, column_2d and column_3d");
+  app.add_option("-o,--out", out, "output folder (validation.json)");
+  app.add_flag("--quick", o.quick, "shorter runs (2 s pool, 3 s dam break, one 2D column spacing)");
+  app.add_option("--only", o.only, "rest_pool, energy or column (repeatable)")
+      ->check(CLI::IsMember({"rest_pool", "energy", "column"}));
+  app.add_flag("--validation", o.validation, "enable the Vulkan validation layer");
+  return tools::run_main(app, argc, argv, "liquid_validate", [&] {
+    o.scenes = scenes.empty() ? default_scenes() : fs::path(scenes);
+    o.out = out;
+    return run(o);
+  });
+}
