@@ -70,6 +70,12 @@ std::vector<double> surface_heights(const std::vector<float>& density_ratio, con
   return heights;
 }
 
+double volume_under_surface(const std::vector<double>& heights, const SimulationSetup& setup) {
+  double sum = 0.0;
+  for (double h : heights) sum += std::max(h, 0.0);
+  return sum * std::pow(double(setup.cell_size), setup.dimension - 1);
+}
+
 FrontError compare_front(std::span<const double> T, std::span<const double> Z, double t_min, double t_max) {
   FrontError error;
   if (T.size() < 2 || T.size() != Z.size()) return error;

@@ -30,6 +30,11 @@ double surge_front(const ParticleSnapshot& particles);
 // (m^2 in 2D): the cells above the level, each counted by cell_size^d.
 double occupied_volume(const std::vector<float>& density_ratio, const SimulationSetup& setup, float iso = 0.5f);
 
+// Volume under the free surface: the sum over grid columns of surface_heights() (those with liquid)
+// times the column's cross-section, m^3 (m^2 in 2D). Resolves changes well below a cell, unlike
+// occupied_volume(); it counts spray and overhangs as if they lay under the surface.
+double volume_under_surface(const std::vector<double>& heights, const SimulationSetup& setup);
+
 // Height of the free surface over every grid column (x in 2D, x and z in 3D): the highest point where
 // rho / rho0 falls through `iso`, interpolated between cell centres; -1 for a column with no liquid.
 std::vector<double> surface_heights(const std::vector<float>& density_ratio, const SimulationSetup& setup,

@@ -98,9 +98,10 @@ Run run_scene(engine::vk::Context& context, const liquid::Scene& scene, double s
     s.kinetic = d.kinetic_energy;
     s.potential = d.potential_energy;
     s.mechanical = d.mechanical_energy;
-    s.volume = liquid::occupied_volume(rho, run.setup);
+    const std::vector<double> heights = liquid::surface_heights(rho, run.setup);
+    s.volume = liquid::volume_under_surface(heights, run.setup);
     s.front = liquid::surge_front(particles);
-    s.surface_spread = spread(liquid::surface_heights(rho, run.setup));
+    s.surface_spread = spread(heights);
     run.samples.push_back(s);
   };
   while (done < total) {

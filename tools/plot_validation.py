@@ -145,7 +145,7 @@ def main():
             p.series(ts, [s[KE] / pe0 for s in r["samples"]], r["name"] + ": KE", color, dash="4,3")
         p.save(os.path.join(out, "energy.svg"))
 
-        p = Plot("Occupied volume (rho/rho0 >= 0.5) / first frame", "t (s)", "V / V(first frame)", (0, t_end),
+        p = Plot("Volume under the free surface / first frame", "t (s)", "V / V(first frame)", (0, t_end),
                  (0.96, 1.04))
         for i, r in enumerate(others):
             v0 = r["samples"][0][VOLUME] or 1.0

@@ -40,9 +40,9 @@ std::vector<Sample> run_sampled(liquid::LiquidNode& node, double seconds, int ev
     const liquid::ParticleSnapshot p = node.read_particles();
     const liquid::Diagnostics d = node.diagnose(p);
     const std::vector<float> rho = node.read_density_ratio();
+    const std::vector<double> heights = liquid::surface_heights(rho, node.setup());
     samples.push_back({d.time, d.kinetic_energy, d.potential_energy, d.mechanical_energy,
-                       liquid::occupied_volume(rho, node.setup()), liquid::surge_front(p),
-                       spread(liquid::surface_heights(rho, node.setup()))});
+                       liquid::volume_under_surface(heights, node.setup()), liquid::surge_front(p), spread(heights)});
   }
   return samples;
 }
