@@ -6,6 +6,7 @@
 
 #include <glm/gtc/packing.hpp>
 
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 
@@ -60,6 +61,16 @@ LiquidNode::LiquidNode(engine::vk::Context& context, const Scene& scene, const L
 }
 
 LiquidNode::~LiquidNode() = default;
+
+void LiquidNode::set_runtime_parameters(const RuntimeParameters& p) {
+  if (!std::isfinite(p.gravity.x) || !std::isfinite(p.gravity.y) || !std::isfinite(p.gravity.z))
+    throw std::invalid_argument("liquid: gravity must be finite");
+  if (!(p.pic_ratio >= 0.0f && p.pic_ratio <= 1.0f)) throw std::invalid_argument("liquid: pic_ratio must be in [0, 1]");
+  if (!(p.stiffness >= 0.0f && std::isfinite(p.stiffness))) throw std::invalid_argument("liquid: stiffness must be >= 0");
+  setup_.gravity = p.gravity;
+  setup_.pic_ratio = p.pic_ratio;
+  setup_.stiffness = p.stiffness;
+}
 
 void LiquidNode::set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity) {
   if (index >= pose_overrides_.size())

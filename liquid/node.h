@@ -49,6 +49,16 @@ class LiquidNode {
 
   // External forces for the following steps (at most LIQUID_MAX_BRUSHES).
   void set_brushes(std::vector<ForceBrush> brushes) { brushes_ = std::move(brushes); }
+  // The parameters a host may change while the node runs (an interactive viewer's sliders); they
+  // take effect from the next step. Throws std::invalid_argument on a non-finite gravity, a PIC
+  // ratio outside [0, 1] or a negative stiffness. (The energy bound stays the scene's.)
+  struct RuntimeParameters {
+    glm::vec3 gravity{0.0f};  // m/s^2
+    float pic_ratio = 0.0f;   // 1 = PIC, 0 = FLIP
+    float stiffness = 0.0f;   // k
+  };
+  RuntimeParameters runtime_parameters() const { return {setup_.gravity, setup_.pic_ratio, setup_.stiffness}; }
+  void set_runtime_parameters(const RuntimeParameters& parameters);
   // Places obstacle `index` (a host-driven obstacle): from now on it moves at `velocity` from
   // `center`, replacing the scene's scripted motion. The set of obstacles and their shapes are
   // fixed when the node is created (the shaders are specialized for them).
