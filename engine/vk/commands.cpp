@@ -8,6 +8,12 @@
 namespace engine::vk {
 
 CommandBuffer::CommandBuffer(Context& context) : context_(context) {
+  // Reused when the context has one to spare: see Context::RecycledCommands.
+  if (const Context::RecycledCommands spare = context.take_recycled_commands(); spare.cmd) {
+    cmd_ = spare.cmd;
+    fence_ = spare.fence;
+    return;
+  }
   VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
   alloc.commandPool = context.command_pool();
   alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
@@ -23,8 +29,7 @@ CommandBuffer::CommandBuffer(Context& context) : context_(context) {
 
 CommandBuffer::~CommandBuffer() {
   if (pending_) vkWaitForFences(context_.device(), 1, &fence_, VK_TRUE, UINT64_MAX);
-  vkDestroyFence(context_.device(), fence_, nullptr);
-  vkFreeCommandBuffers(context_.device(), context_.command_pool(), 1, &cmd_);
+  context_.recycle_commands({cmd_, fence_});
 }
 
 VkCommandBuffer CommandBuffer::begin() {

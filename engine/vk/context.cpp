@@ -153,6 +153,8 @@ void Context::release() {
     // A host's device may still run the host's own work: wait for our queue only.
     if (owns_device_) vkDeviceWaitIdle(device_);
     else if (queue_) vkQueueWaitIdle(queue_);
+    for (const RecycledCommands& r : recycled_commands_) vkDestroyFence(device_, r.fence, nullptr);
+    recycled_commands_.clear();  // their command buffers go with the pool
     if (command_pool_) vkDestroyCommandPool(device_, command_pool_, nullptr);
     if (owns_device_) vkDestroyDevice(device_, nullptr);
     device_ = VK_NULL_HANDLE;
@@ -316,6 +318,19 @@ void Context::finish_setup() {
   pool_info.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
   pool_info.queueFamilyIndex = queue_family_;
   VK_CHECK(vkCreateCommandPool(device_, &pool_info, nullptr, &command_pool_));
+}
+
+Context::RecycledCommands Context::take_recycled_commands() {
+  std::lock_guard<std::mutex> lock(recycled_mutex_);
+  if (recycled_commands_.empty()) return {};
+  const RecycledCommands commands = recycled_commands_.back();
+  recycled_commands_.pop_back();
+  return commands;
+}
+
+void Context::recycle_commands(RecycledCommands commands) {
+  std::lock_guard<std::mutex> lock(recycled_mutex_);
+  recycled_commands_.push_back(commands);
 }
 
 void Context::on_validation_message(const char* message) {

@@ -11,6 +11,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -103,6 +104,19 @@ class Context {
   // Sets a debug name that validation messages and capture tools show (no-op without the layer).
   void set_name(VkObjectType type, uint64_t handle, const std::string& name) const;
 
+  // A command buffer of command_pool() and its fence, handed back by an engine::vk::CommandBuffer
+  // for the next one to reuse. Recycled because lavapipe (Mesa 22.3) keeps about 3 KB for every
+  // command buffer ever allocated until the device is destroyed, freed or not: a host reading
+  // state back every frame through fresh command buffers grew without bound (docs/memory.md).
+  struct RecycledCommands {
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    VkFence fence = VK_NULL_HANDLE;
+  };
+  // One from the recycle list, or an empty pair when it has none.
+  RecycledCommands take_recycled_commands();
+  // `commands` must not be pending on the queue.
+  void recycle_commands(RecycledCommands commands);
+
   PFN_vkCmdPushDescriptorSetKHR cmd_push_descriptor_set = nullptr;
 
   // Called by the debug callback.
@@ -133,6 +147,8 @@ class Context {
   std::atomic<uint32_t> validation_messages_{0};
   mutable std::string last_message_;
   PFN_vkSetDebugUtilsObjectNameEXT set_object_name_ = nullptr;
+  std::mutex recycled_mutex_;
+  std::vector<RecycledCommands> recycled_commands_;
 };
 
 }  // namespace engine::vk

@@ -20,7 +20,6 @@ using engine::vk::DescriptorKind;
 namespace {
 
 constexpr float k_fine_step_cells = 0.6f;
-constexpr int k_bisection_steps = 5;
 
 // The scene's constants plus the raymarch's own (constant_id LIQUID_RAYMARCH_COMPOSITE_ID).
 std::vector<int32_t> raymarch_specialization(const LiquidNode& node, bool composite) {
@@ -88,7 +87,6 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
   render.fine_step_cells = k_fine_step_cells;
   render.bricks = bricks;
   render.brick_cells = float(k_brick_cells);
-  render.bisection_steps = k_bisection_steps;
   const engine::vk::UniformSlice view = uniforms_.push(render);
 
   // Occupancy: one texel per brick, the brick's largest density.

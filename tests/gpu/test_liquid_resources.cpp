@@ -1,35 +1,23 @@
-// Host resources of a long run: stepping must not grow the process's memory. Lavapipe used to
-// allocate about 3 MB more per 3D solver step (a 16-frame demo ended near 8 GB) until the solver's
-// shaders were specialized for the scene's features (shaders/liquid/common.glsl); this keeps it so.
+// Host resources of a long run: stepping and rendering must not grow the process's memory.
+// Lavapipe used to allocate about 3 MB more per 3D solver step (a 16-frame demo ended near 8 GB)
+// until the solver's shaders were specialized for the scene's features
+// (shaders/liquid/common.glsl), about 2.7 MB per raymarched frame until the raymarch's loop
+// bounds were constants, and about 12 KB per diagnose() until command buffers were recycled
+// (docs/memory.md); these keep it so.
+#include "engine/graph/render_graph.h"
+#include "engine/vk/commands.h"
 #include "liquid/node.h"
+#include "liquid/render/camera.h"
+#include "liquid/render/renderer.h"
 #include "tests/gpu/liquid_helpers.h"
+#include "tests/support/memory.h"
 
 #include <catch2/catch.hpp>
 
-#include <fstream>
-#include <string>
-
 namespace {
 
-// Resident set size of this process in MiB, from /proc/self/status (Linux).
-double resident_mib() {
-  std::ifstream status("/proc/self/status");
-  std::string key;
-  while (status >> key) {
-    if (key == "VmRSS:") {
-      double kib = 0.0;
-      status >> kib;
-      return kib / 1024.0;
-    }
-    status.ignore(1 << 12, '\n');
-  }
-  FAIL("no VmRSS in /proc/self/status");
-  return 0.0;
-}
-
-}  // namespace
-
-TEST_CASE("a long 3D run with obstacles, an emitter and a force brush does not grow host memory", "[gpu][liquid][resources]") {
+// small_3d with every feature the shaders specialize for: a sphere, a box, metaballs, an emitter.
+liquid::Scene busy_small_3d() {
   liquid::Scene scene = test::shipped_scene("small_3d");
   liquid::Obstacle sphere;
   sphere.shape = liquid::ObstacleShape::Sphere;
@@ -50,15 +38,73 @@ TEST_CASE("a long 3D run with obstacles, an emitter and a force brush does not g
   jet.radius = 0.02f;
   jet.capacity = 2000;
   scene.emitters = {jet};
+  return scene;
+}
+
+}  // namespace
+
+TEST_CASE("a long 3D run with obstacles, an emitter and a force brush does not grow host memory", "[gpu][liquid][resources]") {
+  const liquid::Scene scene = busy_small_3d();
   liquid::LiquidNode node(test::gpu(), scene);
   node.set_brushes({{.position = {0.1f, 0.1f, 0.12f}, .radius = 0.08f, .acceleration = {2.0f, 0.0f, 0.0f}}});
 
   test::run_steps(node, 75);  // warm-up: pipelines, first allocations
-  const double before = resident_mib();
+  const double before = test::resident_mib();
   test::run_steps(node, 300);
-  const double growth = resident_mib() - before;
+  const double growth = test::resident_mib() - before;
   // Before the fix this run grew by about 900 MiB; allocator noise is a few MiB.
   INFO("resident set grew by " << growth << " MiB over 300 steps");
   CHECK(growth < 48.0);
+  REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("a long raymarched 3D capture does not grow host memory", "[gpu][liquid][resources]") {
+  // One step and one small frame (raymarch with obstacles, then FXAA) per frame, as liquid_capture
+  // draws them: 250 frames after a warm-up of 20.
+  engine::vk::Context& context = test::gpu();
+  liquid::LiquidNode node(context, busy_small_3d(), liquid::LiquidOptions{.frames_in_flight = 1, .max_steps_per_frame = 1});
+  liquid::LiquidRenderer renderer(context, node, liquid::RenderSettings{.width = 64, .height = 48});
+  const liquid::CameraView camera = liquid::default_camera(node.scene(), node.setup());
+  engine::graph::RenderGraph graph(&context);
+  engine::vk::CommandBuffer cmd(context);
+  double before = 0.0;
+  for (int frame = 0; frame < 270; ++frame) {
+    if (frame == 20) before = test::resident_mib();
+    graph.reset();
+    renderer.add_to(graph, node.add_to(graph, 1), camera);
+    graph.compile();
+    graph.execute(cmd.begin());
+    cmd.submit_and_wait();
+  }
+  const double growth = test::resident_mib() - before;
+  // With the bisection's count read from the view's uniform block this grew by about 2.7 MiB per
+  // frame (some 670 MiB here).
+  INFO("resident set grew by " << growth << " MiB over 250 frames");
+  CHECK(growth < 24.0);
+  REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("a long 2D run checked after every step does not grow host memory", "[gpu][liquid][resources]") {
+  // As liquid_run runs it: one graph and command buffer, a submission of one step, then diagnose()
+  // (three read-backs), 1000 times after a warm-up of 50. Each read-back used to allocate a fresh
+  // command buffer, of which lavapipe kept about 3 KB for good: 11.8 MiB here (dam_break_2d grew
+  // 7 MB in 150,000 steps). What is left is about 1 KB per diagnose() (docs/memory.md).
+  engine::vk::Context& context = test::gpu();
+  liquid::LiquidNode node(context, test::shipped_scene("rest_pool_2d"));
+  engine::graph::RenderGraph graph(&context);
+  engine::vk::CommandBuffer cmd(context);
+  double before = 0.0;
+  for (int batch = 0; batch < 1050; ++batch) {
+    if (batch == 50) before = test::resident_mib();
+    graph.reset();
+    node.add_to(graph, 1);
+    graph.compile();
+    graph.execute(cmd.begin());
+    cmd.submit_and_wait();
+    node.diagnose();
+  }
+  const double growth = test::resident_mib() - before;
+  INFO("resident set grew by " << growth << " MiB over 1000 steps and checks");
+  CHECK(growth < 4.0);
   REQUIRE_NO_VALIDATION_MESSAGES();
 }

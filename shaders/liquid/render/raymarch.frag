@@ -26,6 +26,10 @@ layout(location = 0) in vec2 v_uv;
 layout(location = 0) out vec4 out_color;
 
 const float k_no_hit = 1e30;
+// Refinements of a crossing. A constant, not a uniform: lavapipe (Mesa 22.3) compiles a fresh copy
+// of a shader whose loop count is read from a uniform block on every draw and keeps every copy
+// (2.7 MB per frame of this shader; docs/memory.md).
+const int k_bisection_steps = 5;
 const vec3 k_absorption = vec3(6.0, 1.6, 0.9);  // 1/m: red is absorbed first, so depth reads blue-green
 
 float density_at(vec3 p) { return textureLod(u_density, p / u.domain, 0.0).r; }
@@ -158,7 +162,7 @@ float march_liquid(vec3 origin, vec3 dir, float t_enter, float t_exit) {
         if (d > iso) {
           // Bisection between the last sample outside and this one inside.
           float a = previous_t, b = s;
-          for (int k = 0; k < r.bisection_steps; ++k) {
+          for (int k = 0; k < k_bisection_steps; ++k) {
             float m = 0.5 * (a + b);
             if (density_at(origin + dir * m) > iso) b = m;
             else a = m;

@@ -28,7 +28,6 @@ LIQUID_STRUCT(RaymarchUniforms) {
   float fine_step_cells;   // march step inside occupied bricks
   ivec3 bricks;            // occupancy volume size
   float brick_cells;       // occupancy brick edge, cells
-  int bisection_steps;     // refinements of a crossing
 };
 
 // Occupancy (occupancy.frag), push constants.
