@@ -54,6 +54,8 @@ LiquidNode::LiquidNode(engine::vk::Context& context, const Scene& scene, const L
   uniforms_ = std::make_unique<engine::vk::UniformArena>(
       context, engine::vk::UniformArena::frame_bytes({sizeof(gpu::SolverUniforms)}, max_steps_per_frame_),
       options.frames_in_flight + 1);
+  grid_uniforms_ = std::make_unique<engine::vk::UniformArena>(
+      context, engine::vk::UniformArena::frame_bytes({sizeof(gpu::SolverUniforms)}), options.frames_in_flight + 1);
   energy_bound_ = kinetic_energy_bound(scene_, setup_, options.energy_bound_factor);
   active_ = setup_.initial_particles;
   emitted_.assign(scene.emitters.size(), 0);
@@ -161,6 +163,56 @@ LiquidImages LiquidNode::add_to(engine::graph::RenderGraph& graph, int steps) {
     ++step_;
   }
   return {particles[s.current].positions, particles[s.current].velocities, splat, grids.velocity, grids.density};
+}
+
+LiquidImages LiquidNode::add_grids_to(engine::graph::RenderGraph& graph, const LiquidImages& images) {
+  grid_uniforms_->begin_frame();
+  StepInputs step;
+  step.dt = 0.0f;  // the grid pass then leaves the splatted velocity unaccelerated
+  step.active_before = step.active_after = active_;
+  step.obstacle_poses = obstacle_poses(time_);
+  step.brushes = brushes_;
+  const engine::vk::UniformSlice slice = grid_uniforms_->push(make_uniforms(scene_, setup_, step));
+  const ParticleImages particles{images.positions, images.velocities};
+  const ImageHandle splat = splat_->add_to(graph, slice, particles, images.splat, active_);
+  PressureImages pressure = create_pressure_images(graph);
+  const GridImages grids = add_grid(graph, slice, splat, GridImages{images.grid_velocity, images.density}, pressure);
+  return {images.positions, images.velocities, splat, grids.velocity, grids.density};
+}
+
+LiquidNode::Checkpoint LiquidNode::save_checkpoint() {
+  Checkpoint c;
+  c.step = step_;
+  c.time = time_;
+  c.active = active_;
+  c.emitted = emitted_;
+  for (const auto& o : pose_overrides_)
+    c.poses.push_back(o ? Checkpoint::Pose{true, o->center, o->velocity, o->since} : Checkpoint::Pose{});
+  const size_t texels = size_t(setup_.particle_texture.x) * setup_.particle_texture.y;
+  c.positions = as_vector<glm::vec4>(engine::graph::download_image(context_, state_->positions[state_->current]), texels);
+  c.velocities =
+      as_vector<glm::vec4>(engine::graph::download_image(context_, state_->velocities[state_->current]), texels);
+  return c;
+}
+
+void LiquidNode::restore_checkpoint(const Checkpoint& c) {
+  const size_t texels = size_t(setup_.particle_texture.x) * setup_.particle_texture.y;
+  if (c.positions.size() != texels || c.velocities.size() != texels || c.emitted.size() != emitted_.size() ||
+      c.poses.size() != pose_overrides_.size() || c.active < 0 || c.active > setup_.capacity)
+    throw std::invalid_argument("liquid: the checkpoint does not match this scene (" + std::to_string(c.positions.size()) +
+                                " particle texels, " + std::to_string(c.emitted.size()) + " emitters, " +
+                                std::to_string(c.poses.size()) + " obstacles; the scene has " + std::to_string(texels) +
+                                ", " + std::to_string(emitted_.size()) + ", " + std::to_string(pose_overrides_.size()) + ")");
+  engine::graph::upload_image(context_, state_->positions[state_->current], std::as_bytes(std::span(c.positions)));
+  engine::graph::upload_image(context_, state_->velocities[state_->current], std::as_bytes(std::span(c.velocities)));
+  step_ = c.step;
+  time_ = c.time;
+  active_ = c.active;
+  emitted_ = c.emitted;
+  for (size_t i = 0; i < c.poses.size(); ++i) {
+    const Checkpoint::Pose& p = c.poses[i];
+    pose_overrides_[i] = p.overridden ? std::optional(PoseOverride{p.center, p.velocity, p.since}) : std::nullopt;
+  }
 }
 
 ParticleSnapshot LiquidNode::read_particles() {

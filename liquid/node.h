@@ -82,6 +82,35 @@ class LiquidNode {
   Diagnostics diagnose(const ParticleSnapshot& particles);
   double energy_bound() const { return energy_bound_; }
 
+  // Adds a splat and a grid pass of the particles in `images` (what add_to() returned on this
+  // graph, possibly for 0 steps) with a zero time step, and returns the new grids: the density and
+  // grid velocity of the state as it is now, where add_to()'s come from the last step's splat,
+  // taken before its particle update. Exports use it so every file of a frame holds one instant;
+  // the particles, clock and counts are left as they are.
+  LiquidImages add_grids_to(engine::graph::RenderGraph& graph, const LiquidImages& images);
+
+  // The whole simulation state between steps: restoring it into a node created from the same scene
+  // continues the run as if it had never stopped (bit for bit on the same driver), since every
+  // step rebuilds the grids from the particles. Force brushes are the host's input, not state.
+  struct Checkpoint {
+    struct Pose {  // a set_obstacle_pose() in effect
+      bool overridden = false;
+      glm::vec3 center{0.0f}, velocity{0.0f};
+      double since = 0.0;  // s
+    };
+    int step = 0;
+    double time = 0.0;  // s
+    int active = 0;
+    std::vector<int> emitted;      // per emitter
+    std::vector<Pose> poses;       // per obstacle
+    std::vector<glm::vec4> positions, velocities;  // the whole particle textures, inactive texels too
+  };
+  // Blocking reads (call when no frame of this node is in flight).
+  Checkpoint save_checkpoint();
+  // Throws std::invalid_argument when the checkpoint's sizes (texture, emitters, obstacles) do not
+  // match this node's scene.
+  void restore_checkpoint(const Checkpoint& checkpoint);
+
   LiquidState& state() { return *state_; }
 
  private:
@@ -106,6 +135,7 @@ class LiquidNode {
   std::unique_ptr<ParticleUpdatePass> particle_update_;
   std::unique_ptr<LiquidState> state_;
   std::unique_ptr<engine::vk::UniformArena> uniforms_;
+  std::unique_ptr<engine::vk::UniformArena> grid_uniforms_;  // add_grids_to()'s block, one per frame
   int max_steps_per_frame_ = 0;
   double energy_bound_ = 0.0;
 

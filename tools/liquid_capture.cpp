@@ -1,47 +1,58 @@
 // liquid_capture: the offline frame-capture tool. Runs a scene and writes numbered PNG frames, a
-// statistics table (stats.csv: the solver's diagnostics and each pass's GPU time per frame) and,
-// on request, the particles of every frame as binary PLY. It is a host like any engine: it builds
-// its render graph through the liquid module's public API (LiquidNode, LiquidRenderer) only.
-#include "engine/graph/render_graph.h"
-#include "engine/graph/transfer.h"
+// statistics table (stats.csv: the solver's diagnostics and each pass's GPU time per frame), a
+// summary, and on request particles (PLY), grids (OpenVDB), a video and checkpoints to resume
+// from. It is a host like any engine: it builds its render graph through the liquid module's
+// public API (LiquidNode, LiquidRenderer) only. The pieces live in tools/capture/.
 #include "engine/io/atomic_file.h"
 #include "engine/vk/context.h"
-#include "engine/vk/png.h"
-#include "liquid/export/ply.h"
 #include "liquid/node.h"
 #include "liquid/render/renderer.h"
 #include "liquid/scene.h"
+#include "tools/capture/checkpoint.h"
+#include "tools/capture/dry_run.h"
+#include "tools/capture/frame_writer.h"
+#include "tools/capture/options.h"
+#include "tools/capture/outputs.h"
+#include "tools/capture/session.h"
+#include "tools/capture/video.h"
 #include "tools/cli.h"
 #include "tools/frame_loop.h"
 #include "tools/progress.h"
 
-#include <CLI/CLI.hpp>
+#include <signal.h>
+#include <unistd.h>
 
-#include <cmath>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <sstream>
-#include <string>
-#include <vector>
 
 namespace {
 
-struct CaptureOptions {
-  std::filesystem::path scene;
-  std::filesystem::path out_dir = "frames";
-  int frames = 60;
-  double fps = 0.0;  // 0: the scene's substeps per frame
-  int steps_per_frame = 0;
-  uint32_t width = 1024, height = 768;
-  std::vector<float> camera_position, camera_target;
-  float fov_y_degrees = 0.0f;
-  bool fxaa = true;
-  bool draw_particles = false;
-  bool export_particles = false;
-  bool validation = false;
-};
+namespace fs = std::filesystem;
+using capture::RunSettings;
+using nlohmann::json;
+
+constexpr int k_max_steps_per_frame = 100000;
+constexpr int k_interrupted_exit = 130;  // 128 + SIGINT, what shells report for Ctrl-C
+
+// Ctrl-C or SIGTERM: the frame in progress finishes, then the run stops as if it had ended there.
+// The handler only records the signal; a second one kills at once (SA_RESETHAND).
+volatile std::sig_atomic_t g_stop_signal = 0;
+void on_stop_signal(int signal) { g_stop_signal = signal; }
+
+void install_stop_handlers() {
+  struct sigaction action {};
+  action.sa_handler = on_stop_signal;
+  action.sa_flags = SA_RESETHAND | SA_RESTART;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+  std::signal(SIGPIPE, SIG_IGN);  // a dead ffmpeg is a write error, not a silent exit
+}
 
 // One row of stats.csv.
 struct FrameStats {
@@ -51,8 +62,7 @@ struct FrameStats {
   std::map<std::string, double> pass_ms;  // summed over the frame's passes of that name
 };
 
-// stats.csv: a header naming the passes of the first frame (every frame declares the same ones),
-// then one row per frame.
+// stats.csv's header names the passes of the first written frame (every frame declares the same).
 std::string stats_header(const FrameStats& first) {
   std::string header =
       "frame,step,time_s,active_particles,outside_domain,inside_obstacles,non_finite,max_density_ratio,mass_kg,"
@@ -61,132 +71,197 @@ std::string stats_header(const FrameStats& first) {
   return header + "\n";
 }
 
-std::string stats_row(const FrameStats& row, const FrameStats& first) {
+std::string stats_row(const FrameStats& row, const std::string& header) {
   const liquid::Diagnostics& d = row.diagnostics;
   std::ostringstream out;
+  out.precision(9);
   out << row.frame << ',' << d.step << ',' << d.time << ',' << d.active_particles << ',' << d.outside_domain << ','
       << d.inside_obstacles << ',' << d.non_finite << ',' << d.max_density_ratio << ',' << d.mass << ','
       << d.kinetic_energy << ',' << d.potential_energy << ',' << d.mechanical_energy << ',' << d.time_step << ','
       << d.max_speed << ',' << row.wall_ms;
-  for (const auto& [name, unused] : first.pass_ms) {
-    const auto it = row.pass_ms.find(name);
-    out << ',' << (it == row.pass_ms.end() ? 0.0 : it->second);
-  }
+  std::istringstream columns(header);
+  std::string column;
+  while (std::getline(columns, column, ','))
+    if (column.rfind("gpu_ms.", 0) == 0) {
+      if (!column.empty() && column.back() == '\n') column.pop_back();
+      const auto it = row.pass_ms.find(column.substr(7));
+      out << ',' << (it == row.pass_ms.end() ? 0.0 : it->second);
+    }
   out << "\n";
   return out.str();
 }
 
-// Appends rows to "<path>.partial", flushed after each frame so a long run can be watched, and
-// renames it to <path> once the run has finished: an interrupted run leaves only the .partial file.
-class StatsFile {
- public:
-  explicit StatsFile(std::filesystem::path path) : path_(std::move(path)) {}
-  void append(const std::string& text) {
-    if (!file_.is_open()) {
-      file_.open(partial(), std::ios::trunc);
-      if (!file_) throw std::runtime_error(partial().string() + ": cannot write");
-    }
-    file_ << text;
-    file_.flush();
-    if (!file_) throw std::runtime_error(partial().string() + ": write failed (disk full?)");
-  }
-  void finish() {
-    file_.close();
-    std::filesystem::rename(partial(), path_);
-  }
-
- private:
-  std::filesystem::path partial() const { return std::filesystem::path(path_.string() + ".partial"); }
-  std::filesystem::path path_;
-  std::ofstream file_;
-};
-
-std::string numbered(const char* stem, int frame, const char* extension) {
-  char name[64];
-  std::snprintf(name, sizeof name, "%s_%05d.%s", stem, frame, extension);
-  return name;
-}
-
-liquid::CameraView camera_from(const CaptureOptions& options, const liquid::LiquidNode& node) {
+liquid::CameraView camera_from(const RunSettings& s, const liquid::LiquidNode& node) {
   liquid::CameraView camera = liquid::default_camera(node.scene(), node.setup());
-  if (!options.camera_position.empty())
-    camera.position = {options.camera_position[0], options.camera_position[1], options.camera_position[2]};
-  if (!options.camera_target.empty())
-    camera.target = {options.camera_target[0], options.camera_target[1], options.camera_target[2]};
-  if (options.fov_y_degrees > 0.0f) camera.fov_y_degrees = options.fov_y_degrees;
+  if (!s.camera_position.empty()) camera.position = {s.camera_position[0], s.camera_position[1], s.camera_position[2]};
+  if (!s.camera_target.empty()) camera.target = {s.camera_target[0], s.camera_target[1], s.camera_target[2]};
+  if (s.fov_y_degrees > 0.0f) camera.fov_y_degrees = s.fov_y_degrees;
   if (glm::length(camera.position - camera.target) < 1e-6f)
-    throw std::invalid_argument("--camera-position and --camera-target must differ");
+    throw capture::UsageError("--camera-position and --camera-target must differ");
   return camera;
 }
 
-constexpr int k_max_steps_per_frame = 100000;
-
-int steps_per_frame(const CaptureOptions& options, const liquid::Scene& scene) {
-  if (options.steps_per_frame > 0) return options.steps_per_frame;
-  if (options.fps <= 0.0) return scene.substeps;
-  const double steps = std::round(1.0 / (options.fps * scene.time_step));
-  if (steps > k_max_steps_per_frame)
-    throw std::invalid_argument("--fps " + std::to_string(options.fps) + " needs " + std::to_string(steps) +
-                                " steps of " + std::to_string(scene.time_step) + " s per frame, more than " +
-                                std::to_string(k_max_steps_per_frame));
-  return std::max(1, int(steps));
+std::string read_text(const fs::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw std::runtime_error(path.parent_path().string() + ": not a capture folder (no " + path.filename().string() + ")");
+  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
 }
 
-int run(const CaptureOptions& options) {
-  const liquid::Scene scene = liquid::load_scene(options.scene);
+// Before --video, the checks that need no device: ffmpeg installed, the file free, its folder there.
+void check_video(const RunSettings& s, bool overwrite) {
+  if (s.video.empty()) return;
+  const fs::path path(s.video);
+  const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  // /proc and the like pass access() for root: a probe file is the test that holds everywhere.
+  const fs::path probe = folder / (".liquid_capture_probe_" + std::to_string(::getpid()));
+  if (!fs::is_directory(folder) || !std::ofstream(probe))
+    throw std::runtime_error("--video " + s.video + ": " + folder.string() + " is not a writable folder");
+  fs::remove(probe);
+  if (fs::exists(path) && !overwrite) throw std::runtime_error(s.video + ": exists; --overwrite replaces it");
+  if (!capture::find_on_path("ffmpeg"))
+    throw std::runtime_error("--video needs ffmpeg, which is not installed (Debian: apt-get install ffmpeg)");
+}
+
+int run(const capture::CaptureOptions& options, const CLI::App& app) {
+  const auto started = std::chrono::steady_clock::now();
+  install_stop_handlers();
+  const bool resuming = !options.resume.empty();
+  RunSettings settings;
+  std::string record_text;
+  capture::CaptureCheckpoint checkpoint;
+  if (resuming) {
+    capture::check_resume_flags(app);
+    const fs::path folder(options.resume);
+    record_text = read_text(folder / capture::k_record_name);
+    settings = capture::run_settings_from_json(json::parse(record_text), folder, (folder / capture::k_record_name).string());
+    checkpoint = capture::load_checkpoint(folder / capture::k_checkpoint_name);
+    if (checkpoint.settings_hash != capture::fingerprint(record_text))
+      throw std::runtime_error((folder / capture::k_checkpoint_name).string() + ": belongs to another run than " +
+                               (folder / capture::k_record_name).string());
+  } else {
+    settings = capture::settle(options, k_max_steps_per_frame);
+    record_text = capture::to_json(settings).dump(2) + "\n";
+  }
+  const liquid::Scene scene = liquid::parse_scene(settings.scene_document, settings.scene_label());
+  if (settings.volumes && !capture::volume_export_available())
+    throw std::runtime_error("--export-volume: this build has no OpenVDB (install libopenvdb-dev and "
+                             "libboost-iostreams-dev, then configure again)");
+  check_video(settings, options.overwrite || resuming);
+  capture::RunFolder folder(settings, options.overwrite || resuming, options.dry_run);
+
   engine::vk::Context context(engine::vk::ContextOptions{.validation = options.validation});
-  const int steps = steps_per_frame(options, scene);
-  liquid::LiquidNode node(context, scene, liquid::LiquidOptions{.frames_in_flight = 1, .max_steps_per_frame = steps});
-  const liquid::RenderSettings settings{.width = options.width,
-                                        .height = options.height,
-                                        .fxaa = options.fxaa,
-                                        .draw_particles = options.draw_particles};
-  liquid::LiquidRenderer renderer(context, node, settings);
-  const liquid::CameraView camera = camera_from(options, node);
-  // Everything that can reject the input has run: only now is the output folder touched.
-  engine::io::ensure_writable_folder(options.out_dir);
+  const capture::FramePlan& plan = settings.plan;
+  liquid::LiquidNode node(context, scene,
+                          liquid::LiquidOptions{.frames_in_flight = 1, .max_steps_per_frame = plan.steps_per_frame});
+  liquid::LiquidRenderer renderer(
+      context, node,
+      liquid::RenderSettings{.width = settings.width, .height = settings.height, .fxaa = settings.fxaa,
+                             .draw_particles = settings.draw_particles});
+  const liquid::CameraView camera = camera_from(settings, node);
+  tools::FrameLoop loop(context);
+  if (options.dry_run) {
+    capture::dry_run(settings, context, node, renderer, camera, loop);
+    tools::fail_on_validation_messages(context.validation_message_count());
+    return 0;
+  }
+
+  // Everything that can reject the input has run: only now are files touched.
+  capture::StatsTable stats(settings.folder / capture::k_stats_name);
+  int first_frame = plan.start == 0 ? 0 : 1;  // frame 0, the initial state, has nothing to run unless written
+  if (resuming) {
+    node.restore_checkpoint(checkpoint.node);
+    folder.wrote_output();
+    for (const fs::path& file : capture::run_files(settings))
+      if (file.extension() == ".partial") fs::remove(file);  // what the interrupted run was writing
+    stats.restore(checkpoint.stats_csv);
+    first_frame = checkpoint.frame + 1;
+  } else {
+    folder.remove_old_files();
+    engine::io::write_file_atomically(settings.folder / capture::k_record_name, record_text);
+  }
+  const capture::FrameWriter writer(settings, context, settings.folder, scene.name);
+  std::unique_ptr<capture::VideoEncoder> video;
+  if (!settings.video.empty()) {
+    video = std::make_unique<capture::VideoEncoder>(settings.video, settings.width, settings.height,
+                                                    plan.frames_per_second());
+    for (int f = plan.start; f < first_frame && f <= plan.end; ++f)  // a resumed run re-encodes the frames kept
+      video->add(engine::vk::read_png(settings.folder / settings.frames.name(f)));
+  }
 
   const liquid::SimulationSetup& s = node.setup();
   std::printf("liquid_capture: %s, %dD, %d particles (capacity %d), grid %dx%dx%d, dt %.3g s, %d steps per frame "
-              "(%.1f simulated frames/s), %ux%u, device %s\n",
+              "(%.1f simulated frames/s), frames %d to %d, %ux%u, device %s%s\n",
               scene.name.c_str(), s.dimension, s.initial_particles, s.capacity, s.grid_cells.x, s.grid_cells.y,
-              s.grid_cells.z, scene.time_step, steps, 1.0 / (steps * scene.time_step), options.width,
-              options.height, context.device_name().c_str());
+              s.grid_cells.z, scene.time_step, plan.steps_per_frame, plan.frames_per_second(), plan.start, plan.end,
+              settings.width, settings.height, context.device_name().c_str(),
+              resuming ? (", resumed after frame " + std::to_string(checkpoint.frame)).c_str() : "");
+  std::fflush(stdout);
 
-  tools::FrameLoop loop(context);
-  StatsFile stats(options.out_dir / "stats.csv");
-  FrameStats first;
-  tools::Progress progress(options.frames);
-  // Every frame advances the simulation by `steps` steps, then draws the state it reached (the
-  // density the raymarch reads comes from the last step's grid pass).
-  for (int frame = 0; frame < options.frames; ++frame) {
-    try {
-      engine::graph::Readback readback;
-      const tools::FrameTime time = loop.run([&](engine::graph::RenderGraph& graph) {
-        const liquid::LiquidImages images = node.add_to(graph, steps);
-        const liquid::RenderOutputs rendered = renderer.add_to(graph, images, camera);
-        readback = engine::graph::add_readback(graph, rendered.final, "capture.readback");
-      });
-      FrameStats row{frame, {}, time.wall_ms, {}};
-      for (const auto& t : time.passes) row.pass_ms[t.name] += t.milliseconds;
+  std::string header = stats.text().substr(0, stats.text().find('\n') + 1);
+  int last_done = first_frame - 1;
+  // Ends the run where it stands: stats.csv and summary.json for the frames written, the video closed.
+  const auto conclude = [&](const std::string& status) {
+    stats.finish();
+    if (video) video->finish();
+    const json facts = {{"status", status},
+                        {"scene", scene.name},
+                        {"scene_source", settings.scene_source},
+                        {"device", context.device_name()},
+                        {"frames_planned", {plan.start, plan.end}},
+                        {"last_frame_simulated", last_done},
+                        {"steps_per_frame", plan.steps_per_frame},
+                        {"frame_seconds", plan.frame_seconds()},
+                        {"resumed_after_frame", resuming ? json(checkpoint.frame) : json(nullptr)},
+                        {"run_wall_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()}};
+    engine::io::write_file_atomically(settings.folder / capture::k_summary_name, capture::summary_json(stats.text(), facts));
+  };
 
+  tools::Progress progress(plan.end - first_frame + 1);
+  try {
+    for (int frame = first_frame; frame <= plan.end && !g_stop_signal; ++frame) {
+      const bool written = frame >= plan.start;
+      // Frame f is the state after f frames of steps: frame 0 takes none.
+      const capture::FrameResult result = capture::run_frame(loop, node, written ? &renderer : nullptr, camera,
+                                                             frame == 0 ? 0 : plan.steps_per_frame,
+                                                             frame == 0 || settings.particles || settings.volumes);
       const liquid::ParticleSnapshot particles = node.read_particles();
-      row.diagnostics = node.diagnose(particles);  // throws SimulationError on an unstable state
-      engine::vk::write_png(options.out_dir / numbered("frame", frame, "png"), readback.rgba8());
-      if (options.export_particles) liquid::write_ply(options.out_dir / numbered("particles", frame, "ply"), particles);
-      if (frame == 0) {
-        first = row;
-        stats.append(stats_header(first));
+      FrameStats row{frame, node.diagnose(particles), result.time.wall_ms, {}};  // throws on an unstable state
+      if (written) {
+        for (const auto& t : result.time.passes) row.pass_ms[t.name] += t.milliseconds;
+        writer.write(frame, node, particles, *result.image);
+        if (video) video->add(*result.image);
+        if (header.empty()) header = stats_header(row);
+        stats.append(header, stats_row(row, header));
+        folder.wrote_output();
       }
-      stats.append(stats_row(row, first));
-      progress.update(frame + 1, steps / std::max(row.wall_ms * 1e-3, 1e-9), "steps");
-    } catch (...) {
-      progress.interrupt();  // the error message starts on its own line
-      throw;
+      last_done = frame;
+      if (settings.checkpoint_every > 0 && frame > 0 && frame % settings.checkpoint_every == 0) {
+        capture::save_checkpoint(settings.folder / capture::k_checkpoint_name,
+                                 {frame, capture::fingerprint(record_text), node.save_checkpoint(), stats.text()});
+        folder.wrote_output();
+      }
+      progress.update(frame - first_frame + 1, plan.steps_per_frame / std::max(row.wall_ms * 1e-3, 1e-9), "steps");
     }
+  } catch (const std::exception& error) {
+    progress.interrupt();  // the error message starts on its own line
+    try {
+      if (last_done >= plan.start) conclude(std::string("failed: ") + error.what());
+    } catch (...) {
+    }
+    throw;
   }
-  stats.finish();
-  std::printf("liquid_capture: wrote %d frames to %s\n", options.frames, options.out_dir.string().c_str());
+  if (g_stop_signal) {
+    progress.interrupt();
+    if (last_done >= plan.start || resuming) conclude("interrupted");
+    const char* name = g_stop_signal == SIGTERM ? "SIGTERM" : "SIGINT";
+    std::fprintf(stderr, "liquid_capture: interrupted (%s) after frame %d; %s\n", name, last_done,
+                 last_done >= plan.start ? ("files, stats.csv and summary.json cover frames " + std::to_string(plan.start) +
+                                            " to " + std::to_string(last_done)).c_str()
+                                         : "no frame was written");
+    return k_interrupted_exit;
+  }
+  conclude("finished");
+  std::printf("liquid_capture: wrote frames %d to %d to %s\n", plan.start, plan.end, settings.folder.string().c_str());
   tools::fail_on_validation_messages(context.validation_message_count());
   return 0;
 }
@@ -194,29 +269,16 @@ int run(const CaptureOptions& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Runs a liquid scene and writes numbered PNG frames, per-frame statistics and, optionally, particles"};
-  CaptureOptions options;
-  app.add_option("scene", options.scene, "scene JSON file")->required();
-  app.add_option("-o,--out", options.out_dir, "output folder (frame_NNNNN.png, stats.csv, particles_NNNNN.ply)")
-      ->take_last();
-  app.add_option("-n,--frames", options.frames, "frames to write")->check(CLI::Range(1, 1000000))->take_last();
-  app.add_option("--fps", options.fps, "simulated frames per second (steps per frame = 1 / (fps dt)); "
-                                       "default: the scene's substeps per frame")
-      ->check(CLI::Range(0.001, 10000.0));
-  app.add_option("--steps-per-frame", options.steps_per_frame, "simulation steps per frame (overrides --fps)")
-      ->check(CLI::Range(1, 100000));
-  app.add_option("--width", options.width, "frame width in pixels")->check(CLI::Range(1u, 65536u));
-  app.add_option("--height", options.height, "frame height in pixels")->check(CLI::Range(1u, 65536u));
-  app.add_option("--camera-position", options.camera_position, "camera position x,y,z (m); default: the scene's")
-      ->expected(3)
-      ->delimiter(',');
-  app.add_option("--camera-target", options.camera_target, "point the camera looks at x,y,z (m)")
-      ->expected(3)
-      ->delimiter(',');
-  app.add_option("--fov", options.fov_y_degrees, "vertical field of view (degrees)")->check(CLI::Range(1.0f, 170.0f));
-  app.add_flag("!--no-fxaa", options.fxaa, "skip the FXAA pass");
-  app.add_flag("--draw-particles", options.draw_particles, "2D views: draw the particles as points over the liquid");
-  app.add_flag("--export-particles", options.export_particles, "write particles_NNNNN.ply (binary PLY) per frame");
-  app.add_flag("--validation", options.validation, "enable the Vulkan validation layer; any message fails the run");
-  return tools::run_main(app, argc, argv, "liquid_capture", [&] { return run(options); });
+  CLI::App app{"Runs a liquid scene and writes numbered PNG frames, per-frame statistics and, optionally, particles, "
+               "volumes, a video and checkpoints"};
+  capture::CaptureOptions options;
+  capture::add_options(app, options);
+  return tools::run_main(app, argc, argv, "liquid_capture", [&] {
+    try {
+      return run(options, app);
+    } catch (const capture::UsageError& error) {
+      std::fprintf(stderr, "liquid_capture: error: %s\n", error.what());
+      return 2;
+    }
+  });
 }

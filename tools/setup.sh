@@ -9,6 +9,9 @@ packages=(
   libglm-dev libstb-dev catch2 nlohmann-json3-dev libcli11-dev
   python3
   libglfw3-dev libimgui-dev xvfb
+  # The capture tool: OpenVDB volumes (Boost.Iostreams for OpenVDB's CMake module, the Python
+  # module for the test that reads them back) and --video.
+  libopenvdb-dev libboost-iostreams-dev python3-openvdb ffmpeg
 )
 
 missing=()

@@ -3,35 +3,48 @@
 #include "engine/io/atomic_file.h"
 
 #include <bit>
+#include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 
 namespace liquid {
 
-std::string encode_ply(const ParticleSnapshot& particles) {
+std::string encode_ply(const ParticleSnapshot& particles, const PlyFrame& frame) {
   static_assert(std::endian::native == std::endian::little, "binary_little_endian PLY is written as-is");
   const size_t count = particles.positions.size();
-  if (particles.velocities.size() != count)
+  if (particles.velocities.size() != count || frame.density.size() != count)
     throw std::invalid_argument("encode_ply: " + std::to_string(count) + " positions but " +
-                                std::to_string(particles.velocities.size()) + " velocities");
-  std::string out = "ply\nformat binary_little_endian 1.0\ncomment rasterization-liquids particles (m, m/s)\n"
-                    "element vertex " + std::to_string(count) +
+                                std::to_string(particles.velocities.size()) + " velocities and " +
+                                std::to_string(frame.density.size()) + " densities");
+  char time[64];
+  std::snprintf(time, sizeof time, "%.17g", frame.time_s);  // round-trips the double
+  std::string out = "ply\nformat binary_little_endian 1.0\n"
+                    "comment rasterization-liquids particles: x y z m, vx vy vz m/s, id, density rho/rho0\n"
+                    "comment frame " + std::to_string(frame.frame) + "\ncomment time_s " + time +
+                    "\nelement vertex " + std::to_string(count) +
                     "\nproperty float x\nproperty float y\nproperty float z\n"
-                    "property float vx\nproperty float vy\nproperty float vz\nend_header\n";
+                    "property float vx\nproperty float vy\nproperty float vz\n"
+                    "property int id\nproperty float density\nend_header\n";
+  constexpr size_t k_vertex_bytes = 8 * 4;
   const size_t header = out.size();
-  out.resize(header + count * 6 * sizeof(float));
+  out.resize(header + count * k_vertex_bytes);
   char* cursor = out.data() + header;
   for (size_t i = 0; i < count; ++i) {
-    const float vertex[6] = {particles.positions[i].x,  particles.positions[i].y,  particles.positions[i].z,
-                             particles.velocities[i].x, particles.velocities[i].y, particles.velocities[i].z};
-    std::memcpy(cursor, vertex, sizeof(vertex));
-    cursor += sizeof(vertex);
+    const glm::vec4& p = particles.positions[i];
+    const glm::vec4& v = particles.velocities[i];
+    const float motion[6] = {p.x, p.y, p.z, v.x, v.y, v.z};
+    const int32_t id = int32_t(i);
+    std::memcpy(cursor, motion, sizeof motion);
+    std::memcpy(cursor + 24, &id, 4);
+    std::memcpy(cursor + 28, &frame.density[i], 4);
+    cursor += k_vertex_bytes;
   }
   return out;
 }
 
-void write_ply(const std::filesystem::path& path, const ParticleSnapshot& particles) {
-  engine::io::write_file_atomically(path, encode_ply(particles));
+void write_ply(const std::filesystem::path& path, const ParticleSnapshot& particles, const PlyFrame& frame) {
+  engine::io::write_file_atomically(path, encode_ply(particles, frame));
 }
 
 }  // namespace liquid

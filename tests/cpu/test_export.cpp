@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -25,29 +26,41 @@ std::string read_all(const std::filesystem::path& path) {
 
 }  // namespace
 
-TEST_CASE("PLY export writes a little-endian header and six floats per particle", "[export]") {
+TEST_CASE("PLY export writes a little-endian header, the frame's time and eight values per particle", "[export]") {
   liquid::ParticleSnapshot particles;
   particles.positions = {{0.1f, 0.2f, 0.3f, 1.0f}, {1.5f, -2.0f, 0.0f, 1.0f}};
   particles.velocities = {{4.0f, 5.0f, 6.0f, 0.0f}, {-1.0f, 0.25f, 8.0f, 0.0f}};
-  const std::string ply = liquid::encode_ply(particles);
+  const std::string ply = liquid::encode_ply(particles, liquid::PlyFrame{12, 0.1, {1.0f, 0.625f}});
   const std::string end = "end_header\n";
   const size_t body = ply.find(end);
   REQUIRE(body != std::string::npos);
   const std::string header = ply.substr(0, body + end.size());
   CHECK(header.rfind("ply\nformat binary_little_endian 1.0\n", 0) == 0);
   CHECK(header.find("element vertex 2\n") != std::string::npos);
-  for (const char* p : {"x", "y", "z", "vx", "vy", "vz"})
+  CHECK(header.find("comment frame 12\n") != std::string::npos);
+  CHECK(header.find("comment time_s 0.10000000000000001\n") != std::string::npos);  // the double, exactly
+  for (const char* p : {"x", "y", "z", "vx", "vy", "vz", "density"})
     CHECK(header.find(std::string("property float ") + p + "\n") != std::string::npos);
-  REQUIRE(ply.size() == header.size() + 2 * 6 * sizeof(float));
+  CHECK(header.find("property int id\n") != std::string::npos);
+  constexpr size_t k_vertex = 8 * 4;
+  REQUIRE(ply.size() == header.size() + 2 * k_vertex);
   float second[6];
-  std::memcpy(second, ply.data() + header.size() + 6 * sizeof(float), sizeof second);
+  int32_t id = -1;
+  float density = 0.0f;
+  const char* vertex = ply.data() + header.size() + k_vertex;
+  std::memcpy(second, vertex, sizeof second);
+  std::memcpy(&id, vertex + 24, 4);
+  std::memcpy(&density, vertex + 28, 4);
   CHECK(second[0] == 1.5f);
   CHECK(second[1] == -2.0f);
   CHECK(second[3] == -1.0f);
   CHECK(second[5] == 8.0f);
+  CHECK(id == 1);  // the particle's index: stable across frames
+  CHECK(density == 0.625f);
 
+  CHECK_THROWS_AS(liquid::encode_ply(particles, liquid::PlyFrame{0, 0.0, {1.0f}}), std::invalid_argument);
   particles.velocities.pop_back();
-  CHECK_THROWS_AS(liquid::encode_ply(particles), std::invalid_argument);
+  CHECK_THROWS_AS(liquid::encode_ply(particles, liquid::PlyFrame{0, 0.0, {1.0f, 1.0f}}), std::invalid_argument);
 }
 
 TEST_CASE("atomic writes replace the file whole and leave nothing behind on failure", "[export]") {

@@ -1,0 +1,33 @@
+// The grids a frame exports, read back from a node: rho/rho0 and the grid velocity per cell, with
+// the placement that maps a cell to metres. Used for OpenVDB volumes and per-particle density.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+namespace engine::vk {
+class Context;
+}
+
+namespace liquid {
+
+class LiquidNode;
+
+struct VolumeFrame {
+  glm::ivec3 cells{1};                // cells per axis (z = 1 in 2D)
+  float cell_size = 0.0f;             // m; cell (i, j, k) spans [i, i + 1] * cell_size from the origin
+  glm::vec3 origin{0.0f};             // m, the domain's corner
+  std::vector<float> density;         // rho/rho0, x fastest, then y, then z
+  std::vector<glm::vec4> velocity;    // m/s in xyz; w = 1 where the cell holds liquid
+  size_t index(int x, int y, int z) const { return size_t(x) + size_t(cells.x) * (size_t(y) + size_t(cells.y) * z); }
+};
+
+// Blocking read of the node's density and grid-velocity images (call with no frame in flight).
+VolumeFrame read_volume(engine::vk::Context& context, LiquidNode& node);
+
+// rho/rho0 at each position: trilinear (bilinear in 2D) between cell centres, clamped at the
+// outermost centres, as the solver's particle pass samples its grids.
+std::vector<float> sample_density(const VolumeFrame& volume, const std::vector<glm::vec4>& positions);
+
+}  // namespace liquid

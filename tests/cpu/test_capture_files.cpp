@@ -1,0 +1,68 @@
+// The CPU side of the capture tool's caches: per-particle density sampled from the grid, and
+// scene fields overridden the way --set does it, checked like the file.
+#include "liquid/export/volume.h"
+#include "liquid/scene.h"
+#include "liquid/scene_override.h"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+namespace {
+
+std::filesystem::path scene_file(const std::string& text) {
+  const std::filesystem::path folder = std::filesystem::path(LIQUID_TEST_OUTPUT_DIR) / "scene_override";
+  std::filesystem::create_directories(folder);
+  const std::filesystem::path path = folder / "pool.json";
+  std::ofstream(path) << text;
+  return path;
+}
+
+const char* k_pool = R"({ "dimension": 2, "domain": [1, 0.5], "particle_spacing": 0.02,
+  "fluid_blocks": [ { "min": [0, 0], "max": [0.5, 0.2] } ] })";
+
+}  // namespace
+
+TEST_CASE("per-particle density is the grid interpolated between cell centres", "[export]") {
+  liquid::VolumeFrame v;
+  v.cells = {4, 2, 1};
+  v.cell_size = 0.5f;
+  v.density = {0, 1, 2, 3, 4, 5, 6, 7};  // rho = x index + 4 * y index
+  v.velocity.resize(8);
+  const std::vector<float> rho = liquid::sample_density(
+      v, {{0.25f, 0.25f, 0, 1}, {0.5f, 0.25f, 0, 1}, {0.75f, 0.5f, 0, 1}, {-3.0f, 9.0f, 0, 1}, {1.75f, 0.75f, 0, 1}});
+  CHECK(rho[0] == Approx(0.0f));  // a cell centre
+  CHECK(rho[1] == Approx(0.5f));  // halfway between two centres
+  CHECK(rho[2] == Approx(3.0f));  // (1 + 5) / 2
+  CHECK(rho[3] == Approx(4.0f));  // outside: clamped to the nearest centre (0, 1)
+  CHECK(rho[4] == Approx(7.0f));  // the last cell's centre
+}
+
+TEST_CASE("scene overrides (the capture tool's --set) are applied to the document and checked like the file", "[scene]") {
+  const std::filesystem::path path = scene_file(k_pool);
+  using liquid::SceneOverride;
+  const auto scene_with = [&](std::vector<SceneOverride> overrides) {
+    return liquid::parse_scene(liquid::scene_document(path, overrides), "pool.json with --set");
+  };
+  const liquid::Scene s = scene_with({{"stiffness", "20"}, {"fluid_blocks[0].max", "[0.3, 0.1]"},
+                                      {"fluid_blocks.0.velocity", "[1, 0]"}, {"splat_format", "rgba16f"}});
+  CHECK(s.name == "pool");  // the file's stem, as without --set
+  CHECK(s.stiffness == 20.0f);
+  CHECK(s.fluid_blocks[0].max.x == 0.3f);
+  CHECK(s.fluid_blocks[0].velocity.x == 1.0f);
+  CHECK(s.splat_format == liquid::SplatFormat::Rgba16f);
+
+  CHECK_THROWS_WITH(scene_with({{"stiffness", "-1"}}), Catch::Contains("pool.json with --set: stiffness: must be"));
+  CHECK_THROWS_WITH(scene_with({{"stifness", "1"}}), Catch::Contains("stifness: unknown key"));
+  CHECK_THROWS_WITH(scene_with({{"fluid_blocks.1.min", "[0, 0]"}}), Catch::Contains("fluid_blocks has 1 element"));
+  CHECK_THROWS_WITH(scene_with({{"dimension.x", "1"}}), Catch::Contains("dimension is a number, it has no field 'x'"));
+  CHECK_THROWS_WITH(scene_with({{"fluid_blocks.first", "1"}}), Catch::Contains("expected an index"));
+  CHECK_THROWS_WITH(scene_with({{"a..b", "1"}}), Catch::Contains("not a field path"));
+  CHECK_THROWS_AS(liquid::parse_scene_override("=3"), std::invalid_argument);
+  CHECK(liquid::parse_scene_override("camera.position=[1,2,3]").value == "[1,2,3]");
+
+  // The file is checked on its own first: its errors keep naming the file.
+  const std::filesystem::path bad = scene_file(R"({ "dimension": 4 })");
+  CHECK_THROWS_WITH(liquid::scene_document(bad, {{"dimension", "2"}}), Catch::Contains("pool.json: dimension"));
+}

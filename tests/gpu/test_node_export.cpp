@@ -1,0 +1,133 @@
+// What the capture tool's caches rest on, on the device: checkpoints that continue a run bit for
+// bit, grids rebuilt for the instant a frame is written, and OpenVDB files that hold the node's
+// grids (read back through OpenVDB itself).
+#include "engine/graph/render_graph.h"
+#include "engine/vk/commands.h"
+#include "liquid/export/volume.h"
+#include "liquid/node.h"
+#include "liquid/scene.h"
+#include "tests/gpu/liquid_helpers.h"
+#include "tests/support/gpu.h"
+#if LIQUID_HAVE_OPENVDB
+#include "liquid/export/vdb.h"
+#endif
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+
+namespace {
+
+// A small 2D scene with everything a checkpoint must carry: a block, a running emitter and a
+// moving obstacle (whose pose the test also overrides).
+const char* k_scene = R"({
+  "dimension": 2, "domain": [0.4, 0.3], "grid_resolution": 32, "particle_spacing": 0.01,
+  "stiffness": 12, "time_step": 0.001, "substeps": 5,
+  "fluid_blocks": [ { "min": [0.0, 0.0], "max": [0.12, 0.15] } ],
+  "emitters": [ { "position": [0.3, 0.2], "velocity": [-0.5, 0.0], "radius": 0.02, "capacity": 400 } ],
+  "obstacles": [ { "shape": "sphere", "center": [0.25, 0.06], "radius": 0.03, "velocity": [0.1, 0.0] } ]
+})";
+
+bool same_bits(const std::vector<glm::vec4>& a, const std::vector<glm::vec4>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec4)) == 0;
+}
+
+// Runs one frame that rebuilds the grids of the current particles (no step).
+void add_grids(liquid::LiquidNode& node) {
+  engine::graph::RenderGraph graph(&test::gpu());
+  engine::vk::CommandBuffer cmd(test::gpu());
+  node.add_grids_to(graph, node.add_to(graph, 0));
+  graph.compile();
+  graph.execute(cmd.begin());
+  cmd.submit_and_wait();
+}
+
+}  // namespace
+
+TEST_CASE("a node restored from a checkpoint continues the run bit for bit", "[gpu][liquid][export]") {
+  const liquid::Scene scene = liquid::parse_scene(k_scene, "checkpoint.json");
+  liquid::LiquidNode first(test::gpu(), scene);
+  test::run_steps(first, 20);
+  first.set_obstacle_pose(0, {0.08f, 0.05f, 0.0f}, {0.0f, 0.2f, 0.0f});  // into the liquid: it matters
+  test::run_steps(first, 5);
+  const liquid::LiquidNode::Checkpoint saved = first.save_checkpoint();
+  REQUIRE(saved.emitted.size() == 1);
+  REQUIRE(saved.emitted[0] > 0);  // the emitter's count is part of what continues
+  REQUIRE(saved.poses[0].overridden);
+  test::run_steps(first, 25);
+  const liquid::ParticleSnapshot expected = first.read_particles();
+
+  liquid::LiquidNode second(test::gpu(), scene);
+  second.restore_checkpoint(saved);
+  CHECK(second.step_count() == saved.step);
+  CHECK(second.time() == saved.time);
+  test::run_steps(second, 25);
+  const liquid::ParticleSnapshot resumed = second.read_particles();
+  CHECK(second.active_particles() == first.active_particles());
+  CHECK(second.time() == first.time());
+  CHECK(same_bits(resumed.positions, expected.positions));
+  CHECK(same_bits(resumed.velocities, expected.velocities));
+
+  // Without the checkpoint the second node would not match: the test can fail.
+  liquid::LiquidNode fresh(test::gpu(), scene);
+  test::run_steps(fresh, 50);
+  CHECK_FALSE(same_bits(fresh.read_particles().positions, expected.positions));
+
+  liquid::LiquidNode other(test::gpu(), test::shipped_scene("dam_break_2d"));
+  CHECK_THROWS_WITH(other.restore_checkpoint(saved), Catch::Contains("does not match this scene"));
+  REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("grids rebuilt from the particles read the rest density of the initial lattice", "[gpu][liquid][export]") {
+  liquid::LiquidNode node(test::gpu(), test::shipped_scene("rest_pool_2d"));
+  liquid::VolumeFrame before = liquid::read_volume(test::gpu(), node);
+  CHECK(*std::max_element(before.density.begin(), before.density.end()) == 0.0f);  // no step: empty grids
+  add_grids(node);
+  CHECK(node.step_count() == 0);
+  const liquid::VolumeFrame volume = liquid::read_volume(test::gpu(), node);
+  const liquid::ParticleSnapshot particles = node.read_particles();
+  const std::vector<float> density = liquid::sample_density(volume, particles.positions);
+  std::vector<float> sorted = density;
+  std::sort(sorted.begin(), sorted.end());
+  CHECK(sorted[sorted.size() / 2] == Approx(1.0f).margin(0.05f));  // inside the pool: rho0
+  CHECK(sorted.front() < 0.8f);                                     // at the free surface: less
+  REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+#if LIQUID_HAVE_OPENVDB
+TEST_CASE("OpenVDB files hold the node's density and velocity grids in metres", "[gpu][liquid][export]") {
+  for (const char* name : {"small_3d", "dam_break_2d"}) {
+    INFO(name);
+    liquid::LiquidNode node(test::gpu(), test::shipped_scene(name));
+    test::run_steps(node, 10);
+    const liquid::VolumeFrame volume = liquid::read_volume(test::gpu(), node);
+    const std::filesystem::path path =
+        std::filesystem::path(LIQUID_TEST_OUTPUT_DIR) / (std::string("volume_") + name + ".vdb");
+    std::filesystem::create_directories(path.parent_path());
+    liquid::write_vdb(path, volume, liquid::VdbFrame{7, node.time(), node.scene().name});
+    const liquid::VdbContents file = liquid::read_vdb(path);
+
+    CHECK(file.grid_names == std::vector<std::string>{"density", "velocity"});
+    CHECK(file.frame.frame == 7);
+    CHECK(file.frame.time_s == node.time());
+    CHECK(file.voxel_size == Approx(node.setup().cell_size));
+    CHECK(file.voxel_zero.x == Approx(0.5 * node.setup().cell_size));
+    size_t liquid_cells = 0;
+    for (float rho : volume.density) liquid_cells += rho > 0.0f;
+    REQUIRE(liquid_cells > 100);
+    CHECK(file.density.size() == liquid_cells);
+    for (const auto& v : file.density) {
+      REQUIRE(v.index.z < volume.cells.z);  // 2D: one voxel deep
+      REQUIRE(v.value == volume.density[volume.index(v.index.x, v.index.y, v.index.z)]);
+    }
+    for (const auto& v : file.velocity) {
+      const glm::vec4 cell = volume.velocity[volume.index(v.index.x, v.index.y, v.index.z)];
+      REQUIRE(cell.w >= 0.5f);
+      REQUIRE(v.value == glm::vec3(cell));
+    }
+  }
+  REQUIRE_NO_VALIDATION_MESSAGES();
+}
+#endif

@@ -1,0 +1,284 @@
+#!/usr/bin/env python3
+"""liquid_capture as a user runs it, for the checks a single command cannot make: interrupting a
+run, resuming it, folders shared by two runs, frame ranges and names, the files' contents. Only the
+standard library (and OpenVDB's Python module for the volume check). Used by ctest:
+    capture_checks.py CHECK --tool liquid_capture --scene tiny.json --work DIR [--docs caches.md]
+Each check raises (exit 1, naming what is wrong) or prints 'ok'."""
+import argparse
+import json
+import os
+import shutil
+import signal
+import struct
+import subprocess
+import sys
+import time
+import zlib
+
+SMALL = ["--width", "48", "--height", "36", "--validation"]
+
+
+def fail(message):
+    raise SystemExit("FAILED: " + message)
+
+
+def run(args, expect=0):
+    result = subprocess.run([ARGS.tool] + args, capture_output=True, text=True, timeout=600)
+    if result.returncode != expect:
+        fail(f"{' '.join(args)}: exit {result.returncode}, expected {expect}\n{result.stdout}\n{result.stderr}")
+    return result
+
+
+def files(folder):
+    return sorted(os.listdir(folder))
+
+
+def png_complete(path):
+    """A whole PNG: the signature, every chunk's CRC, and IEND last."""
+    data = open(path, "rb").read()
+    if data[:8] != b"\x89PNG\r\n\x1a\n":
+        return False
+    at = 8
+    while at + 12 <= len(data):
+        (length,) = struct.unpack(">I", data[at:at + 4])
+        kind = data[at + 4:at + 8]
+        body = data[at + 8:at + 8 + length]
+        (crc,) = struct.unpack(">I", data[at + 8 + length:at + 12 + length])
+        if zlib.crc32(kind + body) != crc:
+            return False
+        at += 12 + length
+        if kind == b"IEND":
+            return at == len(data)
+    return False
+
+
+def stats_rows(folder):
+    lines = open(os.path.join(folder, "stats.csv")).read().splitlines()
+    header = lines[0].split(",")
+    return [dict(zip(header, line.split(","))) for line in lines[1:]]
+
+
+def read_ply(path):
+    """The reader docs/caches.md gives, so the recipe is what is tested."""
+    namespace = {}
+    exec(DOC_READER, namespace)
+    return namespace["read_liquid_ply"](path)
+
+
+def start_and_interrupt(args, after_frame_line, sig):
+    """Starts a run, waits until it reports `after_frame_line` frames done, sends `sig`."""
+    process = subprocess.Popen([ARGS.tool] + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    for line in process.stdout:
+        if line.startswith(f"frame {after_frame_line} of "):
+            process.send_signal(sig)
+            break
+    out, err = process.communicate(timeout=600)
+    return process.returncode, err
+
+
+def check_interrupt(sig):
+    out = os.path.join(ARGS.work, "interrupted")
+    shutil.rmtree(out, ignore_errors=True)
+    code, err = start_and_interrupt([ARGS.scene, "-e", "400", "-o", out] + SMALL, 3, sig)
+    if code != 130:
+        fail(f"exit {code} after {signal.Signals(sig).name}, expected 130: {err}")
+    name = signal.Signals(sig).name
+    if err.strip().count("\n") != 0 or f"interrupted ({name})" not in err:
+        fail(f"stderr should be one line naming {name}: {err!r}")
+    names = files(out)
+    if any(n.endswith(".partial") for n in names):
+        fail(f"partial files left: {names}")
+    frames = [n for n in names if n.endswith(".png")]
+    rows = stats_rows(out)
+    if len(frames) < 3 or len(frames) >= 400:
+        fail(f"{len(frames)} frames written; the run should have stopped early, after frame 3")
+    if [int(r["frame"]) for r in rows] != list(range(1, len(frames) + 1)):
+        fail(f"stats.csv rows {[r['frame'] for r in rows]} do not match the {len(frames)} frames written")
+    if not all(png_complete(os.path.join(out, f)) for f in frames):
+        fail("a frame is not a complete PNG")
+    summary = json.load(open(os.path.join(out, "summary.json")))
+    if summary["status"] != "interrupted" or summary["frames_written"] != len(frames):
+        fail(f"summary.json: {summary['status']}, {summary['frames_written']} frames")
+
+
+def check_resume():
+    whole, cut = os.path.join(ARGS.work, "whole"), os.path.join(ARGS.work, "resumed")
+    for folder in (whole, cut):
+        shutil.rmtree(folder, ignore_errors=True)
+    common = [ARGS.scene, "-s", "0", "-e", "24", "--export-particles"] + SMALL
+    run(common + ["-o", whole])
+    code, err = start_and_interrupt(common + ["-o", cut, "--checkpoint-every", "3"], 5, signal.SIGINT)
+    if code != 130:
+        fail(f"the run to resume exited {code}, expected 130 (interrupted): {err}")
+    kept = len([n for n in files(cut) if n.endswith(".png")])
+    if kept >= 25:
+        fail("the run to resume was not interrupted before its end")
+    resumed = run(["--resume", cut, "--validation"])
+    if "resumed after frame" not in resumed.stdout:
+        fail("the resumed run does not say where it resumed")
+    if files(whole) != [n for n in files(cut) if n != "checkpoint.bin"]:
+        fail(f"different files: {files(whole)} vs {files(cut)}")
+    for name in files(whole):
+        if name.endswith((".png", ".ply")) and open(os.path.join(whole, name), "rb").read() != open(
+                os.path.join(cut, name), "rb").read():
+            fail(f"{name} differs between the uninterrupted and the resumed run")
+    timing = lambda row: {k: v for k, v in row.items() if k != "wall_ms" and not k.startswith("gpu_ms.")}
+    if [timing(r) for r in stats_rows(whole)] != [timing(r) for r in stats_rows(cut)]:
+        fail("stats.csv diagnostics differ between the uninterrupted and the resumed run")
+    print(f"resumed after an interrupt with {kept} frames written; 25 frames bit-identical")
+
+
+def check_folders():
+    out = os.path.join(ARGS.work, "shared_folder")
+    shutil.rmtree(out, ignore_errors=True)
+    run([ARGS.scene, "-e", "3", "--export-particles", "-o", out] + SMALL)
+    open(os.path.join(out, "notes.txt"), "w").write("the user's own file\n")
+    before = files(out)
+    second = run([ARGS.scene, "-e", "1", "-o", out] + SMALL, expect=1)
+    if second.stderr.count("\n") != 1 or "--overwrite" not in second.stderr:
+        fail(f"a second run into the folder should refuse in one line naming --overwrite: {second.stderr!r}")
+    if files(out) != before:
+        fail("the refused run changed the folder")
+    run([ARGS.scene, "-e", "1", "-o", os.path.join(out, "shot_##.png"), "--overwrite"] + SMALL)
+    expected = ["capture.json", "notes.txt", "shot_01.png", "stats.csv", "summary.json"]
+    if files(out) != expected:
+        fail(f"after --overwrite the folder holds {files(out)}, expected {expected}")
+    missing = os.path.join(ARGS.work, "never_made", "deeper")
+    shutil.rmtree(os.path.dirname(missing), ignore_errors=True)
+    run([ARGS.scene, "--width", "70000", "-o", missing], expect=2)
+    run([ARGS.scene, "--width", "60000", "-o", missing], expect=1)  # refused by the device's limits
+    if os.path.exists(os.path.dirname(missing)):
+        fail("a run that failed before its first frame left a new folder behind")
+
+
+def check_dry_run():
+    out = os.path.join(ARGS.work, "dry_run")
+    shutil.rmtree(out, ignore_errors=True)
+    result = run(["small_3d", "--dry-run", "--set", "stiffness=21", "--set", "fluid_blocks[0].max=[0.1,0.1,0.1]",
+                  "--steps-per-frame", "1", "-o", os.path.join(out, "shot_###.png")] + SMALL)
+    for expected in ("assets/scenes/small_3d.json, with --set", '"stiffness": 21', "frames: 1 to 60 written (60)",
+                     "shot_001.png .. shot_060.png", "estimate: about "):
+        if expected not in result.stdout:
+            fail(f"the dry run does not say {expected!r}:\n{result.stdout}")
+    if os.path.exists(out):
+        fail("the dry run created the output folder")
+
+
+def check_range():
+    out = os.path.join(ARGS.work, "range")
+    shutil.rmtree(out, ignore_errors=True)
+    run([ARGS.scene, "-s", "3", "-e", "5", "-o", os.path.join(out, "liquid_####.png"), "--particles-name",
+         "points_##.ply", "--steps-per-frame", "2"] + SMALL)
+    expected = ["capture.json", "liquid_0003.png", "liquid_0004.png", "liquid_0005.png", "points_03.ply",
+                "points_04.ply", "points_05.ply", "stats.csv", "summary.json"]
+    if files(out) != expected:
+        fail(f"files {files(out)}, expected {expected}")
+    record = json.load(open(os.path.join(out, "capture.json")))
+    dt = record["frames"]["time_step_s"]
+    for row in stats_rows(out):
+        f = int(row["frame"])
+        if int(row["step"]) != 2 * f or abs(float(row["time_s"]) - 2 * f * dt) > 1e-6:
+            fail(f"frame {f} is at step {row['step']}, t = {row['time_s']}; expected step {2 * f}, t = {2 * f * dt}")
+        ply = read_ply(os.path.join(out, f"points_{f:02d}.ply"))
+        if ply["frame"] != f or abs(ply["time_s"] - float(row["time_s"])) > 1e-6:
+            fail(f"points_{f:02d}.ply says frame {ply['frame']} at {ply['time_s']} s")
+        if ply["id"] != list(range(len(ply["id"]))) or len(ply["id"]) != int(row["active_particles"]):
+            fail("particle ids are not 0 .. N-1 in order")
+        if not 0.5 < max(ply["density"]) <= float(row["max_density_ratio"]) + 1e-3:
+            fail(f"per-particle density up to {max(ply['density'])}, grid max {row['max_density_ratio']}")
+    summary = json.load(open(os.path.join(out, "summary.json")))
+    if (summary["frames_written"], summary["first_frame"], summary["last_frame"], summary["status"]) != (
+            3, 3, 5, "finished") or not summary["gpu_ms_median_per_frame"]:
+        fail(f"summary.json: {summary}")
+    # An emitter added with --set gives new particles the next ids; an id follows one particle.
+    jet = os.path.join(ARGS.work, "range_jet")
+    shutil.rmtree(jet, ignore_errors=True)
+    emitter = '[{"position": [0.25, 0.12, 0.1], "velocity": [-0.6, 0, 0], "radius": 0.02, "capacity": 300}]'
+    run([ARGS.scene, "-e", "4", "--export-particles", "--set", "emitters=" + emitter, "-o", jet] + SMALL)
+    frames = [read_ply(os.path.join(jet, f"particles_{f:05d}.ply")) for f in range(1, 5)]
+    counts = [len(p["id"]) for p in frames]
+    if not counts[0] < counts[-1] <= 1280 + 300 or any(p["id"] != list(range(len(p["id"]))) for p in frames):
+        fail(f"particle counts {counts}: the emitter should add particles with the next ids")
+    step = 1.5 * max(float(r["max_speed_m_s"]) for r in stats_rows(jet)) * 3 * dt + 1e-6
+    for before, after in zip(frames, frames[1:]):
+        moved = max(abs(after[c][i] - before[c][i]) for c in ("x", "y", "z") for i in range(len(before["id"])))
+        if moved > step:
+            fail(f"a particle's id jumped {moved} m in one frame, more than the fastest particle moves ({step} m)")
+    # Frame 0 is the initial state: the lattice at rest, at t = 0.
+    zero = os.path.join(ARGS.work, "range_zero")
+    shutil.rmtree(zero, ignore_errors=True)
+    run([ARGS.scene, "-s", "0", "-e", "0", "--export-particles", "-o", zero] + SMALL)
+    ply = read_ply(os.path.join(zero, "particles_00000.ply"))
+    if ply["time_s"] != 0.0 or any(v != 0.0 for v in ply["vx"] + ply["vy"] + ply["vz"]):
+        fail("frame 0 is not the initial state at rest")
+    # Deep inside the block the lattice is at the rest density; the small block's edges read less.
+    if not 0.95 < max(ply["density"]) <= 1.001 or not min(ply["density"]) < 0.5:
+        fail(f"frame 0's particle densities span {min(ply['density'])} to {max(ply['density'])}, expected up to 1")
+
+
+def check_volume():
+    import pyopenvdb as vdb
+    out = os.path.join(ARGS.work, "volume")
+    shutil.rmtree(out, ignore_errors=True)
+    run([ARGS.scene, "-s", "0", "-e", "2", "--export-volume", "-o", out] + SMALL)
+    record = json.load(open(os.path.join(out, "capture.json")))
+    domain, cells = record["scene"]["domain"], record["scene"]["grid_resolution"]
+    h = max(domain) / cells
+    for row in stats_rows(out):
+        f = int(row["frame"])
+        grids, meta = vdb.readAll(os.path.join(out, f"volume_{f:05d}.vdb"))
+        by_name = {g.name: g for g in grids}
+        if sorted(by_name) != ["density", "velocity"]:
+            fail(f"grids {sorted(by_name)}")
+        if abs(meta["time_s"] - float(row["time_s"])) > 1e-6 or meta["frame"] != f:
+            fail(f"frame {f}: metadata {meta}")
+        density = by_name["density"]
+        if abs(density.transform.voxelSize()[0] - h) > 1e-6:
+            fail(f"voxel size {density.transform.voxelSize()}, cell size {h}")
+        if any(abs(c - h / 2) > 1e-6 for c in density.transform.indexToWorld((0, 0, 0))):
+            fail("voxel (0, 0, 0) is not at the first cell's centre")
+        values = [v.value for v in density.iterOnValues()]
+        if abs(max(values) - float(row["max_density_ratio"])) > 1e-3:
+            fail(f"frame {f}: largest density {max(values)}, stats.csv {row['max_density_ratio']}")
+        speeds = [sum(c * c for c in v.value) ** 0.5 for v in by_name["velocity"].iterOnValues()]
+        if f > 0 and not 0.0 < max(speeds) < 10.0 * float(row["max_speed_m_s"]) + 1.0:
+            fail(f"frame {f}: grid speeds up to {max(speeds)}")
+
+
+def check_video():
+    out, video = os.path.join(ARGS.work, "video"), os.path.join(ARGS.work, "liquid.mp4")
+    shutil.rmtree(out, ignore_errors=True)
+    if os.path.exists(video):
+        os.remove(video)
+    run([ARGS.scene, "-e", "6", "--width", "47", "--height", "35", "-o", out, "--video", video, "--validation"])
+    probe = subprocess.run(["ffprobe", "-v", "error", "-count_frames", "-show_entries", "stream=nb_read_frames,width",
+                            "-of", "csv=p=0", video], capture_output=True, text=True)
+    if probe.stdout.strip() != "48,6":
+        fail(f"ffprobe says {probe.stdout.strip()!r}: expected 6 frames 48 pixels wide (padded to even)")
+
+
+def doc_reader(path):
+    """The first python block of docs/caches.md that defines read_liquid_ply."""
+    text = open(path).read()
+    for block in text.split("```python")[1:]:
+        code = block.split("```")[0]
+        if "def read_liquid_ply" in code:
+            return code
+    fail(f"{path}: no python block defines read_liquid_ply")
+
+
+if __name__ == "__main__":
+    parser = argparse.ArgumentParser()
+    parser.add_argument("check")
+    parser.add_argument("--tool", required=True)
+    parser.add_argument("--scene", required=True)
+    parser.add_argument("--work", required=True)
+    parser.add_argument("--docs", required=True)
+    ARGS = parser.parse_args()
+    DOC_READER = doc_reader(ARGS.docs)
+    os.makedirs(ARGS.work, exist_ok=True)
+    checks = {"sigint": lambda: check_interrupt(signal.SIGINT), "sigterm": lambda: check_interrupt(signal.SIGTERM),
+              "resume": check_resume, "dryrun": check_dry_run, "folders": check_folders, "range": check_range, "volume": check_volume,
+              "video": check_video}
+    checks[ARGS.check]()
+    print("ok")
