@@ -25,11 +25,19 @@ std::string grid_path_description(GridPath path) {
   return "?";
 }
 
-GridPath parse_grid_path(std::string_view text, std::string_view where) {
+std::optional<GridPath> find_grid_path(std::string_view name) {
   for (GridPath path : {GridPath::GeometryShader, GridPath::VertexLayer, GridPath::Atlas})
-    if (text == grid_path_name(path)) return path;
-  throw std::invalid_argument(std::string(where) + ": '" + std::string(text) +
-                              "' is not a 3D path (geometry, vertex-layer or atlas)");
+    if (name == grid_path_name(path)) return path;
+  return std::nullopt;
+}
+
+std::string not_a_grid_path(std::string_view text) {
+  return "'" + std::string(text) + "' is not a 3D path (geometry, vertex-layer or atlas)";
+}
+
+GridPath parse_grid_path(std::string_view text, std::string_view where) {
+  if (const std::optional<GridPath> path = find_grid_path(text)) return *path;
+  throw std::invalid_argument(std::string(where) + ": " + not_a_grid_path(text));
 }
 
 GridPath choose_grid_path(const GridPathSupport& support, std::optional<GridPath> requested) {

@@ -27,6 +27,10 @@ enum class GridPath { GeometryShader, VertexLayer, Atlas };
 const char* grid_path_name(GridPath path);
 // The name and what the path needs, for the log: "vertex-layer (shaderOutputLayer)".
 std::string grid_path_description(GridPath path);
+// The path of that name, or nothing.
+std::optional<GridPath> find_grid_path(std::string_view name);
+// "'<text>' is not a 3D path (geometry, vertex-layer or atlas)", for messages.
+std::string not_a_grid_path(std::string_view text);
 // Throws std::invalid_argument naming `where` (a flag or variable) and the valid names.
 GridPath parse_grid_path(std::string_view text, std::string_view where);
 

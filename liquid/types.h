@@ -42,7 +42,8 @@ struct ObstaclePose {
   glm::vec3 velocity{0.0f};  // m/s
 };
 
-// The graph images after the steps add_to() declared; valid for the rest of that graph.
+// The graph images after the steps add_to() declared; valid for the rest of that graph. The grids
+// are 3D images in 3D, or 2D atlases of their slices on the atlas path (LiquidNode::grid_layout()).
 struct LiquidImages {
   engine::graph::ImageHandle positions;      // RGBA32F particle texture, xyz m
   engine::graph::ImageHandle velocities;     // RGBA32F particle texture, xyz m/s

@@ -46,4 +46,9 @@ uint32_t total_validation_messages() {
   return total;
 }
 
+void release_contexts() {
+  g_masked.clear();
+  g_context.reset();
+}
+
 }  // namespace test

@@ -26,6 +26,10 @@ engine::vk::Context& gpu_with(LayerFeatures features);
 // Total validation messages seen by every context this process created.
 uint32_t total_validation_messages();
 
+// Destroys every context, newest first; the test main calls it before returning (the validation
+// layer crashes when several of its instances are left to static destructors at exit).
+void release_contexts();
+
 }  // namespace test
 
 #define REQUIRE_NO_VALIDATION_MESSAGES_ON(context)                                         \

@@ -15,8 +15,9 @@ void main() {
 #if DIM == 3 && ATLAS
   // A point near its tile's edge also covers the neighbouring tile, another slice: only the tile
   // that holds the point's centre receives it (adding zero elsewhere; cheaper than a discard).
-  ivec2 cells = u.grid_cells.xy;
-  w = ivec2(gl_FragCoord.xy) / cells == ivec2(v_point.xy) / cells ? w : 0.0;
+  // Float division: lavapipe has no vector integer division, so an ivec2 one runs lane by lane.
+  vec2 cells = vec2(u.grid_cells.xy);
+  w = floor(gl_FragCoord.xy / cells) == floor(v_point.xy / cells) ? w : 0.0;
 #endif
   out_splat = vec4(w * v_velocity, w);
 }
