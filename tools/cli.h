@@ -3,6 +3,8 @@
 // "<tool>: error: ..." and exit status 1.
 #pragma once
 
+#include "tools/keep_modules_loaded.h"
+
 #include <CLI/CLI.hpp>
 
 #include <charconv>

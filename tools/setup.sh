@@ -14,6 +14,11 @@ packages=(
   libopenvdb-dev libboost-iostreams-dev python3-openvdb ffmpeg
 )
 
+# `setup.sh fuzz`: also clang and its sanitizer and libFuzzer runtimes, for tools/run_sanitizers.sh.
+if [[ "${1:-}" == fuzz ]]; then
+  packages+=(clang libclang-rt-dev)
+fi
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -76,6 +76,7 @@ double growth_per_frames(vk::Context& context, std::span<const uint32_t> fragmen
 }  // namespace
 
 TEST_CASE("a loop bounded by a specialization constant keeps no memory per draw", "[gpu][resources]") {
+  SKIP_UNDER_ADDRESS_SANITIZER();
   vk::Context& context = test::gpu();
   const double constant_bound = growth_per_frames(context, test_shaders::loop_constant_bound_frag);
   const double uniform_bound = growth_per_frames(context, test_shaders::loop_uniform_bound_frag);
@@ -92,6 +93,7 @@ TEST_CASE("a loop bounded by a specialization constant keeps no memory per draw"
 }
 
 TEST_CASE("command buffers created and destroyed over and over keep no memory", "[gpu][resources]") {
+  SKIP_UNDER_ADDRESS_SANITIZER();
   // Lavapipe keeps about 3 KB for every command buffer ever allocated, freed or not, until the
   // device goes; engine::vk::CommandBuffer recycles them through the context instead.
   vk::Context& context = test::gpu();

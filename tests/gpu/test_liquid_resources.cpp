@@ -44,6 +44,7 @@ liquid::Scene busy_small_3d() {
 }  // namespace
 
 TEST_CASE("a long 3D run with obstacles, an emitter and a force brush does not grow host memory", "[gpu][liquid][resources]") {
+  SKIP_UNDER_ADDRESS_SANITIZER();
   const liquid::Scene scene = busy_small_3d();
   liquid::LiquidNode node(test::gpu(), scene);
   node.set_brushes({{.position = {0.1f, 0.1f, 0.12f}, .radius = 0.08f, .acceleration = {2.0f, 0.0f, 0.0f}}});
@@ -59,6 +60,7 @@ TEST_CASE("a long 3D run with obstacles, an emitter and a force brush does not g
 }
 
 TEST_CASE("a long raymarched 3D capture does not grow host memory", "[gpu][liquid][resources]") {
+  SKIP_UNDER_ADDRESS_SANITIZER();
   // One step and one small frame (raymarch with obstacles, then FXAA) per frame, as liquid_capture
   // draws them: 250 frames after a warm-up of 20.
   engine::vk::Context& context = test::gpu();
@@ -85,6 +87,7 @@ TEST_CASE("a long raymarched 3D capture does not grow host memory", "[gpu][liqui
 }
 
 TEST_CASE("a long 2D run checked after every step does not grow host memory", "[gpu][liquid][resources]") {
+  SKIP_UNDER_ADDRESS_SANITIZER();
   // As liquid_run runs it: one graph and command buffer, a submission of one step, then diagnose()
   // (three read-backs), 1000 times after a warm-up of 50. Each read-back used to allocate a fresh
   // command buffer, of which lavapipe kept about 3 KB for good: 11.8 MiB here (dam_break_2d grew

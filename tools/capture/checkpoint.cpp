@@ -51,6 +51,7 @@ class Reader {
  private:
   void take(void* out, size_t size) {
     if (size > bytes_.size() - at_) fail();
+    if (size == 0) return;  // an empty vector's data() may be null, which memcpy must not get
     std::memcpy(out, bytes_.data() + at_, size);
     at_ += size;
   }
