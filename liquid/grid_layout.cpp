@@ -2,7 +2,6 @@
 
 #include "engine/passes/fullscreen.h"
 
-#include <cmath>
 #include <stdexcept>
 
 namespace liquid {
@@ -57,9 +56,8 @@ GridPath choose_grid_path(const GridPathSupport& support, std::optional<GridPath
 GridLayout::GridLayout(int dimension_, glm::ivec3 cells_, GridPath path_)
     : dimension(dimension_), cells(dimension_ == 3 ? cells_ : glm::ivec3(cells_.x, cells_.y, 1)), path(path_) {
   if (atlas()) {
-    int columns = int(std::ceil(std::sqrt(double(cells.z))));
-    while (columns * columns < cells.z) ++columns;  // exact for any rounding of sqrt
-    while (columns > 1 && (columns - 1) * (columns - 1) >= cells.z) --columns;
+    int columns = 1;  // ceil(sqrt(nz)) in integers
+    while (columns * columns < cells.z) ++columns;
     tiles = {columns, (cells.z + columns - 1) / columns};
   }
 }
