@@ -7,6 +7,7 @@
 #include <glm/gtc/packing.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 
@@ -18,13 +19,29 @@ DeviceLimits device_limits(const engine::vk::Context& context) {
   return {int(l.maxImageDimension2D), int(l.maxImageDimension3D), int(l.maxFramebufferLayers)};
 }
 
-VkFormat splat_format(const Scene& scene) {
-  return scene.splat_format == SplatFormat::Rgba16f ? VK_FORMAT_R16G16B16A16_SFLOAT : VK_FORMAT_R32G32B32A32_SFLOAT;
+bool blendable(const engine::vk::Context& context, VkFormat format) {
+  return context.format_supports(format, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT);
 }
 
-void require_blendable(const engine::vk::Context& context, VkFormat format, const char* name) {
-  if (!context.format_supports(format, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT))
-    throw std::runtime_error(std::string("the device cannot blend into ") + name + " render targets (splat_format)");
+// The 3D path: LiquidOptions' or LIQUID_3D_PATH's, else the device's best (2D scenes use none).
+GridPath grid_path(const engine::vk::Context& context, const LiquidOptions& options, int dimension) {
+  std::optional<GridPath> requested = options.grid_path;
+  if (!requested)
+    if (const char* env = std::getenv("LIQUID_3D_PATH"); env && *env) requested = parse_grid_path(env, "LIQUID_3D_PATH");
+  const GridPathSupport support{context.supports_geometry_shader(), context.supports_vertex_layer_output()};
+  if (dimension == 2) return requested.value_or(GridPath::VertexLayer);
+  return choose_grid_path(support, requested);
+}
+
+// The atlas is one 2D image: both sides within the device's 2D limit.
+void check_atlas_fits(const engine::vk::Context& context, const GridLayout& layout) {
+  if (!layout.atlas()) return;
+  const engine::vk::ImageDesc d = layout.image_desc(VK_FORMAT_R32G32B32A32_SFLOAT, 0);
+  const uint32_t limit = context.limits().maxImageDimension2D;
+  if (d.width > limit || d.height > limit)
+    throw std::runtime_error("the 3D grid's atlas (" + std::to_string(d.width) + " x " + std::to_string(d.height) +
+                             " texels) exceeds the device's 2D image limit of " + std::to_string(limit) +
+                             "; lower grid_resolution or use another 3D path");
 }
 
 template <class T>
@@ -39,17 +56,21 @@ std::vector<T> as_vector(const std::vector<std::byte>& bytes, size_t count) {
 LiquidNode::LiquidNode(engine::vk::Context& context, const Scene& scene, const LiquidOptions& options)
     : context_(context), scene_(scene), setup_(make_setup(scene, device_limits(context))),
       frames_in_flight_(options.frames_in_flight) {
-  if (setup_.dimension == 3 && !context.supports_vertex_layer_output())
-    throw std::runtime_error("the device cannot write gl_Layer from a vertex shader (shaderOutputLayer), "
-                             "which the 3D splat needs");
-  const VkFormat format = splat_format(scene);
-  require_blendable(context, format, scene.splat_format == SplatFormat::Rgba16f ? "RGBA16F" : "RGBA32F");
+  layout_ = GridLayout(setup_.dimension, setup_.grid_cells, grid_path(context, options, setup_.dimension));
+  check_atlas_fits(context, layout_);
+  const SplatFormatChoice format = choose_splat_format(
+      scene.splat_format, blendable(context, VK_FORMAT_R32G32B32A32_SFLOAT), blendable(context, VK_FORMAT_R16G16B16A16_SFLOAT));
+  splat_format_ = format.format;
+  if (options.log) {
+    if (setup_.dimension == 3) options.log("liquid: 3D path: " + grid_path_description(layout_.path));
+    if (format.fell_back) options.log("liquid: the device cannot blend into RGBA32F; the splat uses RGBA16F");
+  }
   const std::vector<int32_t> specialization = scene_specialization(scene_, setup_);
-  splat_ = std::make_unique<SplatPass>(context, setup_, format, specialization);
-  grid_ = std::make_unique<GridPass>(context, setup_, specialization);
-  if (setup_.splat_adjoint_pressure) pressure_ = std::make_unique<PressurePass>(context, setup_, specialization);
-  particle_update_ = std::make_unique<ParticleUpdatePass>(context, setup_, specialization);
-  state_ = std::make_unique<LiquidState>(context, setup_, format);
+  splat_ = std::make_unique<SplatPass>(context, setup_, layout_, splat_format_, specialization);
+  grid_ = std::make_unique<GridPass>(context, setup_, layout_, specialization);
+  if (setup_.splat_adjoint_pressure) pressure_ = std::make_unique<PressurePass>(context, layout_, specialization);
+  particle_update_ = std::make_unique<ParticleUpdatePass>(context, layout_, specialization);
+  state_ = std::make_unique<LiquidState>(context, setup_, layout_, splat_format_);
   max_steps_per_frame_ = options.max_steps_per_frame > 0 ? options.max_steps_per_frame : scene.substeps;
   uniforms_ = std::make_unique<engine::vk::UniformArena>(
       context, engine::vk::UniformArena::frame_bytes({sizeof(gpu::SolverUniforms)}, max_steps_per_frame_),
@@ -91,10 +112,17 @@ std::vector<ObstaclePose> LiquidNode::obstacle_poses(double time) const {
   return poses;
 }
 
+gpu::SolverUniforms LiquidNode::uniforms_for(const StepInputs& step) const {
+  gpu::SolverUniforms u = make_uniforms(scene_, setup_, step);
+  u.atlas_columns = layout_.tiles.x;
+  u.atlas_rows = layout_.tiles.y;
+  return u;
+}
+
 gpu::SolverUniforms LiquidNode::current_uniforms() const {
   StepInputs inputs;
   inputs.obstacle_poses = obstacle_poses(time_);
-  return make_uniforms(scene_, setup_, inputs);
+  return uniforms_for(inputs);
 }
 
 std::vector<EmissionRange> LiquidNode::emit(double end_time, int& next_index) {
@@ -150,7 +178,7 @@ LiquidImages LiquidNode::add_to(engine::graph::RenderGraph& graph, int steps) {
     step.active_after = next_index;
     step.obstacle_poses = obstacle_poses(t1);
     step.brushes = brushes_;
-    const engine::vk::UniformSlice slice = uniforms_->push(make_uniforms(scene_, setup_, step));
+    const engine::vk::UniformSlice slice = uniforms_->push(uniforms_for(step));
 
     const int cur = s.current, next = 1 - s.current;
     splat = splat_->add_to(graph, slice, particles[cur], splat, active_);
@@ -172,7 +200,7 @@ LiquidImages LiquidNode::add_grids_to(engine::graph::RenderGraph& graph, const L
   step.active_before = step.active_after = active_;
   step.obstacle_poses = obstacle_poses(time_);
   step.brushes = brushes_;
-  const engine::vk::UniformSlice slice = grid_uniforms_->push(make_uniforms(scene_, setup_, step));
+  const engine::vk::UniformSlice slice = grid_uniforms_->push(uniforms_for(step));
   const ParticleImages particles{images.positions, images.velocities};
   const ImageHandle splat = splat_->add_to(graph, slice, particles, images.splat, active_);
   PressureImages pressure = create_pressure_images(graph);
@@ -229,19 +257,25 @@ std::vector<float> LiquidNode::read_density_ratio() {
   std::vector<float> ratio(bytes.size() / 2);
   const uint16_t* halves = reinterpret_cast<const uint16_t*>(bytes.data());
   for (size_t i = 0; i < ratio.size(); ++i) ratio[i] = glm::unpackHalf1x16(halves[i]);
-  return ratio;
+  return layout_.to_linear(ratio);
 }
 
 std::vector<glm::vec4> LiquidNode::read_splat() {
   const engine::vk::ImageDesc& d = state_->splat.desc();
-  const size_t cells = size_t(d.width) * d.height * d.depth_or_layers;
+  const size_t texels = size_t(d.width) * d.height * d.depth_or_layers;
   const auto bytes = engine::graph::download_image(context_, state_->splat);
-  if (d.format == VK_FORMAT_R32G32B32A32_SFLOAT) return as_vector<glm::vec4>(bytes, cells);
-  std::vector<glm::vec4> out(cells);
+  if (d.format == VK_FORMAT_R32G32B32A32_SFLOAT) return layout_.to_linear(as_vector<glm::vec4>(bytes, texels));
+  std::vector<glm::vec4> out(texels);
   const uint16_t* halves = reinterpret_cast<const uint16_t*>(bytes.data());
-  for (size_t i = 0; i < cells; ++i)
+  for (size_t i = 0; i < texels; ++i)
     for (int c = 0; c < 4; ++c) out[i][c] = glm::unpackHalf1x16(halves[i * 4 + c]);
-  return out;
+  return layout_.to_linear(out);
+}
+
+std::vector<glm::vec4> LiquidNode::read_grid_velocity() {
+  const engine::vk::ImageDesc& d = state_->grid_velocity.desc();
+  const size_t texels = size_t(d.width) * d.height * d.depth_or_layers;
+  return layout_.to_linear(as_vector<glm::vec4>(engine::graph::download_image(context_, state_->grid_velocity), texels));
 }
 
 Diagnostics LiquidNode::diagnose() { return diagnose(read_particles()); }

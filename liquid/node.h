@@ -30,7 +30,8 @@ namespace liquid {
 class LiquidNode {
  public:
   // Throws SceneError when the scene does not fit the device (grid or particle count past its
-  // limits) and std::runtime_error when the device lacks a needed format feature.
+  // limits), std::runtime_error when the device lacks a needed format feature or the forced 3D
+  // path's feature, and std::invalid_argument for a LIQUID_3D_PATH that names no path.
   LiquidNode(engine::vk::Context& context, const Scene& scene, const LiquidOptions& options = {});
   ~LiquidNode();
 
@@ -38,6 +39,10 @@ class LiquidNode {
   const Scene& scene() const { return scene_; }
   const SimulationSetup& setup() const { return setup_; }
   int dimension() const { return setup_.dimension; }
+  engine::vk::Context& context() const { return context_; }
+  // How the grids are stored (3D: images or atlases, liquid/grid_layout.h) and the splat's format.
+  const GridLayout& grid_layout() const { return layout_; }
+  VkFormat splat_format() const { return splat_format_; }
   // Frames the GPU may still be running when add_to() is called (views size their uniforms by it).
   uint32_t frames_in_flight() const { return frames_in_flight_; }
 
@@ -74,8 +79,10 @@ class LiquidNode {
 
   // Blocking reads (own submission): call when no frame of this node is in flight.
   ParticleSnapshot read_particles();
+  // The grids, cell (x, y, z) at x + nx (y + ny z) on every path.
   std::vector<float> read_density_ratio();
   std::vector<glm::vec4> read_splat();
+  std::vector<glm::vec4> read_grid_velocity();
   // Diagnostics of the current state; throws SimulationError when the state is unstable.
   Diagnostics diagnose();
   // The same from particles the host already read back (read_particles()), saving a download.
@@ -122,12 +129,16 @@ class LiquidNode {
   // One step's grid pass, after the splat-adjoint pressure passes when the scene uses them.
   GridImages add_grid(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice, ImageHandle splat,
                       const GridImages& grids, PressureImages& pressure) const;
+  // make_uniforms() with the grid layout's atlas tiles.
+  gpu::SolverUniforms uniforms_for(const StepInputs& step) const;
   // This step's emission ranges, advancing the emitters' counts.
   std::vector<EmissionRange> emit(double end_time, int& next_index);
 
   engine::vk::Context& context_;
   Scene scene_;
   SimulationSetup setup_;
+  GridLayout layout_;
+  VkFormat splat_format_ = VK_FORMAT_UNDEFINED;
   uint32_t frames_in_flight_ = 2;
   std::unique_ptr<SplatPass> splat_;
   std::unique_ptr<GridPass> grid_;

@@ -4,6 +4,7 @@
 #include "liquid/scene.h"
 #include "liquid/scene_reader.h"
 
+#include <array>
 #include <filesystem>
 
 namespace liquid::scene_reader {
@@ -211,8 +212,8 @@ void read_physics(const Reader& r, const Json& doc, Scene& scene) {
   if (const Json* v = Reader::find(doc, "wall_margin_cells"))
     scene.wall_margin_cells = float(r.number_in(*v, "wall_margin_cells", 0.0, 4.0));
   if (const Json* v = Reader::find(doc, "splat_format"))
-    scene.splat_format = r.choice(*v, "splat_format", {"rgba32f", "rgba16f"}) == 0 ? SplatFormat::Rgba32f
-                                                                                   : SplatFormat::Rgba16f;
+    scene.splat_format = std::array{SplatFormat::Auto, SplatFormat::Rgba32f, SplatFormat::Rgba16f}
+        [r.choice(*v, "splat_format", {"auto", "rgba32f", "rgba16f"})];
   if (const Json* v = Reader::find(doc, "pressure_force")) {
     if (shallow) r.fail("pressure_force", "not used in shallow_water mode");
     scene.pressure_force = r.choice(*v, "pressure_force", {"chapter", "splat_adjoint"}) == 0

@@ -34,7 +34,9 @@ enum class SimulationMode {
   ShallowWater,  // section 6, figure 4: 2D density read as water height, ground term as obstacle
 };
 
-enum class SplatFormat { Rgba32f, Rgba16f };
+// The splat's accumulation format. Auto: RGBA32F where the device can blend into it, else RGBA16F
+// (the chapter's choice; many mobile GPUs cannot blend 32-bit floats). See choose_splat_format().
+enum class SplatFormat { Auto, Rgba32f, Rgba16f };
 
 // How the grid pass turns pressure into force. Chapter: the central differences of P (section 4,
 // eq. 3). SplatAdjoint: of P smoothed with the splat's own kernel, the gradient of an energy, so
@@ -114,7 +116,7 @@ struct Scene {
   float time_step = 0.002f;         // s, one simulation step
   int substeps = 8;                 // steps per rendered frame
   float wall_margin_cells = 0.5f;   // particles are clamped this many cells inside the walls
-  SplatFormat splat_format = SplatFormat::Rgba32f;
+  SplatFormat splat_format = SplatFormat::Auto;
   PressureForce pressure_force = PressureForce::Chapter;
   float rest_depth = 0.1f;          // m, shallow water: water height where rho = rho0
   std::vector<FluidBlock> fluid_blocks;

@@ -2,6 +2,8 @@
 
 #include "engine/graph/transfer.h"
 
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace liquid {
@@ -15,12 +17,6 @@ namespace {
 constexpr VkImageUsageFlags k_usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
                                       VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
 
-ImageDesc grid_desc(const SimulationSetup& setup, VkFormat format) {
-  const glm::ivec3 n = setup.grid_cells;
-  return ImageDesc{setup.dimension == 3 ? ImageKind::Image3D : ImageKind::Image2D, uint32_t(n.x), uint32_t(n.y),
-                   setup.dimension == 3 ? uint32_t(n.z) : 1u, format, k_usage};
-}
-
 // Initial particles padded to the whole texture (inactive texels zero).
 std::vector<glm::vec4> padded(const std::vector<glm::vec4>& values, const SimulationSetup& setup) {
   std::vector<glm::vec4> texels(size_t(setup.particle_texture.x) * setup.particle_texture.y, glm::vec4(0.0f));
@@ -30,16 +26,29 @@ std::vector<glm::vec4> padded(const std::vector<glm::vec4>& values, const Simula
 
 }  // namespace
 
-LiquidState::LiquidState(engine::vk::Context& context, const SimulationSetup& setup, VkFormat splat_format) {
+SplatFormatChoice choose_splat_format(SplatFormat requested, bool rgba32f_blendable, bool rgba16f_blendable) {
+  const auto refuse = [](const char* name) {
+    return std::runtime_error(std::string("the device cannot blend into ") + name + " render targets (splat_format)");
+  };
+  if (requested == SplatFormat::Rgba16f || (requested == SplatFormat::Auto && !rgba32f_blendable)) {
+    if (!rgba16f_blendable) throw refuse(requested == SplatFormat::Auto ? "RGBA32F or RGBA16F" : "RGBA16F");
+    return {VK_FORMAT_R16G16B16A16_SFLOAT, requested == SplatFormat::Auto};
+  }
+  if (!rgba32f_blendable) throw refuse("RGBA32F");
+  return {VK_FORMAT_R32G32B32A32_SFLOAT, false};
+}
+
+LiquidState::LiquidState(engine::vk::Context& context, const SimulationSetup& setup, const GridLayout& layout,
+                         VkFormat splat_format) {
   const ImageDesc particles{ImageKind::Image2D, uint32_t(setup.particle_texture.x), uint32_t(setup.particle_texture.y), 1,
                             k_particle_format, k_usage};
   for (int i = 0; i < 2; ++i) {
     positions[i] = Image(context, particles, "liquid.positions" + std::to_string(i));
     velocities[i] = Image(context, particles, "liquid.velocities" + std::to_string(i));
   }
-  splat = Image(context, grid_desc(setup, splat_format), "liquid.splat");
-  grid_velocity = Image(context, grid_desc(setup, k_grid_velocity_format), "liquid.grid_velocity");
-  density = Image(context, grid_desc(setup, k_density_format), "liquid.density");
+  splat = Image(context, layout.image_desc(splat_format, k_usage), "liquid.splat");
+  grid_velocity = Image(context, layout.image_desc(k_grid_velocity_format, k_usage), "liquid.grid_velocity");
+  density = Image(context, layout.image_desc(k_density_format, k_usage), "liquid.density");
 
   const auto p = padded(setup.positions, setup);
   const auto v = padded(setup.velocities, setup);

@@ -4,6 +4,8 @@
 #pragma once
 
 #include "engine/vk/image.h"
+#include "liquid/grid_layout.h"
+#include "liquid/scene.h"
 #include "liquid/setup.h"
 
 #include <vulkan/vulkan.h>
@@ -20,8 +22,19 @@ constexpr VkFormat k_particle_format = VK_FORMAT_R32G32B32A32_SFLOAT;  // positi
 constexpr VkFormat k_grid_velocity_format = VK_FORMAT_R32G32B32A32_SFLOAT;
 constexpr VkFormat k_density_format = VK_FORMAT_R16_SFLOAT;  // rho / rho0, for rendering
 
+// The splat's format for a scene's `requested` one and what the device can blend into. Auto takes
+// RGBA32F where it is blendable and falls back to RGBA16F (`fell_back`) where it is not. Throws
+// std::runtime_error naming the format when the device cannot blend into the one needed.
+struct SplatFormatChoice {
+  VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT;
+  bool fell_back = false;  // auto, and RGBA32F is not blendable here
+};
+SplatFormatChoice choose_splat_format(SplatFormat requested, bool rgba32f_blendable, bool rgba16f_blendable);
+
 struct LiquidState {
-  LiquidState(engine::vk::Context& context, const SimulationSetup& setup, VkFormat splat_format);
+  // The grids are stored as `layout` says (3D images or atlases in 3D).
+  LiquidState(engine::vk::Context& context, const SimulationSetup& setup, const GridLayout& layout,
+              VkFormat splat_format);
 
   std::array<engine::vk::Image, 2> positions;   // xyz (m), w = 1 active
   std::array<engine::vk::Image, 2> velocities;  // xyz (m/s)

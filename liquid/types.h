@@ -3,10 +3,14 @@
 #pragma once
 
 #include "engine/graph/render_graph.h"
+#include "liquid/grid_layout.h"
 
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace liquid {
@@ -16,6 +20,12 @@ struct LiquidOptions {
   uint32_t frames_in_flight = 2;  // frames the GPU may still be running when add_to() is called
   int max_steps_per_frame = 0;    // 0 = the scene's substeps (uniform space is sized for this)
   double energy_bound_factor = 20.0;
+  // How 3D grids are stored and rendered into (liquid/grid_layout.h). Empty: the environment
+  // variable LIQUID_3D_PATH (geometry, vertex-layer or atlas) if set, else the best the device has.
+  std::optional<GridPath> grid_path;
+  // Where the node says, once, which 3D path and splat format it chose when that is worth knowing
+  // ("liquid: 3D path: ..."); no sink, no messages.
+  std::function<void(const std::string&)> log;
 };
 
 // An external force brush (the paper's f_ext): an acceleration (m/s^2) at `position` falling
@@ -32,7 +42,8 @@ struct ObstaclePose {
   glm::vec3 velocity{0.0f};  // m/s
 };
 
-// The graph images after the steps add_to() declared; valid for the rest of that graph.
+// The graph images after the steps add_to() declared; valid for the rest of that graph. The grids
+// are 3D images in 3D, or 2D atlases of their slices on the atlas path (LiquidNode::grid_layout()).
 struct LiquidImages {
   engine::graph::ImageHandle positions;      // RGBA32F particle texture, xyz m
   engine::graph::ImageHandle velocities;     // RGBA32F particle texture, xyz m/s

@@ -66,6 +66,7 @@ gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& set
   u.brush_count = int(step.brushes.size());
   u.emission_count = int(step.emissions.size());
   u.rest_depth = setup.rest_depth;
+  u.atlas_columns = u.atlas_rows = 1;  // one tile; the node sets an atlas's (LiquidNode::uniforms_for)
   for (int k = 0; k < gpu::k_wall_table_size; ++k)
     u.wall_kernel_beyond[k / 4][k % 4] =
         float(kernel_mass_beyond_wall(setup.dimension, setup.kernel_radius_cells, double(k) + 0.5));

@@ -13,10 +13,10 @@
 
 namespace liquid {
 
-// Every stage that may read the solver's block (it sits in common.glsl, which every liquid shader
-// includes).
-constexpr VkShaderStageFlags k_solver_uniform_stages =
-    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+// Every stage that may read the solver's block (it sits in common.glsl, which the liquid's vertex
+// and fragment shaders include). No geometry shader reads it, so a device without geometry shaders
+// never sees that stage named.
+constexpr VkShaderStageFlags k_solver_uniform_stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 
 struct EmissionRange {
   int emitter = 0;  // index into the scene's emitters

@@ -17,6 +17,7 @@
 #include "tools/capture/video.h"
 #include "tools/cli.h"
 #include "tools/frame_loop.h"
+#include "tools/grid_path_flag.h"
 #include "tools/progress.h"
 
 #include <signal.h>
@@ -152,7 +153,10 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
   engine::vk::Context context(engine::vk::ContextOptions{.validation = options.validation});
   const capture::FramePlan& plan = settings.plan;
   liquid::LiquidNode node(context, scene,
-                          liquid::LiquidOptions{.frames_in_flight = 1, .max_steps_per_frame = plan.steps_per_frame});
+                          liquid::LiquidOptions{.frames_in_flight = 1,
+                                                .max_steps_per_frame = plan.steps_per_frame,
+                                                .grid_path = tools::grid_path_from_flag(options.grid_path),
+                                                .log = tools::stdout_log()});
   liquid::LiquidRenderer renderer(
       context, node,
       liquid::RenderSettings{.width = settings.width, .height = settings.height, .fxaa = settings.fxaa,

@@ -7,6 +7,7 @@
 
 #include "tools/cli.h"
 #include "tools/frame_loop.h"
+#include "tools/grid_path_flag.h"
 
 #include <CLI/CLI.hpp>
 
@@ -50,11 +51,15 @@ void check_output_file(const std::filesystem::path& path) {
   std::filesystem::remove(probe, ignored);
 }
 
-int run(const std::string& scene_path, int steps, int report_every, bool validation, const std::string& dump_path) {
+int run(const std::string& scene_path, int steps, int report_every, bool validation, const std::string& dump_path,
+        const std::string& grid_path) {
   const liquid::Scene scene = liquid::load_scene(scene_path);
   if (!dump_path.empty()) check_output_file(dump_path);
   engine::vk::Context context(engine::vk::ContextOptions{.validation = validation});
-  liquid::LiquidNode node(context, scene);
+  liquid::LiquidOptions node_options;
+  node_options.grid_path = tools::grid_path_from_flag(grid_path);
+  node_options.log = tools::stdout_log();
+  liquid::LiquidNode node(context, scene, node_options);
   const auto& s = node.setup();
   std::printf("scene %s: %dD, %d particles (capacity %d), grid %dx%dx%d, h = %.4g m, dt = %.3g s, k = %.4g, "
               "gamma = %.3g, rho0 = %.5g kg/m^3\n",
@@ -107,7 +112,8 @@ int main(int argc, char** argv) {
   std::string scene;
   int steps = 200, report_every = 50;
   bool validation = false;
-  std::string dump_path;
+  std::string dump_path, grid_path;
+  tools::add_grid_path_option(app, grid_path);
   app.add_option("--dump-particles", dump_path, "write the final particles as CSV");
   app.add_option("scene", scene, "scene JSON file")->required();
   app.add_option("-n,--steps", steps, "simulation steps")->check(tools::integer_range(1, 10000000));
@@ -115,5 +121,5 @@ int main(int argc, char** argv) {
       ->check(tools::integer_range(1, 1000000));
   app.add_flag("--validation", validation, "enable the Vulkan validation layer");
   return tools::run_main(app, argc, argv, "liquid_run",
-                         [&] { return run(scene, steps, report_every, validation, dump_path); });
+                         [&] { return run(scene, steps, report_every, validation, dump_path, grid_path); });
 }

@@ -89,6 +89,8 @@ class Context {
   bool owns_device() const { return owns_device_; }
   // Whether vertex shaders may write gl_Layer (Vulkan 1.2 shaderOutputLayer).
   bool supports_vertex_layer_output() const { return vertex_layer_output_; }
+  // Whether geometry shaders were enabled (geometryShader).
+  bool supports_geometry_shader() const { return geometry_shader_; }
 
   // Number of validation warnings and errors reported since creation (or the last reset).
   uint32_t validation_message_count() const { return validation_messages_.load(); }
@@ -144,6 +146,7 @@ class Context {
   bool print_messages_ = true;
   bool owns_device_ = true;
   bool vertex_layer_output_ = false;
+  bool geometry_shader_ = false;
   std::atomic<uint32_t> validation_messages_{0};
   mutable std::string last_message_;
   PFN_vkSetDebugUtilsObjectNameEXT set_object_name_ = nullptr;

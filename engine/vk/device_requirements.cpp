@@ -15,15 +15,17 @@ struct Required {
 };
 
 const Required k_required[] = {
-    {"geometryShader", [](DeviceFeatures& f) -> VkBool32& { return f.core.features.geometryShader; }},
     {"largePoints", [](DeviceFeatures& f) -> VkBool32& { return f.core.features.largePoints; }},
     {"hostQueryReset", [](DeviceFeatures& f) -> VkBool32& { return f.v12.hostQueryReset; }},
     {"dynamicRendering", [](DeviceFeatures& f) -> VkBool32& { return f.v13.dynamicRendering; }},
     {"synchronization2", [](DeviceFeatures& f) -> VkBool32& { return f.v13.synchronization2; }},
 };
 
-// Used where the device has it: the 3D splat writes gl_Layer from its vertex shader.
+// Used where the device has them; each picks a way of rendering the 3D grids (liquid/grid_layout.h):
+// geometry shaders route full-screen passes to a slice, shaderOutputLayer lets a vertex shader do it.
+// Without either, 3D grids are stored as 2D atlases of their slices; 2D scenes need neither.
 const Required k_optional[] = {
+    {"geometryShader", [](DeviceFeatures& f) -> VkBool32& { return f.core.features.geometryShader; }},
     {"shaderOutputLayer", [](DeviceFeatures& f) -> VkBool32& { return f.v12.shaderOutputLayer; }},
 };
 

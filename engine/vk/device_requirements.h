@@ -37,8 +37,8 @@ struct DeviceFeatures {
 };
 
 // Sets every feature the library needs in `features` (leaving the others as they are).
-// `optional` features (gl_Layer from vertex shaders, used by the 3D splat) are set only where
-// `supported` has them.
+// The optional features (geometry shaders, gl_Layer from vertex shaders: ways of rendering into the
+// slices of 3D images) are set only where `supported` has them.
 void enable_required(DeviceFeatures& features, const DeviceFeatures& supported);
 
 // The required features and extensions absent from what was enabled, by name ("geometryShader",

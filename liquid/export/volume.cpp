@@ -10,18 +10,18 @@
 
 namespace liquid {
 
-VolumeFrame read_volume(engine::vk::Context& context, LiquidNode& node) {
+// The node reads through its own context (the parameter stays for hosts that call this).
+VolumeFrame read_volume(engine::vk::Context& /*context*/, LiquidNode& node) {
   const SimulationSetup& s = node.setup();
   VolumeFrame v;
   v.cells = s.grid_cells;
   v.cell_size = s.cell_size;
+  // Both in x-fastest order on every 3D path (the node converts an atlas).
   v.density = node.read_density_ratio();
+  v.velocity = node.read_grid_velocity();
   const size_t cells = size_t(v.cells.x) * v.cells.y * v.cells.z;
-  const std::vector<std::byte> bytes = engine::graph::download_image(context, node.state().grid_velocity);
-  if (v.density.size() != cells || bytes.size() != cells * sizeof(glm::vec4))
+  if (v.density.size() != cells || v.velocity.size() != cells)
     throw std::logic_error("read_volume: grid readback of unexpected size");
-  v.velocity.resize(cells);
-  std::memcpy(v.velocity.data(), bytes.data(), bytes.size());
   return v;
 }
 

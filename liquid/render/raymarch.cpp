@@ -38,18 +38,20 @@ glm::mat4 raymarch_view_projection(const SimulationSetup& setup, const CameraVie
 
 RaymarchPass::RaymarchPass(engine::vk::Context& context, const LiquidNode& node, bool composite)
     : node_(node),
+      bricks_(3, (node.setup().grid_cells + k_brick_cells - 1) / k_brick_cells, node.grid_layout().path),
       occupancy_(context, engine::vk::GraphicsPipelineDesc{
                               .name = "liquid.occupancy",
-                              .vertex = engine::passes::fullscreen_layered_vertex_shader(),
-                              .geometry = engine::passes::fullscreen_layered_geometry_shader(),
-                              .fragment = liquid_shaders::occupancy_frag,
+                              .vertex = grid_pass_shaders(bricks_).vertex,
+                              .geometry = grid_pass_shaders(bricks_).geometry,
+                              .fragment = bricks_.atlas() ? liquid_shaders::occupancy_frag_atlas
+                                                          : liquid_shaders::occupancy_frag,
                               .color_formats = {VK_FORMAT_R16_SFLOAT},
                               .bindings = {{LIQUID_BINDING_OCCUPANCY_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
                               .push_constant_size = sizeof(gpu::OccupancyPush)}),
       raymarch_(context, engine::vk::GraphicsPipelineDesc{
                              .name = "liquid.raymarch",
                              .vertex = engine::passes::fullscreen_vertex_shader(),
-                             .fragment = liquid_shaders::raymarch_frag,
+                             .fragment = bricks_.atlas() ? liquid_shaders::raymarch_frag_atlas : liquid_shaders::raymarch_frag,
                              .color_formats = {k_color_format},
                              // Composited: blended over the host's colour (the shader writes the
                              // liquid's coverage in alpha).
@@ -76,7 +78,8 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
   const SimulationSetup& setup = node_.setup();
   const engine::vk::UniformSlice solver = uniforms_.begin_frame();
 
-  const glm::ivec3 bricks = (setup.grid_cells + k_brick_cells - 1) / k_brick_cells;
+  const glm::ivec3 bricks = bricks_.cells;
+  const GridLayout& grid = node_.grid_layout();
   const glm::mat4 vp = raymarch_view_projection(setup, camera, float(settings.width) / float(settings.height));
   gpu::RaymarchUniforms render{};
   render.inverse_view_projection = glm::inverse(vp);
@@ -87,6 +90,8 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
   render.fine_step_cells = k_fine_step_cells;
   render.bricks = bricks;
   render.brick_cells = float(k_brick_cells);
+  render.brick_columns = bricks_.tiles.x;
+  render.brick_rows = bricks_.tiles.y;
   const engine::vk::UniformSlice view = uniforms_.push(render);
 
   // Occupancy: one texel per brick, the brick's largest density.
@@ -102,14 +107,14 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
               [&](PassBuilder& b, OccupancyData& d) {
                 d.bindings = engine::passes::PassBindings(occupancy_);
                 d.bindings.bind_image(b, LIQUID_BINDING_OCCUPANCY_DENSITY, density, nearest_.handle());
-                d.occupancy = b.write(
-                    b.create("liquid.occupancy", {engine::vk::ImageKind::Image3D, uint32_t(bricks.x), uint32_t(bricks.y),
-                                                  uint32_t(bricks.z), VK_FORMAT_R16_SFLOAT, 0}),
-                    Access::ColorAttachmentWrite);
+                d.occupancy = b.write(b.create("liquid.occupancy", bricks_.image_desc(VK_FORMAT_R16_SFLOAT, 0)),
+                                      Access::ColorAttachmentWrite);
               },
-              [this](PassContext& ctx, const OccupancyData& d) {
+              [this, push = gpu::OccupancyPush{grid.cells, k_brick_cells, bricks_.cells, grid.tiles.x, grid.tiles.y,
+                                               bricks_.tiles.x, bricks_.tiles.y}](PassContext& ctx,
+                                                                                  const OccupancyData& d) {
                 d.bindings.bind_and_push(ctx);
-                occupancy_.push_constants(ctx.cmd, gpu::OccupancyPush{k_brick_cells});
+                occupancy_.push_constants(ctx.cmd, push);
                 engine::passes::draw_fullscreen(ctx.cmd, ctx.layers);
               })
           .occupancy;

@@ -6,6 +6,7 @@
 #include "engine/vk/pipeline.h"
 #include "engine/vk/sampler.h"
 #include "engine/vk/uniform_arena.h"
+#include "liquid/grid_layout.h"
 #include "liquid/node.h"
 #include "liquid/render/camera.h"
 #include "liquid/render/renderer.h"
@@ -33,6 +34,7 @@ class RaymarchPass {
 
  private:
   const LiquidNode& node_;
+  GridLayout bricks_;  // the occupancy grid, stored like the node's grids
   engine::vk::GraphicsPipeline occupancy_;
   engine::vk::GraphicsPipeline raymarch_;
   engine::vk::Sampler linear_;

@@ -17,10 +17,11 @@ using engine::vk::DescriptorKind;
 
 namespace {
 
-std::span<const uint32_t> grid_fragment_shader(const SimulationSetup& setup) {
+std::span<const uint32_t> grid_fragment_shader(const SimulationSetup& setup, const GridLayout& layout) {
   if (setup.splat_adjoint_pressure)
-    return setup.dimension == 3 ? liquid_shaders::grid_adjoint_frag_3d : liquid_shaders::grid_adjoint_frag_2d;
-  return setup.dimension == 3 ? liquid_shaders::grid_frag_3d : liquid_shaders::grid_frag_2d;
+    return layout.pick(liquid_shaders::grid_adjoint_frag_2d, liquid_shaders::grid_adjoint_frag_3d,
+                       liquid_shaders::grid_adjoint_frag_3d_atlas);
+  return layout.pick(liquid_shaders::grid_frag_2d, liquid_shaders::grid_frag_3d, liquid_shaders::grid_frag_3d_atlas);
 }
 
 std::vector<engine::vk::DescriptorBinding> grid_bindings(const SimulationSetup& setup) {
@@ -34,17 +35,15 @@ std::vector<engine::vk::DescriptorBinding> grid_bindings(const SimulationSetup& 
 
 }  // namespace
 
-GridPass::GridPass(engine::vk::Context& context, const SimulationSetup& setup,
+GridPass::GridPass(engine::vk::Context& context, const SimulationSetup& setup, const GridLayout& layout,
                    const std::vector<int32_t>& specialization)
     : pipeline_(context,
                 engine::vk::GraphicsPipelineDesc{
                     .name = "liquid.grid",
-                    // 3D: every slice is a layer of the target, routed by the layered full-screen pair.
-                    .vertex = setup.dimension == 3 ? engine::passes::fullscreen_layered_vertex_shader()
-                                                   : engine::passes::fullscreen_vertex_shader(),
-                    .geometry = setup.dimension == 3 ? engine::passes::fullscreen_layered_geometry_shader()
-                                                     : std::span<const uint32_t>{},
-                    .fragment = grid_fragment_shader(setup),
+                    // 3D: every slice is a layer of the target (or a tile of the atlas).
+                    .vertex = grid_pass_shaders(layout).vertex,
+                    .geometry = grid_pass_shaders(layout).geometry,
+                    .fragment = grid_fragment_shader(setup, layout),
                     .color_formats = {k_grid_velocity_format, k_density_format},
                     .bindings = grid_bindings(setup),
                     .specialization = specialization}),

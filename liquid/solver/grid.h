@@ -7,6 +7,7 @@
 #include "engine/vk/pipeline.h"
 #include "engine/vk/sampler.h"
 #include "engine/vk/uniform_arena.h"
+#include "liquid/grid_layout.h"
 #include "liquid/setup.h"
 #include "liquid/solver/images.h"
 
@@ -17,7 +18,8 @@ namespace liquid {
 
 class GridPass {
  public:
-  GridPass(engine::vk::Context& context, const SimulationSetup& setup, const std::vector<int32_t>& specialization);
+  GridPass(engine::vk::Context& context, const SimulationSetup& setup, const GridLayout& layout,
+           const std::vector<int32_t>& specialization);
 
   // Reads `splat` (and, with the splat-adjoint pressure, PressurePass's `potential`), writes the
   // updated velocity (u', fluid flag) and rho / rho0 into `grids`.

@@ -13,13 +13,14 @@ using engine::graph::PassBuilder;
 using engine::graph::PassContext;
 using engine::vk::DescriptorKind;
 
-ParticleUpdatePass::ParticleUpdatePass(engine::vk::Context& context, const SimulationSetup& setup,
+ParticleUpdatePass::ParticleUpdatePass(engine::vk::Context& context, const GridLayout& layout,
                                        const std::vector<int32_t>& specialization)
     : pipeline_(context,
                 engine::vk::GraphicsPipelineDesc{
                     .name = "liquid.particle",
                     .vertex = engine::passes::fullscreen_vertex_shader(),
-                    .fragment = setup.dimension == 3 ? liquid_shaders::particle_frag_3d : liquid_shaders::particle_frag_2d,
+                    .fragment = layout.pick(liquid_shaders::particle_frag_2d, liquid_shaders::particle_frag_3d,
+                                            liquid_shaders::particle_frag_3d_atlas),
                     .color_formats = {k_particle_format, k_particle_format},
                     .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
                                  {LIQUID_BINDING_PARTICLE_POSITIONS, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},

@@ -7,6 +7,7 @@
 #include "engine/vk/pipeline.h"
 #include "engine/vk/sampler.h"
 #include "engine/vk/uniform_arena.h"
+#include "liquid/grid_layout.h"
 #include "liquid/setup.h"
 #include "liquid/solver/images.h"
 
@@ -17,8 +18,7 @@ namespace liquid {
 
 class ParticleUpdatePass {
  public:
-  ParticleUpdatePass(engine::vk::Context& context, const SimulationSetup& setup,
-                     const std::vector<int32_t>& specialization);
+  ParticleUpdatePass(engine::vk::Context& context, const GridLayout& layout, const std::vector<int32_t>& specialization);
 
   // From `current` into `next` (the other texture of the ping-pong pair), for the rows holding
   // `active_after` particles.

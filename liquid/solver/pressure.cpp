@@ -14,18 +14,17 @@ using engine::vk::DescriptorKind;
 
 namespace {
 
-// One full-screen pass over the grid (one layer per slice in 3D) with the solver's uniforms and
-// one sampled grid at `binding`.
-engine::vk::GraphicsPipelineDesc grid_pipeline(const char* name, const SimulationSetup& setup,
-                                               std::span<const uint32_t> fragment_2d,
-                                               std::span<const uint32_t> fragment_3d, uint32_t binding,
+// One full-screen pass over the grid (one layer per slice in 3D, or the atlas) with the solver's
+// uniforms and one sampled grid at `binding`.
+engine::vk::GraphicsPipelineDesc grid_pipeline(const char* name, const GridLayout& layout,
+                                               std::span<const uint32_t> fragment, uint32_t binding,
                                                const std::vector<int32_t>& specialization) {
-  const bool three_d = setup.dimension == 3;
+  const GridPassShaders shaders = grid_pass_shaders(layout);
   return engine::vk::GraphicsPipelineDesc{
       .name = name,
-      .vertex = three_d ? engine::passes::fullscreen_layered_vertex_shader() : engine::passes::fullscreen_vertex_shader(),
-      .geometry = three_d ? engine::passes::fullscreen_layered_geometry_shader() : std::span<const uint32_t>{},
-      .fragment = three_d ? fragment_3d : fragment_2d,
+      .vertex = shaders.vertex,
+      .geometry = shaders.geometry,
+      .fragment = fragment,
       .color_formats = {k_pressure_format},
       .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
                    {binding, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
@@ -34,19 +33,18 @@ engine::vk::GraphicsPipelineDesc grid_pipeline(const char* name, const Simulatio
 
 }  // namespace
 
-PressurePass::PressurePass(engine::vk::Context& context, const SimulationSetup& setup,
+PressurePass::PressurePass(engine::vk::Context& context, const GridLayout& layout,
                            const std::vector<int32_t>& specialization)
-    : pressure_(context, grid_pipeline("liquid.pressure", setup, liquid_shaders::pressure_frag_2d,
-                                       liquid_shaders::pressure_frag_3d, LIQUID_BINDING_PRESSURE_SPLAT, specialization)),
-      potential_(context, grid_pipeline("liquid.potential", setup, liquid_shaders::potential_frag_2d,
-                                        liquid_shaders::potential_frag_3d, LIQUID_BINDING_POTENTIAL_PRESSURE,
-                                        specialization)),
-      nearest_(context, VK_FILTER_NEAREST) {
-  const glm::ivec3 n = setup.grid_cells;
-  desc_ = engine::vk::ImageDesc{setup.dimension == 3 ? engine::vk::ImageKind::Image3D : engine::vk::ImageKind::Image2D,
-                                uint32_t(n.x), uint32_t(n.y), setup.dimension == 3 ? uint32_t(n.z) : 1u,
-                                k_pressure_format, 0};
-}
+    : pressure_(context, grid_pipeline("liquid.pressure", layout,
+                                       layout.pick(liquid_shaders::pressure_frag_2d, liquid_shaders::pressure_frag_3d,
+                                                   liquid_shaders::pressure_frag_3d_atlas),
+                                       LIQUID_BINDING_PRESSURE_SPLAT, specialization)),
+      potential_(context, grid_pipeline("liquid.potential", layout,
+                                        layout.pick(liquid_shaders::potential_frag_2d, liquid_shaders::potential_frag_3d,
+                                                    liquid_shaders::potential_frag_3d_atlas),
+                                        LIQUID_BINDING_POTENTIAL_PRESSURE, specialization)),
+      nearest_(context, VK_FILTER_NEAREST),
+      desc_(layout.image_desc(k_pressure_format, 0)) {}
 
 ImageHandle PressurePass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
                                  ImageHandle splat, ImageHandle& pressure, ImageHandle& potential) const {

@@ -10,6 +10,7 @@
 #include "engine/vk/pipeline.h"
 #include "engine/vk/sampler.h"
 #include "engine/vk/uniform_arena.h"
+#include "liquid/grid_layout.h"
 #include "liquid/setup.h"
 #include "liquid/solver/images.h"
 
@@ -23,7 +24,7 @@ constexpr VkFormat k_pressure_format = VK_FORMAT_R32_SFLOAT;
 
 class PressurePass {
  public:
-  PressurePass(engine::vk::Context& context, const SimulationSetup& setup, const std::vector<int32_t>& specialization);
+  PressurePass(engine::vk::Context& context, const GridLayout& layout, const std::vector<int32_t>& specialization);
 
   // Grid-sized descriptions of the two intermediate images (the node creates them as transients).
   engine::vk::ImageDesc image_desc() const { return desc_; }

@@ -22,15 +22,25 @@ uint32_t instances_per_particle(const SimulationSetup& setup) {
   return setup.dimension == 3 ? uint32_t(std::ceil(2.0f * setup.kernel_radius_cells)) : 1u;
 }
 
+// The vertex shader by the grid's layout (how a point reaches its slice).
+std::span<const uint32_t> splat_vertex_shader(const GridLayout& layout) {
+  if (layout.dimension == 2) return liquid_shaders::splat_vert_2d;
+  if (layout.atlas()) return liquid_shaders::splat_vert_3d_atlas;
+  return layout.path == GridPath::GeometryShader ? liquid_shaders::splat_vert_3d_gs : liquid_shaders::splat_vert_3d;
+}
+
 }  // namespace
 
-SplatPass::SplatPass(engine::vk::Context& context, const SimulationSetup& setup, VkFormat splat_format,
-                     const std::vector<int32_t>& specialization)
+SplatPass::SplatPass(engine::vk::Context& context, const SimulationSetup& setup, const GridLayout& layout,
+                     VkFormat splat_format, const std::vector<int32_t>& specialization)
     : pipeline_(context,
                 engine::vk::GraphicsPipelineDesc{
                     .name = "liquid.splat",
-                    .vertex = setup.dimension == 3 ? liquid_shaders::splat_vert_3d : liquid_shaders::splat_vert_2d,
-                    .fragment = liquid_shaders::splat_frag,
+                    .vertex = splat_vertex_shader(layout),
+                    .geometry = layout.layered() && layout.path == GridPath::GeometryShader
+                                    ? std::span<const uint32_t>(liquid_shaders::splat_geom)
+                                    : std::span<const uint32_t>{},
+                    .fragment = layout.atlas() ? liquid_shaders::splat_frag_atlas : liquid_shaders::splat_frag,
                     .topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST,
                     .color_formats = {splat_format},
                     .blend = {engine::vk::BlendMode::Additive},

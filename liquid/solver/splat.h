@@ -1,11 +1,13 @@
 // Section 3, the splat: every active particle drawn once as a point (once per slice it reaches in
 // 3D) and its kernel w = (1 - d^2/r^2)^3 accumulated by additive blending into the splat grid:
-// rgb = sum w u, a = sum w. Shaders: shaders/liquid/solver/splat.vert, splat.frag.
+// rgb = sum w u, a = sum w. Shaders: shaders/liquid/solver/splat.vert, splat.frag (and splat.geom on
+// the geometry-shader path, liquid/grid_layout.h).
 #pragma once
 
 #include "engine/vk/pipeline.h"
 #include "engine/vk/sampler.h"
 #include "engine/vk/uniform_arena.h"
+#include "liquid/grid_layout.h"
 #include "liquid/setup.h"
 #include "liquid/solver/images.h"
 
@@ -16,8 +18,8 @@ namespace liquid {
 
 class SplatPass {
  public:
-  SplatPass(engine::vk::Context& context, const SimulationSetup& setup, VkFormat splat_format,
-            const std::vector<int32_t>& specialization);
+  SplatPass(engine::vk::Context& context, const SimulationSetup& setup, const GridLayout& layout,
+            VkFormat splat_format, const std::vector<int32_t>& specialization);
 
   // Clears `splat` and accumulates the first `active_particles` particles into it.
   ImageHandle add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,

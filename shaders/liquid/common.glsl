@@ -51,15 +51,20 @@ float density_ratio_power(float ratio) {
   return result;
 }
 
-#if DIM == 3
+// ATLAS (3D only): the grids are 2D atlases of their slices (grid_atlas.glsl), not 3D images.
+#ifndef ATLAS
+#define ATLAS 0
+#endif
+#include "liquid/grid_atlas.glsl"
+
+#if DIM == 3 && !ATLAS
 #define GRID_SAMPLER sampler3D
-#define GRID_COORD ivec3
 #else
 #define GRID_SAMPLER sampler2D
-#define GRID_COORD ivec2
 #endif
 
 ivec3 grid_cells() { return u.grid_cells; }
+ivec2 atlas_tiles() { return ivec2(u.atlas_columns, u.atlas_rows); }
 float cell_size() { return u.cell_size; }
 
 // World position (m) of the centre of cell c.
@@ -71,9 +76,12 @@ vec3 cell_center(ivec3 c) {
   return p;
 }
 
+// The texel of cell c, clamped into the grid (so never an unused atlas tile).
 vec4 fetch_grid(GRID_SAMPLER s, ivec3 c) {
   c = clamp(c, ivec3(0), grid_cells() - 1);
-#if DIM == 3
+#if DIM == 3 && ATLAS
+  return texelFetch(s, atlas_texel(c, grid_cells(), atlas_tiles()), 0);
+#elif DIM == 3
   return texelFetch(s, c, 0);
 #else
   return texelFetch(s, c.xy, 0);

@@ -119,6 +119,8 @@ LIQUID_STRUCT(SolverUniforms) {
   int brush_count;
   int emission_count;      // emitters adding particles this step
   float rest_depth;        // shallow water: depth at rest, m
+  int atlas_columns;       // the atlas path: columns and rows of slice tiles (liquid/grid_layout.h);
+  int atlas_rows;          // 1 and 1 otherwise
   // Fraction of the kernel's mass beyond a wall k + 0.5 cells from a cell centre: [k / 4][k % 4].
   LIQUID_ALIGN16 vec4 wall_kernel_beyond[LIQUID_WALL_TABLE_SIZE / 4];
   Obstacle obstacles[LIQUID_MAX_OBSTACLES];

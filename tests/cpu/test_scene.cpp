@@ -101,7 +101,7 @@ TEST_CASE("omitted fields take their documented defaults", "[scene]") {
   CHECK(scene.density == 1000.0f);
   CHECK_FALSE(scene.rest_density.has_value());
   CHECK(scene.kernel_radius_cells == 3.0f);
-  CHECK(scene.splat_format == SplatFormat::Rgba32f);
+  CHECK(scene.splat_format == SplatFormat::Auto);
   REQUIRE(scene.fluid_blocks.size() == 1);
   CHECK(scene.fluid_blocks[0].max == glm::vec3(0.3f, 0.45f, 0.0f));
   CHECK(scene.fluid_blocks[0].velocity == glm::vec3(0.0f));

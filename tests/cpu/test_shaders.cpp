@@ -105,13 +105,20 @@ TEST_CASE("shaders declare the specialization ids the host fills in", "[shaders]
       {"potential 2D", liquid_shaders::potential_frag_2d}, {"potential 3D", liquid_shaders::potential_frag_3d},
       {"particle 2D", liquid_shaders::particle_frag_2d}, {"particle 3D", liquid_shaders::particle_frag_3d},
       {"splat 2D", liquid_shaders::splat_vert_2d},       {"splat 3D", liquid_shaders::splat_vert_3d},
+      {"grid 3D atlas", liquid_shaders::grid_frag_3d_atlas},
+      {"grid adjoint 3D atlas", liquid_shaders::grid_adjoint_frag_3d_atlas},
+      {"pressure 3D atlas", liquid_shaders::pressure_frag_3d_atlas},
+      {"potential 3D atlas", liquid_shaders::potential_frag_3d_atlas},
+      {"particle 3D atlas", liquid_shaders::particle_frag_3d_atlas},
+      {"splat 3D atlas", liquid_shaders::splat_vert_3d_atlas}, {"splat 3D geometry", liquid_shaders::splat_vert_3d_gs},
+      {"raymarch atlas", liquid_shaders::raymarch_frag_atlas},
       {"raymarch", liquid_shaders::raymarch_frag},       {"2D view", liquid_shaders::view2d_frag},
       {"height field", liquid_shaders::height_field_vert}};
   for (const auto& [name, spirv] : modules) {
     INFO(name);
     std::map<std::string, uint32_t> found = specialization_ids(spirv);
     // The raymarch has one of its own after the scene's (liquid/render/raymarch.cpp checks the id).
-    if (name == "raymarch") {
+    if (name == "raymarch" || name == "raymarch atlas") {
       CHECK(found["COMPOSITE"] == uint32_t(LIQUID_RAYMARCH_COMPOSITE_ID));
       found.erase("COMPOSITE");
     }
@@ -131,7 +138,8 @@ TEST_CASE("the solver's uniform block has the same layout in C++ and in every sh
       MEMBER(SolverUniforms, wall_margin), MEMBER(SolverUniforms, obstacle_band),
       MEMBER(SolverUniforms, active_before), MEMBER(SolverUniforms, active_after),
       MEMBER(SolverUniforms, brush_count), MEMBER(SolverUniforms, emission_count),
-      MEMBER(SolverUniforms, rest_depth), MEMBER(SolverUniforms, wall_kernel_beyond),
+      MEMBER(SolverUniforms, rest_depth), MEMBER(SolverUniforms, atlas_columns),
+      MEMBER(SolverUniforms, atlas_rows), MEMBER(SolverUniforms, wall_kernel_beyond),
       MEMBER(SolverUniforms, obstacles), MEMBER(SolverUniforms, balls), MEMBER(SolverUniforms, ground),
       MEMBER(SolverUniforms, brushes), MEMBER(SolverUniforms, emitters),
       {"SolverUniforms.wall_kernel_beyond[]", 16}, {"SolverUniforms.obstacles[]", uint32_t(sizeof(Obstacle))},
@@ -146,7 +154,9 @@ TEST_CASE("the solver's uniform block has the same layout in C++ and in every sh
   // Modules whose shaders read obstacles, brushes and emitters, so glslang lays out every struct.
   const std::map<std::string, std::span<const uint32_t>> modules{
       {"grid 3D", liquid_shaders::grid_frag_3d}, {"particle 2D", liquid_shaders::particle_frag_2d},
-      {"particle 3D", liquid_shaders::particle_frag_3d}, {"splat 3D", liquid_shaders::splat_vert_3d}};
+      {"particle 3D", liquid_shaders::particle_frag_3d}, {"splat 3D", liquid_shaders::splat_vert_3d},
+      {"grid 3D atlas", liquid_shaders::grid_frag_3d_atlas}, {"particle 3D atlas", liquid_shaders::particle_frag_3d_atlas},
+      {"splat 3D atlas", liquid_shaders::splat_vert_3d_atlas}, {"splat 3D geometry", liquid_shaders::splat_vert_3d_gs}};
   for (const auto& [module, spirv] : modules) {
     INFO(module);
     const std::map<std::string, uint32_t> found = member_layout(spirv);
@@ -166,8 +176,14 @@ TEST_CASE("the views' uniform and push-constant blocks have the same layout in C
        {MEMBER(RaymarchUniforms, inverse_view_projection), MEMBER(RaymarchUniforms, view_projection),
         MEMBER(RaymarchUniforms, camera_position), MEMBER(RaymarchUniforms, iso_level),
         MEMBER(RaymarchUniforms, sun_direction), MEMBER(RaymarchUniforms, fine_step_cells),
-        MEMBER(RaymarchUniforms, bricks), MEMBER(RaymarchUniforms, brick_cells)}},
+        MEMBER(RaymarchUniforms, bricks), MEMBER(RaymarchUniforms, brick_cells),
+        MEMBER(RaymarchUniforms, brick_columns), MEMBER(RaymarchUniforms, brick_rows)}},
+      {"raymarch atlas", {MEMBER(RaymarchUniforms, brick_columns), MEMBER(RaymarchUniforms, brick_rows)}},
       {"occupancy", {MEMBER(OccupancyPush, brick_cells)}},
+      {"occupancy atlas",
+       {MEMBER(OccupancyPush, grid_cells), MEMBER(OccupancyPush, brick_cells), MEMBER(OccupancyPush, bricks),
+        MEMBER(OccupancyPush, grid_columns), MEMBER(OccupancyPush, grid_rows), MEMBER(OccupancyPush, brick_columns),
+        MEMBER(OccupancyPush, brick_rows)}},
       {"height field",
        {MEMBER(HeightFieldUniforms, view_projection), MEMBER(HeightFieldUniforms, camera_position),
         MEMBER(HeightFieldUniforms, rest_depth), MEMBER(HeightFieldUniforms, vertical_scale),
@@ -184,6 +200,7 @@ TEST_CASE("the views' uniform and push-constant blocks have the same layout in C
 #undef MEMBER
   const std::map<std::string, std::span<const uint32_t>> modules{
       {"raymarch", liquid_shaders::raymarch_frag},           {"occupancy", liquid_shaders::occupancy_frag},
+      {"raymarch atlas", liquid_shaders::raymarch_frag_atlas}, {"occupancy atlas", liquid_shaders::occupancy_frag_atlas},
       {"height field", liquid_shaders::height_field_vert},   {"height field fragment", liquid_shaders::height_field_frag},
       {"2D view", liquid_shaders::view2d_frag},              {"2D particles", liquid_shaders::particles2d_vert}};
   for (const auto& [module, members] : expected) {

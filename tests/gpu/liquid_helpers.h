@@ -18,7 +18,7 @@ inline liquid::Scene shipped_scene(const std::string& name) {
 
 // Runs `steps` steps in frames of the scene's substeps; returns the last diagnostics.
 inline liquid::Diagnostics run_steps(liquid::LiquidNode& node, int steps) {
-  engine::vk::Context& context = gpu();
+  engine::vk::Context& context = node.context();
   engine::graph::RenderGraph graph(&context);
   engine::vk::CommandBuffer cmd(context);
   int done = 0;
@@ -32,6 +32,44 @@ inline liquid::Diagnostics run_steps(liquid::LiquidNode& node, int steps) {
     done += n;
   }
   return node.diagnose();
+}
+
+// What every run must keep: the particle count and mass, finite positions inside the domain and
+// outside every obstacle, and a bounded density.
+inline void require_conserved(liquid::LiquidNode& node, const liquid::Diagnostics& d, int expected_count) {
+  INFO("step " << d.step << ": active " << d.active_particles << ", outside " << d.outside_domain << ", inside obstacles "
+                << d.inside_obstacles << ", non-finite " << d.non_finite << ", max rho/rho0 " << d.max_density_ratio
+                << ", KE " << d.kinetic_energy << " J");
+  CHECK(d.active_particles == expected_count);
+  CHECK(d.mass == Approx(expected_count * double(node.setup().particle_mass)));
+  CHECK(d.non_finite == 0);
+  CHECK(d.outside_domain == 0);
+  CHECK(d.inside_obstacles == 0);
+  CHECK(d.max_density_ratio < 3.0f);
+}
+
+// The 3D paths as types, for TEMPLATE_TEST_CASE: each test runs once per path, on a context whose
+// device has only the feature that path needs (the atlas none), so the validation layer reports any
+// use of the others.
+struct GeometryPath {
+  static constexpr liquid::GridPath path = liquid::GridPath::GeometryShader;
+};
+struct VertexLayerPath {
+  static constexpr liquid::GridPath path = liquid::GridPath::VertexLayer;
+};
+struct AtlasPath {
+  static constexpr liquid::GridPath path = liquid::GridPath::Atlas;
+};
+
+inline engine::vk::Context& gpu_for(liquid::GridPath path) {
+  return gpu_with({.geometry_shader = path == liquid::GridPath::GeometryShader,
+                   .vertex_layer_output = path == liquid::GridPath::VertexLayer});
+}
+
+// Options that force `path` (the contexts above would also choose it unforced).
+inline liquid::LiquidOptions options_for(liquid::GridPath path, liquid::LiquidOptions options = {}) {
+  options.grid_path = path;
+  return options;
 }
 
 }  // namespace test

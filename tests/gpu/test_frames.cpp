@@ -31,7 +31,7 @@ struct Frame {
 
 // Runs `steps` steps in frames of at most the scene's substeps, then renders the last state.
 Frame step_and_render(liquid::LiquidNode& node, int steps, bool fxaa = true) {
-  engine::vk::Context& context = test::gpu();
+  engine::vk::Context& context = node.context();
   if (steps > 0) test::run_steps(node, steps);
   liquid::LiquidRenderer renderer(context, node, {.width = k_width, .height = k_height, .fxaa = fxaa});
   engine::graph::RenderGraph graph(&context);
@@ -75,14 +75,20 @@ double water_fraction(const Rgba8Image& image) {
 
 }  // namespace
 
-TEST_CASE("frame golden: 3D dam break, raymarched with FXAA", "[gpu][frames][raymarch]") {
-  engine::vk::Context& context = test::gpu();
+// The 3D goldens hold on every 3D path (liquid/grid_layout.h) with the same golden and tolerance:
+// the paths differ only in how a cell is addressed and, on the atlas, in interpolating between
+// slices by hand, which moves no pixel past k_frame_tolerance (the paths agree within
+// test_grid_paths.cpp's bounds).
+TEMPLATE_TEST_CASE("frame golden: 3D dam break, raymarched with FXAA", "[gpu][frames][raymarch][paths]", test::GeometryPath,
+                   test::VertexLayerPath, test::AtlasPath) {
+  engine::vk::Context& context = test::gpu_for(TestType::path);
   liquid::LiquidNode node(context, liquid::parse_scene(R"({
     "name": "frame golden 3D", "dimension": 3, "domain": [0.5, 0.3, 0.25], "grid_resolution": 32,
     "particle_spacing": 0.008, "density": 1000, "stiffness": 12, "time_step": 0.0005, "substeps": 20,
     "fluid_blocks": [ { "min": [0.0, 0.0, 0.0], "max": [0.16, 0.2, 0.25] } ],
     "camera": { "position": [0.25, 0.35, 0.8], "target": [0.25, 0.08, 0.12], "fov_y_degrees": 45 } })",
-                                                         "frame_golden_3d.json"));
+                                                         "frame_golden_3d.json"),
+                          test::options_for(TestType::path));
   const Frame frame = step_and_render(node, 60);
 
   // The liquid covers part of the frame and reads as water, and the raymarch wrote depth wherever
@@ -101,22 +107,24 @@ TEST_CASE("frame golden: 3D dam break, raymarched with FXAA", "[gpu][frames][ray
   // FXAA blends colour across the silhouette, where the depth is the raw one: allow a margin.
   CHECK(water_with_depth >= water_pixels * 8 / 10);
   check_golden(frame.color, "frame_dam_break_3d");
-  REQUIRE_NO_VALIDATION_MESSAGES();
+  REQUIRE_NO_VALIDATION_MESSAGES_ON(context);
 }
 
-TEST_CASE("frame golden: 3D sphere obstacle in the liquid, raymarched", "[gpu][frames][raymarch]") {
-  engine::vk::Context& context = test::gpu();
+TEMPLATE_TEST_CASE("frame golden: 3D sphere obstacle in the liquid, raymarched", "[gpu][frames][raymarch][paths]",
+                   test::GeometryPath, test::VertexLayerPath, test::AtlasPath) {
+  engine::vk::Context& context = test::gpu_for(TestType::path);
   liquid::LiquidNode node(context, liquid::parse_scene(R"({
     "name": "frame golden 3D obstacle", "dimension": 3, "domain": [0.4, 0.3, 0.3], "grid_resolution": 28,
     "particle_spacing": 0.009, "density": 1000, "stiffness": 12, "time_step": 0.0005, "substeps": 20,
     "fluid_blocks": [ { "min": [0.0, 0.0, 0.0], "max": [0.4, 0.08, 0.3] } ],
     "obstacles": [ { "shape": "sphere", "center": [0.2, 0.09, 0.15], "radius": 0.06 } ],
     "camera": { "position": [0.2, 0.4, 0.75], "target": [0.2, 0.06, 0.15], "fov_y_degrees": 45 } })",
-                                                         "frame_golden_3d_obstacle.json"));
+                                                         "frame_golden_3d_obstacle.json"),
+                          test::options_for(TestType::path));
   const Frame frame = step_and_render(node, 40);
   CHECK(water_fraction(frame.color) > 0.05);
   check_golden(frame.color, "frame_obstacle_3d");
-  REQUIRE_NO_VALIDATION_MESSAGES();
+  REQUIRE_NO_VALIDATION_MESSAGES_ON(context);
 }
 
 TEST_CASE("frame golden: 2D dam break with obstacles, 2D view with FXAA", "[gpu][frames][view2d]") {

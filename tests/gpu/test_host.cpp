@@ -184,11 +184,11 @@ TEST_CASE("a host's own device is adopted, not owned, and runs the node with zer
 
 TEST_CASE("a host device without a feature the library needs is refused, naming the feature", "[host]") {
   HostVulkan host(/*validation=*/false);
-  // The same physical device, created without geometry shaders.
+  // The same physical device, created without large points (which the splat needs).
   engine::vk::DeviceFeatures supported, enabled;
   supported.query(host.physical_device);
   engine::vk::enable_required(enabled, supported);
-  enabled.core.features.geometryShader = VK_FALSE;
+  enabled.core.features.largePoints = VK_FALSE;
   const float priority = 1.0f;
   VkDeviceQueueCreateInfo queue{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
   queue.queueFamilyIndex = host.queue_family;
@@ -205,7 +205,7 @@ TEST_CASE("a host device without a feature the library needs is refused, naming 
   engine::vk::HostDevice lacking = host.host_device();
   lacking.device = device;
   lacking.enabled_features = enabled.chain();
-  CHECK_THROWS_WITH(engine::vk::Context(lacking), Catch::Contains("geometryShader"));
+  CHECK_THROWS_WITH(engine::vk::Context(lacking), Catch::Contains("largePoints"));
   lacking.enabled_device_extensions.clear();
   CHECK_THROWS_WITH(engine::vk::Context(lacking), Catch::Contains("VK_KHR_push_descriptor"));
   vkDestroyDevice(device, nullptr);

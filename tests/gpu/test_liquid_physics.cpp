@@ -8,27 +8,11 @@
 #include <cmath>
 #include <numeric>
 
-namespace {
-
-void require_conserved(liquid::LiquidNode& node, const liquid::Diagnostics& d, int expected_count) {
-  INFO("step " << d.step << ": active " << d.active_particles << ", outside " << d.outside_domain << ", inside obstacles "
-                << d.inside_obstacles << ", non-finite " << d.non_finite << ", max rho/rho0 " << d.max_density_ratio
-                << ", KE " << d.kinetic_energy << " J");
-  CHECK(d.active_particles == expected_count);
-  CHECK(d.mass == Approx(expected_count * double(node.setup().particle_mass)));
-  CHECK(d.non_finite == 0);
-  CHECK(d.outside_domain == 0);
-  CHECK(d.inside_obstacles == 0);
-  CHECK(d.max_density_ratio < 3.0f);
-}
-
-}  // namespace
-
 TEST_CASE("2D dam break conserves particles and stays in the domain for 600 steps", "[gpu][liquid][physics]") {
   liquid::LiquidNode node(test::gpu(), test::shipped_scene("dam_break_2d"));
   const int count = node.active_particles();
   const liquid::Diagnostics d = test::run_steps(node, 600);
-  require_conserved(node, d, count);
+  test::require_conserved(node, d, count);
   // The column is collapsing (0.07 s in): the centre of mass moved right and down.
   const glm::vec3 start = [&] {
     glm::vec3 c(0.0f);
@@ -40,13 +24,6 @@ TEST_CASE("2D dam break conserves particles and stays in the domain for 600 step
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
-TEST_CASE("small 3D dam break conserves particles and stays in the domain for 500 steps", "[gpu][liquid][physics]") {
-  liquid::LiquidNode node(test::gpu(), test::shipped_scene("small_3d"));
-  const int count = node.active_particles();
-  const liquid::Diagnostics d = test::run_steps(node, 500);
-  require_conserved(node, d, count);
-  REQUIRE_NO_VALIDATION_MESSAGES();
-}
 
 TEST_CASE("an integer gamma (products) and a nearby non-integer one (pow) move the liquid alike", "[gpu][liquid][physics]") {
   // The grid shader computes (rho/rho0)^gamma by repeated products when gamma is an integer and by
@@ -57,7 +34,7 @@ TEST_CASE("an integer gamma (products) and a nearby non-integer one (pow) move t
     liquid::LiquidNode node(test::gpu(), scene);
     const int count = node.active_particles();
     const liquid::Diagnostics d = test::run_steps(node, 200);
-    require_conserved(node, d, count);
+    test::require_conserved(node, d, count);
     return d;
   };
   const liquid::Diagnostics products = run(5.0f);
@@ -72,7 +49,7 @@ TEST_CASE("an integer gamma (products) and a nearby non-integer one (pow) move t
 TEST_CASE("particles never end inside sphere, box or metaball obstacles", "[gpu][liquid][physics]") {
   liquid::LiquidNode node(test::gpu(), test::shipped_scene("obstacles_2d"));
   const int count = node.active_particles();
-  for (int i = 0; i < 5; ++i) require_conserved(node, test::run_steps(node, 100), count);
+  for (int i = 0; i < 5; ++i) test::require_conserved(node, test::run_steps(node, 100), count);
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
@@ -88,7 +65,7 @@ TEST_CASE("a host-driven moving obstacle pushes the liquid without letting it in
   test::run_steps(node, 100);
   node.set_obstacle_pose(0, {0.1f, 0.08f, 0.0f}, {1.5f, 0.0f, 0.0f});  // sweep right at 1.5 m/s
   const liquid::Diagnostics d = test::run_steps(node, 600);
-  require_conserved(node, d, count);
+  test::require_conserved(node, d, count);
   CHECK(node.obstacle_poses(node.time())[0].center.x > 0.2f);
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
@@ -98,7 +75,7 @@ TEST_CASE("a pool at rest stays at rest with a level surface", "[gpu][liquid][ph
   const int count = node.active_particles();
   test::run_steps(node, 2000);  // settle (0.33 s): the initial lattice compresses under gravity
   const liquid::Diagnostics d = test::run_steps(node, 200);
-  require_conserved(node, d, count);
+  test::require_conserved(node, d, count);
   // Kinetic energy bound: the mean particle speed below 2 cm/s.
   const double mean_speed_bound = 0.02;
   const double bound = 0.5 * d.mass * mean_speed_bound * mean_speed_bound;
@@ -177,7 +154,7 @@ TEST_CASE("an emitter adds particles on schedule up to its capacity", "[gpu][liq
   const liquid::Diagnostics end = test::run_steps(node, 1500);
   CHECK(end.active_particles == scheduled());
   CHECK(end.active_particles <= s.capacity);
-  require_conserved(node, end, end.active_particles);
+  test::require_conserved(node, end, end.active_particles);
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 

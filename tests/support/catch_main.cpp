@@ -9,7 +9,9 @@
 
 int main(int argc, char* argv[]) {
   const int failures = Catch::Session().run(argc, argv);
-  if (const uint32_t messages = test::total_validation_messages(); messages > 0) {
+  const uint32_t messages = test::total_validation_messages();
+  test::release_contexts();
+  if (messages > 0) {
     std::fprintf(stderr, "FAILED: %u validation message(s) during the run\n", messages);
     return 1;
   }

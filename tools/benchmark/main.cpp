@@ -8,6 +8,7 @@
 #include "tools/benchmark/report.h"
 #include "tools/benchmark/run.h"
 #include "tools/cli.h"
+#include "tools/grid_path_flag.h"
 
 #include "engine/io/atomic_file.h"
 #include "engine/vk/context.h"
@@ -53,7 +54,7 @@ int run(const Options& o, const std::string& command_line) {
   for (size_t i = 0; i < plan.size(); ++i) {
     results.push_back(run_configuration(context, plan[i], o));
     const Figures f = figures_of(results.back(), o.steps_per_frame);
-    std::printf("[%2zu/%zu] %-27s %9.2f ms/frame  (%5.1f s; %.0f s elapsed)\n", i + 1, plan.size(),
+    std::printf("[%2zu/%zu] %-34s %9.2f ms/frame  (%5.1f s; %.0f s elapsed)\n", i + 1, plan.size(),
                 plan[i].name.c_str(), f.frame.median, results.back().total_s, seconds_since(start));
     std::fflush(stdout);
   }
@@ -108,7 +109,14 @@ int main(int argc, char** argv) {
   app.add_flag("--no-scaling", o.no_scaling, "skip the scaling set")->excludes(scaling);
   app.add_flag("--list", o.list, "list the configurations (particles, grid, timed frames), run nothing");
   app.add_flag("--validation", o.validation, "enable the Vulkan validation layer (exit 1 on any message)");
+  std::vector<std::string> paths_3d;
+  app.add_option("--3d-path", paths_3d,
+                 "run each 3D configuration on these paths (geometry, vertex-layer, atlas; comma-separated or "
+                 "repeated), named .../<path>; default: once, on the device's best")
+      ->delimiter(',')
+      ->check(tools::grid_path_check());
   return tools::run_main(app, argc, argv, "liquid_benchmark", [&] {
+    for (const std::string& name : paths_3d) o.paths_3d.push_back(*liquid::find_grid_path(name));
     if (o.quick) {
       if (warmup->count() == 0) o.warmup = 1;
       if (runs->count() == 0) o.runs = 2;

@@ -91,8 +91,17 @@ std::vector<Configuration> paper_configurations(const Options& o) {
   std::vector<Configuration> out;
   for (const char* name : {"paper_2d_16k", "paper_2d_32k", "paper_2d_64k", "shallow_water", "paper_3d"}) {
     const liquid::Scene scene = load_named_scene(o, name);
-    for (Mode mode : {Mode::Simulation, Mode::SimulationAndRender})
-      out.push_back(make_configuration(std::string(name) + "/" + mode_name(mode), "paper", name, scene, mode, o.runs));
+    for (Mode mode : {Mode::Simulation, Mode::SimulationAndRender}) {
+      const std::string label = std::string(name) + "/" + mode_name(mode);
+      if (scene.dimension == 2 || o.paths_3d.empty()) {
+        out.push_back(make_configuration(label, "paper", name, scene, mode, o.runs));
+        continue;
+      }
+      for (liquid::GridPath path : o.paths_3d) {  // the path as a configuration axis
+        out.push_back(make_configuration(label + "/" + liquid::grid_path_name(path), "paper", name, scene, mode, o.runs));
+        out.back().grid_path = path;
+      }
+    }
   }
   return out;
 }

@@ -5,6 +5,7 @@
 
 #include "tools/benchmark/paper_figures.h"
 
+#include "liquid/grid_layout.h"
 #include "liquid/scene.h"
 
 #include <glm/glm.hpp>
@@ -33,6 +34,9 @@ struct Options {
   bool list = false;
   bool validation = false;
   std::vector<std::string> only;
+  // --3d-path: each 3D configuration once per path, named ".../<path>"; empty: once, on the
+  // device's choice.
+  std::vector<liquid::GridPath> paths_3d;
 };
 
 enum class Mode { Simulation, SimulationAndRender };
@@ -49,6 +53,7 @@ struct Configuration {
   std::optional<PaperFigure> paper;  // sim+render rows of the paper's scenes only
   int particles = 0;                 // active at the start (no configuration here emits)
   glm::ivec3 grid{1};
+  std::optional<liquid::GridPath> grid_path;  // 3D: the path forced by --3d-path
 };
 
 // "sim" or "sim+render", as in the configuration names and the JSON's "mode".

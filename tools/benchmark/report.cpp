@@ -13,7 +13,7 @@ using nlohmann::json;
 
 void list_plan(const std::vector<Configuration>& plan) {
   for (const Configuration& c : plan)
-    std::printf("%-27s %8d particles, grid %-10s %4d timed frames%s%s\n", c.name.c_str(), c.particles,
+    std::printf("%-34s %8d particles, grid %-10s %4d timed frames%s%s\n", c.name.c_str(), c.particles,
                 grid_label(c.grid).c_str(), c.timed_frames, c.note.empty() ? "" : "  -- ", c.note.c_str());
 }
 
@@ -31,12 +31,13 @@ std::string short_pass_name(const std::string& name) {
 
 void print_wall_table(const std::vector<Result>& results, const Options& o) {
   std::printf("\nWall time (recording to fence, one submission per frame, %d step(s) per frame)\n", o.steps_per_frame);
-  std::printf("%-27s %8s %10s | %8s %8s %8s | %8s %8s %8s | %8s %9s %7s %s\n", "configuration", "particles", "grid",
-              "frame ms", "min", "max", "step ms", "min", "max", "steps/s", "Mpart/s", "fps", "");
+  std::printf("%-34s %8s %10s %12s | %8s %8s %8s | %8s %8s %8s | %8s %9s %7s %s\n", "configuration", "particles",
+              "grid", "3D path", "frame ms", "min", "max", "step ms", "min", "max", "steps/s", "Mpart/s", "fps", "");
   for (const Result& r : results) {
     const Figures f = figures_of(r, o.steps_per_frame);
-    std::printf("%-27s %8d %10s | %8.2f %8.2f %8.2f | %8.2f %8.2f %8.2f | %8.2f %9.3f %7.2f %s\n",
-                r.config->name.c_str(), r.active_particles, grid_label(r.config->grid).c_str(), f.frame.median,
+    std::printf("%-34s %8d %10s %12s | %8.2f %8.2f %8.2f | %8.2f %8.2f %8.2f | %8.2f %9.3f %7.2f %s\n",
+                r.config->name.c_str(), r.active_particles, grid_label(r.config->grid).c_str(),
+                r.grid_path.empty() ? "-" : r.grid_path.c_str(), f.frame.median,
                 f.frame.min, f.frame.max, f.step.median, f.step.min, f.step.max, f.steps_per_second,
                 f.particles_per_second * 1e-6, f.fps, r.stability == "stable" ? "" : "UNSTABLE");
   }
@@ -51,7 +52,7 @@ void print_paper_table(const std::vector<Result>& results, const Options& o) {
   if (o.steps_per_frame != 1)
     std::printf("note: this run took %d steps per frame, so its fps do not compare with the paper's\n",
                 o.steps_per_frame);
-  std::printf("%-27s %9s %9s | %9s %9s | %9s %9s | %10s\n", "configuration", "ours fps", "ours ms", "paper fps",
+  std::printf("%-34s %9s %9s | %9s %9s | %9s %9s | %10s\n", "configuration", "ours fps", "ours ms", "paper fps",
               "paper ms", "SPH fps", "SPH ms", "ours/paper");
   for (const Result& r : results) {
     if (!r.config->paper) continue;
@@ -60,15 +61,16 @@ void print_paper_table(const std::vector<Result>& results, const Options& o) {
     const std::string sph_fps = p.sph_fps > 0 ? std::to_string(int(p.sph_fps)) : "-";
     char sph_ms[32] = "-";
     if (p.sph_fps > 0) std::snprintf(sph_ms, sizeof sph_ms, "%.2f", 1000.0 / p.sph_fps);
-    std::printf("%-27s %9.2f %9.2f | %9.0f %9.2f | %9s %9s | %10.4f\n", r.config->name.c_str(), f.fps,
+    std::printf("%-34s %9.2f %9.2f | %9.0f %9.2f | %9s %9s | %10.4f\n", r.config->name.c_str(), f.fps,
                 f.frame.median, p.fps, 1000.0 / p.fps, sph_fps.c_str(), sph_ms, f.fps / p.fps);
   }
 }
 
 // Pass columns in pipeline order: the solver's three passes, then the views, then FXAA.
 std::vector<std::string> pass_columns(const std::vector<Result>& results) {
-  const std::vector<std::string> order = {"liquid.splat",    "liquid.grid",   "liquid.particle",     "liquid.occupancy",
-                                          "liquid.raymarch", "liquid.view2d", "liquid.height_field", "fxaa"};
+  const std::vector<std::string> order = {"liquid.splat",     "liquid.pressure", "liquid.potential",
+                                          "liquid.grid",      "liquid.particle", "liquid.occupancy",
+                                          "liquid.raymarch",  "liquid.view2d",   "liquid.height_field", "fxaa"};
   std::vector<std::string> seen;
   for (const Result& r : results)
     for (const std::string& name : r.pass_order)
@@ -83,11 +85,11 @@ std::vector<std::string> pass_columns(const std::vector<Result>& results) {
 
 void print_pass_table(const std::vector<Result>& results) {
   const std::vector<std::string> columns = pass_columns(results);
-  std::printf("\nGPU time per pass (median ms per frame, from the graph's timestamps)\n%-27s", "configuration");
+  std::printf("\nGPU time per pass (median ms per frame, from the graph's timestamps)\n%-34s", "configuration");
   for (const std::string& name : columns) std::printf(" %12s", short_pass_name(name).c_str());
   std::printf(" %12s\n", "sum");
   for (const Result& r : results) {
-    std::printf("%-27s", r.config->name.c_str());
+    std::printf("%-34s", r.config->name.c_str());
     double sum = 0.0;
     for (const std::string& name : columns) {
       const auto it = r.pass_ms.find(name);
@@ -120,6 +122,7 @@ json result_json(const Result& r, const Options& o) {
             {"grid", {c.grid.x, c.grid.y, c.grid.z}},
             {"particles", r.active_particles},
             {"particle_spacing_m", c.scene.particle_spacing},
+            {"grid_path", r.grid_path.empty() ? json(nullptr) : json(r.grid_path)},
             {"steps_per_frame", o.steps_per_frame},
             {"warmup_frames", o.warmup},
             {"timed_frames", c.timed_frames},

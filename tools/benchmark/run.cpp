@@ -45,15 +45,19 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// The splat-adjoint pressure's two passes are the solver's too.
 bool is_solver_pass(const std::string& name) {
-  return name == "liquid.splat" || name == "liquid.grid" || name == "liquid.particle";
+  return name == "liquid.splat" || name == "liquid.pressure" || name == "liquid.potential" || name == "liquid.grid" ||
+         name == "liquid.particle";
 }
 
 // The node, its renderer and a frame loop, as a host engine would hold them.
 struct Bench {
   Bench(engine::vk::Context& context, const Configuration& c, const Options& o)
       : steps(o.steps_per_frame),
-        node(context, c.scene, liquid::LiquidOptions{.frames_in_flight = 1, .max_steps_per_frame = o.steps_per_frame}),
+        node(context, c.scene,
+             liquid::LiquidOptions{
+                 .frames_in_flight = 1, .max_steps_per_frame = o.steps_per_frame, .grid_path = c.grid_path}),
         loop(context) {
     if (c.mode == Mode::SimulationAndRender) {
       renderer = std::make_unique<liquid::LiquidRenderer>(
@@ -114,6 +118,7 @@ Result run_configuration(engine::vk::Context& context, const Configuration& c, c
   for (int i = 0; i < o.warmup; ++i) bench.frame();
   for (int i = 0; i < c.timed_frames; ++i) record_frame(r, bench.frame());
   r.active_particles = bench.node.active_particles();
+  if (bench.node.dimension() == 3) r.grid_path = liquid::grid_path_name(bench.node.grid_layout().path);
   r.stability = check_stability(bench.node);
   r.total_s = seconds_since(start);
   return r;

@@ -28,6 +28,7 @@ struct Result {
   std::map<std::string, std::vector<double>> pass_ms;  // GPU, per timed frame, summed over repeats
   std::vector<double> solver_gpu_ms, render_gpu_ms;     // per timed frame
   double setup_s = 0.0, total_s = 0.0;
+  std::string grid_path;             // 3D: the path the node ran on; empty in 2D
   std::string stability = "stable";  // else what went wrong
 };
 

@@ -1,5 +1,7 @@
 #include "tools/capture/options.h"
 
+#include "tools/grid_path_flag.h"
+
 #include "liquid/scene.h"
 #include "liquid/scene_override.h"
 #include "tools/cli.h"
@@ -58,6 +60,7 @@ void add_options(CLI::App& app, CaptureOptions& o) {
   app.add_flag("--overwrite", o.overwrite, "replace another capture's files in the output folder");
   app.add_flag("--dry-run", o.dry_run, "print the resolved scene, the frame plan and a time estimate; write nothing");
   app.add_flag("--validation", o.validation, "enable the Vulkan validation layer; any message fails the run");
+  tools::add_grid_path_option(app, o.grid_path);
 }
 
 fs::path resolve_scene(const std::string& name) {
@@ -146,7 +149,7 @@ RunSettings settle(const CaptureOptions& o, int max_steps_per_frame) {
 void check_resume_flags(const CLI::App& app) {
   for (const CLI::Option* option : app.get_options()) {
     const std::string name = option->get_name();
-    if (option->count() == 0 || name == "--resume" || name == "--validation") continue;
+    if (option->count() == 0 || name == "--resume" || name == "--validation" || name == "--3d-path") continue;
     throw UsageError("--resume continues the run recorded in its folder with the same settings; " +
                      (name == "scene" ? std::string("a scene") : name) + " cannot be given with it");
   }

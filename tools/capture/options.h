@@ -40,6 +40,7 @@ struct CaptureOptions {
   int checkpoint_every = 0;
   std::string resume, video;
   bool overwrite = false, dry_run = false, validation = false;
+  std::string grid_path;          // --3d-path; empty: the device's (not part of the run: paths agree)
 };
 
 void add_options(CLI::App& app, CaptureOptions& options);
@@ -67,7 +68,8 @@ struct RunSettings {
 // UsageError for a bad combination of flags and SceneError for a bad scene.
 RunSettings settle(const CaptureOptions& options, int max_steps_per_frame);
 
-// With --resume only --validation may be given; throws UsageError naming the first other flag.
+// With --resume only --validation and --3d-path may be given; throws UsageError naming the first
+// other flag.
 void check_resume_flags(const CLI::App& app);
 
 nlohmann::json to_json(const RunSettings& settings);

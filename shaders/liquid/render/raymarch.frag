@@ -14,8 +14,9 @@
 layout(std140, set = 0, binding = LIQUID_BINDING_VIEW_UNIFORMS) uniform RaymarchBlock {
   RaymarchUniforms r;
 };
-layout(set = 0, binding = LIQUID_BINDING_RAYMARCH_DENSITY) uniform sampler3D u_density;    // rho / rho0, linear filtering
-layout(set = 0, binding = LIQUID_BINDING_RAYMARCH_OCCUPANCY) uniform sampler3D u_occupancy;  // per-brick max, nearest
+// Both grids are 3D images, or 2D atlases of their slices on the atlas path (ATLAS=1, liquid/grid_layout.h).
+layout(set = 0, binding = LIQUID_BINDING_RAYMARCH_DENSITY) uniform GRID_SAMPLER u_density;    // rho / rho0, linear filtering
+layout(set = 0, binding = LIQUID_BINDING_RAYMARCH_OCCUPANCY) uniform GRID_SAMPLER u_occupancy;  // per-brick max, nearest
 
 // Composited into a host's frame (LiquidRenderer with HostTargets): no floor, sky or tank of our
 // own; the liquid is blended over the host's colour with its coverage in alpha, and pixels that
@@ -32,7 +33,22 @@ const float k_no_hit = 1e30;
 const int k_bisection_steps = 5;
 const vec3 k_absorption = vec3(6.0, 1.6, 0.9);  // 1/m: red is absorbed first, so depth reads blue-green
 
-float density_at(vec3 p) { return textureLod(u_density, p / u.domain, 0.0).r; }
+float density_at(vec3 p) {
+#if ATLAS
+  return atlas_sample_linear(u_density, p / u.domain, u.grid_cells, atlas_tiles()).r;
+#else
+  return textureLod(u_density, p / u.domain, 0.0).r;
+#endif
+}
+
+// The largest density of a brick (occupancy.frag).
+float brick_max_density(ivec3 brick) {
+#if ATLAS
+  return texelFetch(u_occupancy, atlas_texel(brick, r.bricks, ivec2(r.brick_columns, r.brick_rows)), 0).r;
+#else
+  return texelFetch(u_occupancy, brick, 0).r;
+#endif
+}
 
 vec2 intersect_box(vec3 origin, vec3 inv_dir, vec3 lo, vec3 hi) {
   vec3 t0 = (lo - origin) * inv_dir, t1 = (hi - origin) * inv_dir;
@@ -151,7 +167,7 @@ float march_liquid(vec3 origin, vec3 dir, float t_enter, float t_exit) {
   float previous_t = -1.0, previous_d = 0.0;
   for (int i = 0; i < 512; ++i) {
     float t_leave = min(min(t_max.x, t_max.y), min(t_max.z, t_exit));
-    if (texelFetch(u_occupancy, brick, 0).r > iso) {
+    if (brick_max_density(brick) > iso) {
       if (previous_t < 0.0 || previous_t < t - 1.5 * fine) {
         previous_t = t;
         previous_d = density_at(origin + dir * t);

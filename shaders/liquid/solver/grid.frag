@@ -1,5 +1,6 @@
 #version 450
-// Grid pass (section 4): one full-screen pass over the grid (one layer per slice in 3D).
+// Grid pass (section 4): one full-screen pass over the grid (one layer per slice in 3D, or the
+// whole atlas on the atlas path, grid_fragment.glsl).
 //   rho = density_scale * sum w                        (section 3, normalised to kg/m^3)
 //   u   = sum w u / sum w                              (the splatted velocity, kept for FLIP)
 //   P   = k ((rho + rho_obstacle) / rho0)^gamma        (section 2.1; obstacles, section 6)
@@ -15,6 +16,7 @@
 // Outputs: target 0 = (u', fluid flag), target 1 = rho / rho0 (for rendering and diagnostics).
 #extension GL_GOOGLE_include_directive : require
 #include "liquid/common.glsl"
+#include "liquid/solver/grid_fragment.glsl"
 #include "liquid/solver/pressure.glsl"
 
 layout(set = 0, binding = LIQUID_BINDING_GRID_SPLAT) uniform GRID_SAMPLER u_splat;
@@ -22,10 +24,6 @@ layout(set = 0, binding = LIQUID_BINDING_GRID_SPLAT) uniform GRID_SAMPLER u_spla
 layout(set = 0, binding = LIQUID_BINDING_GRID_POTENTIAL) uniform GRID_SAMPLER u_potential;
 #endif
 
-layout(location = 0) in vec2 v_uv;
-#if DIM == 3
-layout(location = 1) flat in int v_layer;
-#endif
 layout(location = 0) out vec4 out_velocity;
 layout(location = 1) out float out_density;
 
@@ -43,10 +41,12 @@ float pressure_at(ivec3 c, float coverage) {
 }
 
 void main() {
-  ivec3 c = ivec3(gl_FragCoord.xy, 0);
-#if DIM == 3
-  c.z = v_layer;
-#endif
+  ivec3 c;
+  if (!grid_fragment_cell(c)) {
+    out_velocity = vec4(0.0);
+    out_density = 0.0;
+    return;
+  }
   ivec3 n = grid_cells();
   float h = cell_size();
   float dt = u.dt;

@@ -11,23 +11,21 @@
 // Output: target 0 = Phi (m^2/s^2).
 #extension GL_GOOGLE_include_directive : require
 #include "liquid/common.glsl"
+#include "liquid/solver/grid_fragment.glsl"
 
 layout(set = 0, binding = LIQUID_BINDING_POTENTIAL_PRESSURE) uniform GRID_SAMPLER u_pressure;
 
-layout(location = 0) in vec2 v_uv;
-#if DIM == 3
-layout(location = 1) flat in int v_layer;
-#endif
 layout(location = 0) out float out_potential;
 
 // Index of the cell that mirrors i about the walls of an axis of n cells (-1 -> 0, n -> n - 1).
 int mirror_index(int i, int n) { return i < 0 ? -1 - i : (i >= n ? 2 * n - 1 - i : i); }
 
 void main() {
-  ivec3 c = ivec3(gl_FragCoord.xy, 0);
-#if DIM == 3
-  c.z = v_layer;
-#endif
+  ivec3 c;
+  if (!grid_fragment_cell(c)) {
+    out_potential = 0.0;
+    return;
+  }
   ivec3 n = grid_cells();
   float r = u.kernel_radius;
   float inv_r2 = 1.0 / (r * r);

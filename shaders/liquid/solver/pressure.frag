@@ -5,21 +5,19 @@
 // Output: target 0 = P (m^2/s^2).
 #extension GL_GOOGLE_include_directive : require
 #include "liquid/common.glsl"
+#include "liquid/solver/grid_fragment.glsl"
 #include "liquid/solver/pressure.glsl"
 
 layout(set = 0, binding = LIQUID_BINDING_PRESSURE_SPLAT) uniform GRID_SAMPLER u_splat;
 
-layout(location = 0) in vec2 v_uv;
-#if DIM == 3
-layout(location = 1) flat in int v_layer;
-#endif
 layout(location = 0) out float out_pressure;
 
 void main() {
-  ivec3 c = ivec3(gl_FragCoord.xy, 0);
-#if DIM == 3
-  c.z = v_layer;
-#endif
+  ivec3 c;
+  if (!grid_fragment_cell(c)) {
+    out_pressure = 0.0;
+    return;
+  }
   float rho = u.density_scale * fetch_grid(u_splat, c).a / cell_coverage(c);
   vec3 p = cell_center(c);
   rho += obstacle_density(p);

@@ -4,7 +4,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "liquid/common.glsl"
 
-layout(location = 0) flat in vec4 v_point;  // xy centre (cells), z 1 - dz^2/r^2, w 1/r^2: no uniform read here
+layout(location = 0) flat in vec4 v_point;  // xy centre (pixels), z 1 - dz^2/r^2, w 1/r^2: no uniform read here
 layout(location = 1) flat in vec3 v_velocity;
 layout(location = 0) out vec4 out_splat;
 
@@ -12,5 +12,12 @@ void main() {
   vec2 d = gl_FragCoord.xy - v_point.xy;
   float t = max(v_point.z - dot(d, d) * v_point.w, 0.0);
   float w = t * t * t;
+#if DIM == 3 && ATLAS
+  // A point near its tile's edge also covers the neighbouring tile, another slice: only the tile
+  // that holds the point's centre receives it (adding zero elsewhere; cheaper than a discard).
+  // Float division: lavapipe has no vector integer division, so an ivec2 one runs lane by lane.
+  vec2 cells = vec2(u.grid_cells.xy);
+  w = floor(gl_FragCoord.xy / cells) == floor(v_point.xy / cells) ? w : 0.0;
+#endif
   out_splat = vec4(w * v_velocity, w);
 }

@@ -1,9 +1,17 @@
 #version 450
 // Splat pass (section 3), vertex stage: one point per active particle, fetched from the particle
 // textures by gl_VertexIndex (no vertex buffer). In 3D each particle is drawn once per slice it
-// can touch (instance i = the i-th such slice) and routed to that slice with gl_Layer; the point size is
-// the kernel's chord in that slice, so the rasterizer visits exactly the cells within radius r.
-#if DIM == 3
+// can touch (instance i = the i-th such slice); the point size is the kernel's chord in that slice,
+// so the rasterizer visits exactly the cells within radius r. The point reaches its slice by the
+// path of liquid/grid_layout.h: gl_Layer written here (vertex-layer), a geometry shader given the
+// slice (GEOMETRY_LAYER=1, splat.geom), or the slice's tile of the atlas (ATLAS=1).
+#ifndef GEOMETRY_LAYER
+#define GEOMETRY_LAYER 0
+#endif
+#ifndef ATLAS
+#define ATLAS 0
+#endif
+#if DIM == 3 && !ATLAS && !GEOMETRY_LAYER
 #extension GL_ARB_shader_viewport_layer_array : require
 #endif
 #extension GL_GOOGLE_include_directive : require
@@ -13,9 +21,13 @@ layout(set = 0, binding = LIQUID_BINDING_SPLAT_POSITIONS) uniform sampler2D u_po
 layout(set = 0, binding = LIQUID_BINDING_SPLAT_VELOCITIES) uniform sampler2D u_velocities;
 
 // Two varyings, not more: lavapipe sets up every varying of every point.
-layout(location = 0) flat out vec4 v_point;     // xy particle in grid units (cells), z 1 - dz^2/r^2
-                                                // (dz: slice offset, 0 in 2D), w 1/r^2 (cells^-2)
+layout(location = 0) flat out vec4 v_point;     // xy particle in target pixels (cells; the atlas's
+                                                // texels there), z 1 - dz^2/r^2 (dz: slice offset,
+                                                // 0 in 2D), w 1/r^2 (cells^-2)
 layout(location = 1) flat out vec3 v_velocity;  // m/s
+#if GEOMETRY_LAYER
+layout(location = 2) flat out vec3 v_route;     // x the slice (-1: dropped), yz the chord in clip units
+#endif
 
 void main() {
   int width = u.particle_texture_width;
@@ -26,6 +38,8 @@ void main() {
   float r = u.kernel_radius;
   float chord = r;
   float dz2 = 0.0;
+  vec2 target = g.xy;                     // the point's centre in the target's pixels
+  vec2 target_size = vec2(u.grid_cells.xy);
 #if DIM == 3
   // Slices whose centre L + 0.5 lies within r of the particle: L in (g.z - r - 0.5, g.z + r - 0.5),
   // at most ceil(2 r) consecutive layers starting here (6 for r = 3).
@@ -35,14 +49,27 @@ void main() {
     gl_Position = vec4(-4.0, -4.0, 0.5, 1.0);  // outside the clip volume: the point is dropped
     gl_PointSize = 1.0;
     v_point = vec4(0.0);
+#if GEOMETRY_LAYER
+    v_route = vec3(-1.0, 0.0, 0.0);
+#endif
     return;
   }
+#if ATLAS
+  target += vec2(atlas_texel(ivec3(0, 0, layer), u.grid_cells, atlas_tiles()));
+  target_size *= vec2(atlas_tiles());
+#elif GEOMETRY_LAYER
+  v_route.x = float(layer);
+#else
   gl_Layer = layer;
+#endif
   dz2 = dz * dz;
   chord = sqrt(r * r - dz2);
 #endif
-  v_point = vec4(g.xy, 1.0 - dz2 / (r * r), 1.0 / (r * r));
-  gl_Position = vec4(g.xy / vec2(u.grid_cells.xy) * 2.0 - 1.0, 0.5, 1.0);
+  v_point = vec4(target, 1.0 - dz2 / (r * r), 1.0 / (r * r));
+  gl_Position = vec4(target / target_size * 2.0 - 1.0, 0.5, 1.0);
   // Pixel centres within `chord` of the particle on both axes are covered.
   gl_PointSize = 2.0 * chord;
+#if GEOMETRY_LAYER
+  v_route.yz = 2.0 * chord / target_size;
+#endif
 }
