@@ -11,6 +11,7 @@
 
 #include "tools/cli.h"
 #include "tools/frame_loop.h"
+#include "tools/grid_path_flag.h"
 
 #include <CLI/CLI.hpp>
 
@@ -37,6 +38,7 @@ struct Options {
   bool quick = false;
   std::vector<std::string> only;
   bool validation = false;
+  std::string grid_path;  // --3d-path: empty for the device's choice
 };
 
 // One sample per rendered frame of simulated time.
@@ -80,10 +82,13 @@ double spread(const std::vector<double>& heights) {
 
 // Runs a scene for `seconds` of simulated time, sampling every `sample_every` steps (default: a
 // frame, the scene's substeps).
-Run run_scene(engine::vk::Context& context, const liquid::Scene& scene, double seconds, int sample_every = 0) {
+Run run_scene(engine::vk::Context& context, const Options& o, const liquid::Scene& scene, double seconds,
+              int sample_every = 0) {
   Run run;
   run.name = scene.name;
-  liquid::LiquidNode node(context, scene);
+  liquid::LiquidOptions node_options;
+  node_options.grid_path = tools::grid_path_from_flag(o.grid_path);
+  liquid::LiquidNode node(context, scene, node_options);
   run.setup = node.setup();
   tools::FrameLoop loop(context);
   const auto start = std::chrono::steady_clock::now();
@@ -161,7 +166,7 @@ void rest_pool(engine::vk::Context& context, const Options& o, std::vector<Check
   const liquid::Scene scene = liquid::load_scene(o.scenes / "rest_pool_2d.json");
   const double seconds = o.quick ? 2.0 : 10.0;
   std::printf("rest pool (%s, %.0f s)...\n", scene.name.c_str(), seconds);
-  const Run run = run_scene(context, scene, seconds);
+  const Run run = run_scene(context, o, scene, seconds);
   const double pe0 = run.samples.front().potential;
   double worst_ratio = 0.0, early = 0.0, late = 0.0, worst_spread = 0.0;
   const double middle = 1.0 + 0.5 * (seconds - 1.0);
@@ -188,7 +193,7 @@ void energy(engine::vk::Context& context, const Options& o, std::vector<Check>& 
   const liquid::Scene scene = liquid::load_scene(o.scenes / "dam_break_2d.json");
   const double seconds = o.quick ? 3.0 : 10.0;
   std::printf("dam break (%s, %.0f s)...\n", scene.name.c_str(), seconds);
-  const Run run = run_scene(context, scene, seconds);
+  const Run run = run_scene(context, o, scene, seconds);
   const double pe0 = run.samples.front().potential;
   // First impact: the front reaches the far wall.
   double impact = seconds;
@@ -230,7 +235,7 @@ void column(engine::vk::Context& context, const Options& o, const std::string& f
     const liquid::Scene scene = column_at(base, spacing);
     std::printf("%s, %.3f s...\n", scene.name.c_str(), t_end);
     // A sample every 2.5 ms (T steps of 0.035): the front is interpolated between samples.
-    Run run = run_scene(context, scene, t_end, std::max(1, int(std::lround(0.0025 / scene.time_step))));
+    Run run = run_scene(context, o, scene, t_end, std::max(1, int(std::lround(0.0025 / scene.time_step))));
     std::vector<double> T{0.0}, Z{(base.fluid_blocks[0].max.x) / a};
     for (const Sample& s : run.samples) T.push_back(s.t * std::sqrt(2.0 * g / a)), Z.push_back(s.front / a);
     const liquid::FrontError e = liquid::compare_front(T, Z);
@@ -298,6 +303,7 @@ int main(int argc, char** argv) {
   app.add_option("--only", o.only, "rest_pool, energy or column (repeatable)")
       ->check(CLI::IsMember({"rest_pool", "energy", "column"}));
   app.add_flag("--validation", o.validation, "enable the Vulkan validation layer");
+  tools::add_grid_path_option(app, o.grid_path);
   return tools::run_main(app, argc, argv, "liquid_validate", [&] {
     o.scenes = scenes.empty() ? default_scenes() : fs::path(scenes);
     o.out = out;
