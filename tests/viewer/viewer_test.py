@@ -3,6 +3,7 @@
 checks what the node read back at exit (--report) against the same run without the input.
 
   viewer_test.py MODE --viewer PATH --with-xvfb PATH --scenes DIR --scripts DIR --out DIR [--compare PATH]
+                [--viewer-arg ARG ...]
 MODE: drag | obstacle | hit3d | resize | golden | bad_reload. Every run has --validation: any validation
 message makes the viewer exit non-zero and the test fail.
 """
@@ -21,7 +22,7 @@ def run(args, name, viewer_args, expect_success=True, before=None):
     report = os.path.join(args.out, name + ".json")
     if os.path.exists(report):
         os.remove(report)
-    command = [args.with_xvfb, args.viewer, *viewer_args, "--validation", "--report", report]
+    command = [args.with_xvfb, args.viewer, *viewer_args, *args.viewer_arg, "--validation", "--report", report]
     print("$", " ".join(command), flush=True)
     result = subprocess.run(command, capture_output=True, text=True, timeout=300)
     print(result.stdout, result.stderr, sep="", flush=True)
@@ -31,6 +32,9 @@ def run(args, name, viewer_args, expect_success=True, before=None):
         r = json.load(f)
     if r["validation_messages"] != 0:
         sys.exit(f"FAIL: {name}: {r['validation_messages']} validation message(s)")
+    forced = [a.split("=", 1)[1] for a in args.viewer_arg if a.startswith("--3d-path=")]
+    if forced and r.get("grid_path") != forced[0]:
+        sys.exit(f"FAIL: {name}: ran on the 3D path {r.get('grid_path')}, not the forced {forced[0]}")
     return r
 
 
@@ -152,6 +156,7 @@ def main():
     p.add_argument("--scripts", required=True)
     p.add_argument("--out", required=True)
     p.add_argument("--compare")
+    p.add_argument("--viewer-arg", action="append", default=[], help="passed to every viewer run (e.g. --3d-path=atlas)")
     args = p.parse_args()
     os.makedirs(args.out, exist_ok=True)
     globals()[args.mode](args)

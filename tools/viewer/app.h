@@ -3,11 +3,13 @@
 // the present pass into the swapchain image (RGBA8 -> the swapchain's format), the panel, present.
 #pragma once
 
+#include "liquid/grid_layout.h"
 #include "tools/viewer/controls.h"
 
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 namespace viewer {
 
@@ -24,6 +26,7 @@ struct ViewerOptions {
   bool panel = true;
   Pacing pacing = Pacing::FixedSteps;
   int steps_per_frame = 1;
+  std::optional<liquid::GridPath> grid_path;  // --3d-path; empty: LIQUID_3D_PATH or the device's best
 };
 
 class Viewer;

@@ -4,6 +4,7 @@
 //   liquid_viewer SCENE --script input.json --frames 60 --screenshot last.png --report state.json --validation
 // No display, a bad flag or a bad scene: one line on stderr and a non-zero exit.
 #include "tools/cli.h"
+#include "tools/grid_path_flag.h"
 #include "tools/viewer/app.h"
 #include "tools/viewer/script.h"
 
@@ -40,7 +41,10 @@ int main(int argc, char** argv) {
   app.add_flag("--unthrottled", o.unthrottled, "present with MAILBOX or IMMEDIATE instead of FIFO");
   app.add_flag("--no-panel", [&](int64_t) { o.panel = false; }, "start with the debug panel hidden");
   app.add_flag("--validation", o.validation, "enable the Vulkan validation layer (any message fails the run)");
+  std::string grid_path;
+  tools::add_grid_path_option(app, grid_path);
   return tools::run_main(app, argc, argv, "liquid_viewer", [&] {
+    o.grid_path = tools::grid_path_from_flag(grid_path);
     o.scenes_dir = scenes_dir();
     o.scene = scene.empty() ? o.scenes_dir / "dam_break_3d.json" : std::filesystem::path(scene);
     o.script = script;

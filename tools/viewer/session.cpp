@@ -9,8 +9,12 @@
 namespace viewer {
 
 Session::Session(engine::vk::Context& context, const std::filesystem::path& path, uint32_t frames_in_flight,
-                 int max_steps_per_frame)
-    : context_(context), path_(path), frames_in_flight_(frames_in_flight), max_steps_(max_steps_per_frame) {
+                 int max_steps_per_frame, std::optional<liquid::GridPath> grid_path)
+    : context_(context),
+      path_(path),
+      frames_in_flight_(frames_in_flight),
+      max_steps_(max_steps_per_frame),
+      grid_path_(grid_path) {
   stamp_ = stamp();
   create(liquid::load_scene(path));
 }
@@ -25,7 +29,9 @@ void Session::create(const liquid::Scene& scene) {
   // Build the new node and renderer first: if either throws, the running scene is untouched.
   auto node = std::make_unique<liquid::LiquidNode>(
       context_, scene,
-      liquid::LiquidOptions{.frames_in_flight = frames_in_flight_, .max_steps_per_frame = std::max(max_steps_, scene.substeps)});
+      liquid::LiquidOptions{.frames_in_flight = frames_in_flight_,
+                            .max_steps_per_frame = std::max(max_steps_, scene.substeps),
+                            .grid_path = grid_path_});
   auto renderer = std::make_unique<liquid::LiquidRenderer>(context_, *node, view_);
   renderer_.reset();
   node_ = std::move(node);

@@ -22,8 +22,9 @@ namespace viewer {
 class Session {
  public:
   // Throws (liquid::SceneError and others) when the scene cannot be loaded or run.
+  // `grid_path`: the 3D path to force (--3d-path), or empty for LIQUID_3D_PATH or the device's best.
   Session(engine::vk::Context& context, const std::filesystem::path& path, uint32_t frames_in_flight,
-          int max_steps_per_frame);
+          int max_steps_per_frame, std::optional<liquid::GridPath> grid_path = std::nullopt);
 
   const std::filesystem::path& path() const { return path_; }
   liquid::LiquidNode& node() { return *node_; }
@@ -59,6 +60,7 @@ class Session {
   std::filesystem::path path_;
   uint32_t frames_in_flight_;
   int max_steps_;
+  std::optional<liquid::GridPath> grid_path_;
   liquid::Scene scene_;
   std::unique_ptr<liquid::LiquidNode> node_;
   std::unique_ptr<liquid::LiquidRenderer> renderer_;

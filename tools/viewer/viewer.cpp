@@ -38,7 +38,8 @@ Viewer::Viewer(const ViewerOptions& options)
   settings_.panel = options.panel;
   settings_.pacing = options.pacing;
   settings_.steps_per_frame = std::clamp(options.steps_per_frame, 1, settings_.max_steps_per_frame);
-  session_ = std::make_unique<Session>(*context_, options.scene, k_frames_in_flight, settings_.max_steps_per_frame);
+  session_ = std::make_unique<Session>(*context_, options.scene, k_frames_in_flight, settings_.max_steps_per_frame,
+                                       options.grid_path);
   scenes_ = list_scenes(options.scenes_dir);
   if (!options.script.empty()) script_ = Script(options.script);
   uint32_t w = 0, h = 0;
@@ -137,7 +138,8 @@ void Viewer::perform(Action action) {
 void Viewer::open(const std::filesystem::path& scene) {
   wait_all();
   try {
-    auto next = std::make_unique<Session>(*context_, scene, k_frames_in_flight, settings_.max_steps_per_frame);
+    auto next = std::make_unique<Session>(*context_, scene, k_frames_in_flight, settings_.max_steps_per_frame,
+                                          options_.grid_path);
     session_.reset();
     session_ = std::move(next);
     stats_.scene_error.clear();
