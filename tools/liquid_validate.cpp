@@ -160,13 +160,18 @@ double relative_volume_drift(const Run& run, double from) {
   return worst;
 }
 
+// Loads `file` from the scenes folder and runs it for `seconds`, announced as `label`.
+Run run_shipped(engine::vk::Context& context, const Options& o, const char* file, const char* label, double seconds) {
+  const liquid::Scene scene = liquid::load_scene(o.scenes / file);
+  std::printf("%s (%s, %.0f s)...\n", label, scene.name.c_str(), seconds);
+  return run_scene(context, o, scene, seconds);
+}
+
 // The pool at rest: kinetic energy below 0.05 % of the potential energy from 1 s on and not
 // growing, the surface level within one cell, the volume within 1 %.
 void rest_pool(engine::vk::Context& context, const Options& o, std::vector<Check>& checks, std::vector<Run>& runs) {
-  const liquid::Scene scene = liquid::load_scene(o.scenes / "rest_pool_2d.json");
   const double seconds = o.quick ? 2.0 : 10.0;
-  std::printf("rest pool (%s, %.0f s)...\n", scene.name.c_str(), seconds);
-  const Run run = run_scene(context, o, scene, seconds);
+  const Run run = run_shipped(context, o, "rest_pool_2d.json", "rest pool", seconds);
   const double pe0 = run.samples.front().potential;
   double worst_ratio = 0.0, early = 0.0, late = 0.0, worst_spread = 0.0;
   const double middle = 1.0 + 0.5 * (seconds - 1.0);
@@ -190,10 +195,8 @@ void rest_pool(engine::vk::Context& context, const Options& o, std::vector<Check
 // A dam break with nothing but gravity and the walls: no 1 s window after the first impact gains
 // more than 1 % of the initial potential energy; the volume after settling.
 void energy(engine::vk::Context& context, const Options& o, std::vector<Check>& checks, std::vector<Run>& runs) {
-  const liquid::Scene scene = liquid::load_scene(o.scenes / "dam_break_2d.json");
   const double seconds = o.quick ? 3.0 : 10.0;
-  std::printf("dam break (%s, %.0f s)...\n", scene.name.c_str(), seconds);
-  const Run run = run_scene(context, o, scene, seconds);
+  const Run run = run_shipped(context, o, "dam_break_2d.json", "dam break", seconds);
   const double pe0 = run.samples.front().potential;
   // First impact: the front reaches the far wall.
   double impact = seconds;
