@@ -1,6 +1,9 @@
 #include "liquid/setup.h"
 
+#include "liquid/gpu_types.h"
+#include "liquid/kernel.h"
 #include "liquid/obstacles.h"
+#include "liquid/wall_coverage.h"
 
 #include <algorithm>
 #include <cmath>
@@ -36,12 +39,6 @@ std::string format_number(double value) {
 // "dam.json: fluid_blocks: ...": the file (the name for a scene built in code), then the field.
 [[noreturn]] void fail(const Scene& scene, const std::string& field, const std::string& reason) {
   throw SceneError((scene.source.empty() ? scene.name : scene.source) + ": " + field + ": " + reason);
-}
-
-// The chapter's kernel w(d, r) = (1 - d^2/r^2)^3 for d < r, from the squared distance.
-double kernel_weight(double distance_squared, double radius) {
-  const double q = 1.0 - distance_squared / (radius * radius);
-  return q > 0.0 ? q * q * q : 0.0;
 }
 
 // Particles per axis of a block's lattice (z = 1 in 2D).
@@ -121,6 +118,50 @@ bool inside_any_obstacle(const Scene& scene, glm::vec3 p, float band) {
   return false;
 }
 
+// Still water under the splat-adjoint pressure holds its weight by compression: the solver's
+// acceleration is -grad P + g, so at rest P = |g| d at depth d and the Tait form gives
+// rho / rho0 = (1 + |g| d / k)^(1 / gamma). A block resting on the wall gravity points into
+// (gravity along one axis) starts so compressed: the lattice point at uncompressed depth eta
+// below the block's top goes to the depth d(eta) that holds the same mass above it,
+//   eta(d) = integral_0^d (1 + g x / k)^(1/gamma) dx
+//          = (k / g) ((1 + g d / k)^(1 + 1/gamma) - 1) / (1 + 1/gamma),
+// inverted in closed form. Started uncompressed, a pool falls onto itself and rings for seconds.
+class HydrostaticStart {
+ public:
+  HydrostaticStart(const Scene& scene, const FluidBlock& block, glm::ivec3 counts, const SimulationSetup& setup) {
+    if (scene.pressure_force != PressureForce::SplatAdjoint || scene.mode != SimulationMode::Liquid) return;
+    int axis = -1;
+    for (int a = 0; a < scene.dimension; ++a)
+      if (scene.gravity[a] != 0.0f) axis = axis < 0 ? a : scene.dimension;  // more than one: none
+    if (axis < 0 || axis >= scene.dimension || scene.stiffness <= 0.0f) return;
+    const double s = scene.particle_spacing;
+    const bool down = scene.gravity[axis] < 0.0f;
+    const double bottom = down ? double(block.min[axis]) : double(block.min[axis]) + counts[axis] * s;
+    floor_ = down ? 0.0 : double(setup.domain[axis]);
+    if (std::abs(bottom - floor_) > s) return;  // not resting on that wall: falls freely
+    axis_ = axis;
+    top_ = down ? double(block.min[axis]) + counts[axis] * s : double(block.min[axis]);
+    g_over_k_ = std::abs(double(scene.gravity[axis])) / double(scene.stiffness);
+    exponent_ = 1.0 + 1.0 / double(scene.gamma);
+  }
+
+  // The point p of the uncompressed lattice, moved to its compressed height.
+  glm::dvec3 place(glm::dvec3 p) const {
+    if (axis_ < 0) return p;
+    const double height = std::abs(top_ - floor_), eta = std::abs(top_ - p[axis_]);
+    const double from_floor = depth(height) - depth(eta);
+    p[axis_] = floor_ + (top_ > floor_ ? from_floor : -from_floor);
+    return p;
+  }
+
+ private:
+  double depth(double eta) const {
+    return (std::pow(1.0 + exponent_ * g_over_k_ * eta, 1.0 / exponent_) - 1.0) / g_over_k_;
+  }
+  int axis_ = -1;
+  double floor_ = 0.0, top_ = 0.0, g_over_k_ = 0.0, exponent_ = 1.0;
+};
+
 // Fills one block's lattice: min + (i + 0.5) s per axis, no jitter, computed in double, leaving
 // out the points in or next to obstacles. A block whose extent is a whole number of spacings is
 // filled symmetrically, so mirrored blocks give mirrored particles. Fails if the lattice pokes out
@@ -136,14 +177,14 @@ void fill_block(const Scene& scene, size_t index, glm::ivec3 counts, SimulationS
                       ", outside the domain snapped to whole cells [0, " + format_number(setup.domain[a]) + "] m");
   }
   const glm::vec4 velocity(block.velocity.x, block.velocity.y, scene.dimension == 3 ? block.velocity.z : 0.0f, 0.0f);
+  const HydrostaticStart hydrostatic(scene, block, counts, setup);
   for (int k = 0; k < counts.z; ++k)
     for (int j = 0; j < counts.y; ++j)
       for (int i = 0; i < counts.x; ++i) {
-        const double x = double(block.min.x) + (i + 0.5) * s;
-        const double y = double(block.min.y) + (j + 0.5) * s;
-        const double z = scene.dimension == 3 ? double(block.min.z) + (k + 0.5) * s : 0.0;
-        if (inside_any_obstacle(scene, glm::vec3(float(x), float(y), float(z)), setup.obstacle_band)) continue;
-        setup.positions.emplace_back(float(x), float(y), float(z), 1.0f);
+        const glm::vec3 p(hydrostatic.place({double(block.min.x) + (i + 0.5) * s, double(block.min.y) + (j + 0.5) * s,
+                                             scene.dimension == 3 ? double(block.min.z) + (k + 0.5) * s : 0.0}));
+        if (inside_any_obstacle(scene, p, setup.obstacle_band)) continue;
+        setup.positions.emplace_back(p, 1.0f);
         setup.velocities.push_back(velocity);
       }
 }
@@ -286,6 +327,7 @@ SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
     setup.gravity = scene.gravity;  // z is 0 in 2D (the parser fills it so)
   }
   setup.wall_margin = scene.wall_margin_cells * setup.cell_size;
+  setup.wall_share_beyond = wall_share_beyond(scene, spacing / h, gpu::k_wall_table_size);
   return setup;
 }
 

@@ -23,23 +23,6 @@ int obstacle_kind_code(ObstacleShape shape) {
   return gpu::k_obstacle_sphere;
 }
 
-double kernel_mass_beyond_wall(int dimension, double radius_cells, double distance_cells) {
-  if (distance_cells >= radius_cells) return 0.0;
-  // A 16-interval midpoint rule: the discretisation the solver's wall correction was validated
-  // with. The converged integral shifts the correction by up to a few percent next to the walls and
-  // was measured to leave the resting pool (rest_pool_2d) eight times more agitated.
-  const double exponent = dimension == 3 ? 4.0 : 3.5;
-  constexpr int k_samples = 16;
-  double beyond = 0.0, total = 0.0;
-  for (int i = 0; i < k_samples; ++i) {
-    const double z = -radius_cells + (i + 0.5) * (2.0 * radius_cells / k_samples);
-    const double profile = std::pow(std::max(1.0 - z * z / (radius_cells * radius_cells), 0.0), exponent);
-    total += profile;
-    if (z > distance_cells) beyond += profile;
-  }
-  return beyond / total;
-}
-
 gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& setup, const StepInputs& step) {
   require_at_most(scene.obstacles.size(), gpu::k_max_obstacles, "obstacles");
   require_at_most(scene.ground.size(), gpu::k_max_ground_hills, "ground hills");
@@ -67,9 +50,8 @@ gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& set
   u.emission_count = int(step.emissions.size());
   u.rest_depth = setup.rest_depth;
   u.atlas_columns = u.atlas_rows = 1;  // one tile; the node sets an atlas's (LiquidNode::uniforms_for)
-  for (int k = 0; k < gpu::k_wall_table_size; ++k)
-    u.wall_kernel_beyond[k / 4][k % 4] =
-        float(kernel_mass_beyond_wall(setup.dimension, setup.kernel_radius_cells, double(k) + 0.5));
+  for (size_t k = 0; k < setup.wall_share_beyond.size() && k < size_t(gpu::k_wall_table_size); ++k)
+    u.wall_kernel_beyond[k / 4][k % 4] = setup.wall_share_beyond[k];
 
   int ball = 0;
   for (size_t i = 0; i < scene.obstacles.size(); ++i) {

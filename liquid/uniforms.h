@@ -37,11 +37,6 @@ struct StepInputs {
 // emitters than the uniform block holds (limits in shaders/liquid/shared.h).
 gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& setup, const StepInputs& step);
 
-// Fraction of the kernel w = (1 - d^2/r^2)^3's mass that lies more than `distance_cells` beyond a
-// plane: its profile across a plane is (1 - z^2/r^2)^(3 + (d - 1)/2). The grid pass divides the
-// splatted density by the share inside the domain, so walls do not read as low density.
-double kernel_mass_beyond_wall(int dimension, double radius_cells, double distance_cells);
-
 // Throws std::invalid_argument ("liquid: N what (at most limit)") when count exceeds limit.
 void require_at_most(size_t count, int limit, const char* what);
 

@@ -87,8 +87,11 @@ TEST_CASE("dam_break_2d gives the expected particles and grid", "[setup]") {
   CHECK(setup.gamma == scene.gamma);
   CHECK(setup.gravity == glm::vec3(0.0f, -9.81f, 0.0f));
 
+  // Half a spacing from the walls; the column rests on the floor, so it starts hydrostatically
+  // compressed and its first layer sits a little lower (see the hydrostatic start test).
   CHECK(setup.positions.front().x == Approx(0.00145f));
-  CHECK(setup.positions.front().y == Approx(0.00145f));
+  CHECK(setup.positions.front().y < 0.00145f);
+  CHECK(setup.positions.front().y > 0.00135f);
   for (size_t i = 0; i < setup.positions.size(); ++i) {
     const glm::vec4 p = setup.positions[i];
     INFO("particle " << i);
@@ -339,21 +342,62 @@ TEST_CASE("shipped scenes have the particle counts and grids they promise", "[se
   CHECK(count_near("jet_2d.json", 6000).initial_particles == 0);
 }
 
-TEST_CASE("shipped scenes start every particle inside the wall margin", "[setup]") {
-  // The solver clamps particles `wall_margin_cells` inside the walls; a particle starting closer
-  // would be jolted on the first step.
+TEST_CASE("shipped scenes start every particle inside the domain", "[setup]") {
+  // The solver keeps particles `wall_margin_cells` inside the walls, but one that starts closer
+  // (the lattice's first layer, half a spacing out) is only kept from moving further out.
   for (const auto& path : shipped_scenes()) {
     INFO(path.filename().string());
     const Scene scene = load_scene(path);
     const SimulationSetup setup = make_setup(scene, {});
-    const float margin = scene.wall_margin_cells * setup.cell_size;
-    CHECK(setup.wall_margin == margin);
+    CHECK(setup.wall_margin == scene.wall_margin_cells * setup.cell_size);
     for (const glm::vec4& p : setup.positions)
       for (int a = 0; a < setup.dimension; ++a) {
         INFO("axis " << a << " at " << p[a]);
-        REQUIRE(p[a] >= margin);
-        REQUIRE(p[a] <= setup.domain[a] - margin);
+        REQUIRE(p[a] > 0.0f);
+        REQUIRE(p[a] < setup.domain[a]);
       }
+  }
+}
+
+TEST_CASE("a block resting on the floor starts hydrostatically compressed", "[setup]") {
+  // Under the splat-adjoint pressure still water holds its weight with P = |g| d at depth d, so
+  // its density is rho0 (1 + |g| d / k)^(1 / gamma): the layers of a block on the floor are packed
+  // by that factor, the top layer least. A floating block (free fall) and the chapter's mode start
+  // on the uniform lattice.
+  Scene scene = scene_of("rest_pool_2d.json");
+  const double s = scene.particle_spacing, g = 9.81, k = scene.stiffness, gamma = scene.gamma;
+  auto layer_heights = [](const SimulationSetup& setup) {
+    std::set<float> heights;
+    for (const glm::vec4& p : setup.positions) heights.insert(p.y);
+    return std::vector<float>(heights.begin(), heights.end());
+  };
+  const std::vector<float> layers = layer_heights(make_setup(scene, {}));
+  const double top = (double(layers.size()) - 0.5) * s;  // the uncompressed top layer
+  REQUIRE(layers.size() > 20);
+  for (size_t j = 1; j + 1 < layers.size(); ++j) {
+    const double gap = (double(layers[j + 1]) - double(layers[j - 1])) / 2.0;
+    const double depth = layers.back() - double(layers[j]) + 0.5 * s;
+    INFO("layer " << j << " at " << layers[j] << " m, depth " << depth << " m");
+    CHECK(gap == Approx(s / std::pow(1.0 + g * depth / k, 1.0 / gamma)).epsilon(2e-3));
+  }
+  CHECK(layers.front() < 0.5 * s);
+  CHECK(layers.front() > 0.45 * s);
+  CHECK(layers.back() < top);
+
+  for (const bool floating : {true, false}) {
+    Scene uniform = scene;
+    if (floating) {
+      uniform.fluid_blocks[0].min.y += 0.1f;
+      uniform.fluid_blocks[0].max.y += 0.1f;
+    } else {
+      uniform.pressure_force = PressureForce::Chapter;
+    }
+    INFO((floating ? "floating" : "chapter"));
+    const std::vector<float> uniform_layers = layer_heights(make_setup(uniform, {}));
+    REQUIRE(uniform_layers.size() == layers.size());
+    const double bottom = floating ? 0.1 : 0.0;
+    for (size_t j = 0; j < uniform_layers.size(); ++j)
+      CHECK(uniform_layers[j] == Approx(bottom + (j + 0.5) * s).margin(1e-6));
   }
 }
 

@@ -146,10 +146,11 @@ TEST_CASE("RGBA16F against RGBA32F splats: density and particles after 200 steps
     double density;        // mean |rho16 - rho32| / mean rho32 over the grid
     double rms_cells;      // particle distance between the runs, RMS
   };
-  // Measured: dam_break_2d 3.1% (mean -2.7%: 16-bit sums read low), particles 0.16 cells RMS
-  // (0.40 at most); small_3d 13.5% (mean -8.4%; a 3D cell sums ~4 times as many kernels), 0.48
-  // cells RMS (0.96 at most).
-  for (const Bound& b : {Bound{"dam_break_2d", 0.06, 0.35}, Bound{"small_3d", 0.27, 1.0}}) {
+  // Measured: dam_break_2d 3.2% (mean -2.9%: 16-bit sums read low), particles 0.37 cells RMS
+  // (0.85 at most); small_3d 8.9% (mean -7.9%; a 3D cell sums ~4 times as many kernels), 0.32
+  // cells RMS (0.59 at most). (Before the blocks resting on the floor started hydrostatically
+  // compressed, their first 200 steps were mostly that compression: 0.16 and 0.48 cells RMS.)
+  for (const Bound& b : {Bound{"dam_break_2d", 0.06, 0.75}, Bound{"small_3d", 0.18, 0.65}}) {
     INFO(b.scene);
     std::vector<float> density[2];
     std::vector<glm::vec4> positions[2];

@@ -40,6 +40,12 @@ float pressure_at(ivec3 c, float coverage) {
   return pressure_from_density(rho);
 }
 
+#if SPLAT_ADJOINT
+// Phi at cell c; beyond a wall, the mirror cell's (fetch_grid clamps to it: one cell out is the
+// wall cell's image) plus the hydrostatic rise, as potential.frag gathers P.
+float potential_at(ivec3 c) { return fetch_grid(u_potential, c).r + wall_ghost_pressure_rise(c); }
+#endif
+
 void main() {
   ivec3 c;
   if (!grid_fragment_cell(c)) {
@@ -55,13 +61,13 @@ void main() {
   vec3 velocity = fluid ? splat.rgb / splat.a : vec3(0.0);
 
 #if SPLAT_ADJOINT
-  // Central differences of Phi; fetch_grid clamps at the walls, where Phi is mirror-symmetric.
+  // Central differences of Phi, with the hydrostatic ghost cells beyond the walls.
   vec3 grad_p;
-  grad_p.x = fetch_grid(u_potential, c + ivec3(1, 0, 0)).r - fetch_grid(u_potential, c - ivec3(1, 0, 0)).r;
-  grad_p.y = fetch_grid(u_potential, c + ivec3(0, 1, 0)).r - fetch_grid(u_potential, c - ivec3(0, 1, 0)).r;
+  grad_p.x = potential_at(c + ivec3(1, 0, 0)) - potential_at(c - ivec3(1, 0, 0));
+  grad_p.y = potential_at(c + ivec3(0, 1, 0)) - potential_at(c - ivec3(0, 1, 0));
   grad_p.z = 0.0;
 #if DIM == 3
-  grad_p.z = fetch_grid(u_potential, c + ivec3(0, 0, 1)).r - fetch_grid(u_potential, c - ivec3(0, 0, 1)).r;
+  grad_p.z = potential_at(c + ivec3(0, 0, 1)) - potential_at(c - ivec3(0, 0, 1));
 #endif
 #else
   // Wall coverage is a product over the axes, so each neighbour's is the centre's with one factor

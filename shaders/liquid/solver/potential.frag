@@ -7,7 +7,8 @@
 // the interpolation to the particle), so it does no work around a closed path; the chapter's
 // gradient of P does, and that work is what made resting water gain energy (docs/physics.md).
 // Beyond a wall the cells are the mirror images of those inside (the particles' mirror images,
-// which the coverage correction stands for in the density).
+// which the coverage correction stands for in the density), plus still water's hydrostatic rise
+// toward a wall gravity points into (wall_ghost_pressure_rise, common.glsl).
 // Output: target 0 = Phi (m^2/s^2).
 #extension GL_GOOGLE_include_directive : require
 #include "liquid/common.glsl"
@@ -34,19 +35,23 @@ void main() {
 #if DIM == 3
   for (int dz = -reach; dz <= reach; ++dz) {
     int z = mirror_index(c.z + dz, n.z);
+    float rise_z = wall_ghost_rise_along(2, c.z + dz);
 #else
   {
     const int dz = 0, z = 0;
+    const float rise_z = 0.0;
 #endif
     for (int dy = -reach; dy <= reach; ++dy) {
       int y = mirror_index(c.y + dy, n.y);
+      float rise_yz = rise_z + wall_ghost_rise_along(1, c.y + dy);
       // Loop bounds are the same for every fragment (a uniform trip count on lavapipe).
       int span = int(floor(sqrt(max(r * r - float(dy * dy + dz * dz), 0.0))));
       for (int dx = -span; dx <= span; ++dx) {
         float t = max(1.0 - float(dx * dx + dy * dy + dz * dz) * inv_r2, 0.0);
         float w = t * t * t;
         weights += w;
-        total += w * fetch_grid(u_pressure, ivec3(mirror_index(c.x + dx, n.x), y, z)).r;
+        float mirrored = fetch_grid(u_pressure, ivec3(mirror_index(c.x + dx, n.x), y, z)).r;
+        total += w * (mirrored + rise_yz + wall_ghost_rise_along(0, c.x + dx));
       }
     }
   }

@@ -1,0 +1,12 @@
+// The chapter's splat kernel on the CPU (section 3), for the setup's calibrations.
+#pragma once
+
+namespace liquid {
+
+// w(d, r) = (1 - d^2/r^2)^3 for d < r, from the squared distance.
+inline double kernel_weight(double distance_squared, double radius) {
+  const double q = 1.0 - distance_squared / (radius * radius);
+  return q > 0.0 ? q * q * q : 0.0;
+}
+
+}  // namespace liquid
