@@ -9,4 +9,8 @@ inline double kernel_weight(double distance_squared, double radius) {
   return q > 0.0 ? q * q * q : 0.0;
 }
 
+// Past this many lattice spacings per kernel radius a lattice sum of w equals the kernel's integral
+// to far better than float precision, so the setup's calibrations take the integral instead.
+constexpr double k_max_summed_lattice_ratio = 16.0;
+
 }  // namespace liquid

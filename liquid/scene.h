@@ -115,7 +115,7 @@ struct Scene {
   float pic_ratio = 0.05f;          // r in the PIC/FLIP blend
   float time_step = 0.002f;         // s, one simulation step
   int substeps = 8;                 // steps per rendered frame
-  float wall_margin_cells = 0.5f;   // particles are clamped this many cells inside the walls
+  float wall_margin_cells = 0.5f;   // particles are clamped this many cells inside the walls (or where they started)
   SplatFormat splat_format = SplatFormat::Auto;
   PressureForce pressure_force = PressureForce::Chapter;
   float rest_depth = 0.1f;          // m, shallow water: water height where rho = rho0

@@ -21,9 +21,6 @@ constexpr int k_min_grid_cells = 8;
 constexpr double k_lattice_epsilon = 1e-4;
 // Sub-cell offsets per axis averaged by the automatic rest density.
 constexpr int k_rest_density_offsets = 4;
-// Past this many lattice spacings per kernel radius the lattice sum equals the kernel integral to
-// far better than float precision, so the integral is used instead of a large sum.
-constexpr double k_max_summed_ratio = 16.0;
 // CPU memory guard: initial particles are held in two vec4 arrays (32 bytes each).
 constexpr std::int64_t k_max_initial_particles = std::int64_t(1) << 26;
 
@@ -155,8 +152,9 @@ class HydrostaticStart {
   }
 
  private:
+  // expm1 and log1p keep it exact where g eta / k is tiny (pow(1 + x, p) - 1 cancels to 0).
   double depth(double eta) const {
-    return (std::pow(1.0 + exponent_ * g_over_k_ * eta, 1.0 / exponent_) - 1.0) / g_over_k_;
+    return std::expm1(std::log1p(exponent_ * g_over_k_ * eta) / exponent_) / g_over_k_;
   }
   int axis_ = -1;
   double floor_ = 0.0, top_ = 0.0, g_over_k_ = 0.0, exponent_ = 1.0;
@@ -192,7 +190,7 @@ void fill_block(const Scene& scene, size_t index, glm::ivec3 counts, SimulationS
 // Average over sub-cell offsets of sum_p w(|x_p - x_cell| / h, r) for an infinite lattice of
 // spacing `spacing_cells` (in cells): the summed weight a cell sees inside uniform liquid.
 double lattice_weight_sum(int dimension, double spacing_cells, double radius_cells) {
-  if (radius_cells / spacing_cells > k_max_summed_ratio)
+  if (radius_cells / spacing_cells > k_max_summed_lattice_ratio)
     return kernel_integral_cells(dimension, radius_cells) / std::pow(spacing_cells, dimension);
   const int reach = int(std::ceil(radius_cells / spacing_cells)) + 1;
   const int offsets_z = dimension == 3 ? k_rest_density_offsets : 1;

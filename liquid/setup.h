@@ -41,7 +41,7 @@ struct SimulationSetup {
   float kernel_radius_cells = 3.0f;  // r, the splat radius in cells
   float pic_ratio = 0.05f;      // section 5.1's blend: 1 = PIC, 0 = FLIP
   bool splat_adjoint_pressure = false;  // the scene's pressure_force is splat_adjoint
-  float wall_margin = 0.0f;     // m, particles are kept this far from every wall
+  float wall_margin = 0.0f;     // m, particles are kept this far from every wall (or where they started, if closer)
   std::vector<float> wall_share_beyond;  // the kernel's share beyond a wall k + 0.5 cells away (wall_coverage.h)
   float obstacle_band = 0.0f;   // m, the obstacle density falls to zero this far outside (one kernel radius)
   float rest_depth = 0.0f;      // m, shallow water's depth at rest

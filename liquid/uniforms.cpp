@@ -50,7 +50,10 @@ gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& set
   u.emission_count = int(step.emissions.size());
   u.rest_depth = setup.rest_depth;
   u.atlas_columns = u.atlas_rows = 1;  // one tile; the node sets an atlas's (LiquidNode::uniforms_for)
-  for (size_t k = 0; k < setup.wall_share_beyond.size() && k < size_t(gpu::k_wall_table_size); ++k)
+  if (setup.wall_share_beyond.size() != size_t(gpu::k_wall_table_size))
+    throw std::invalid_argument("liquid: the setup's wall table has " + std::to_string(setup.wall_share_beyond.size()) +
+                                " entries, not " + std::to_string(gpu::k_wall_table_size) + " (make it with make_setup)");
+  for (size_t k = 0; k < setup.wall_share_beyond.size(); ++k)
     u.wall_kernel_beyond[k / 4][k % 4] = setup.wall_share_beyond[k];
 
   int ball = 0;

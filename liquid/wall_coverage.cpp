@@ -10,9 +10,6 @@ namespace {
 
 // Offsets along the wall averaged per tangential axis (as the automatic rest density's).
 constexpr int k_tangential_offsets = 4;
-// Past this many lattice spacings per kernel radius the lattice sum is the integral to far better
-// than float precision: the converged midpoint rule is used instead of a large sum.
-constexpr double k_max_summed_ratio = 16.0;
 constexpr int k_converged_samples = 4096;
 
 }  // namespace
@@ -32,7 +29,7 @@ double kernel_mass_beyond_wall(int dimension, double radius_cells, double distan
 
 double lattice_mass_beyond_wall(int dimension, double spacing_cells, double radius_cells, double distance_cells) {
   if (distance_cells >= radius_cells) return 0.0;
-  if (radius_cells / spacing_cells > k_max_summed_ratio)
+  if (radius_cells / spacing_cells > k_max_summed_lattice_ratio)
     return kernel_mass_beyond_wall(dimension, radius_cells, distance_cells, k_converged_samples);
   const int reach = int(std::ceil(radius_cells / spacing_cells)) + 1;
   const int normal_reach = int(std::ceil((distance_cells + radius_cells) / spacing_cells)) + 1;

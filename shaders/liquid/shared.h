@@ -112,7 +112,7 @@ LIQUID_STRUCT(SolverUniforms) {
   float density_scale;     // kg/m^3 per unit of summed kernel weight
   float kernel_radius;     // r, cells
   float pic_ratio;         // r of section 5.1's PIC/FLIP blend
-  float wall_margin;       // m, particles are kept this far from every wall
+  float wall_margin;       // m, particles are kept this far from every wall (or where they started)
   float obstacle_band;     // m, the artificial obstacle density falls to zero this far out
   int active_before;       // particles alive at the start of the step
   int active_after;        // after this step's emission

@@ -113,11 +113,13 @@ TEST_CASE("liquid that starts against a wall starts at rest", "[gpu][liquid][phy
         block.max.z -= block.min.z;
         block.min.z = 0.0f;
       }
+      // Measured 0.02627 in 2D (free fall 0.02627) and 0.0504 in 3D (0.0436); the converged
+      // integral's coverage instead of the lattice's left 0.036 and 0.10, the 16-interval rule 0.43.
       const float free_fall = 9.81f * scene.time_step * k_steps;
       const float fastest = max_speed_over_first_steps(scene);
       INFO(dimension << "D: fastest particle " << fastest << " m/s over " << k_steps << " steps; free fall "
                      << free_fall << " m/s (0.43 m/s in 2D before the fix)");
-      CHECK(fastest < free_fall + 0.05f);
+      CHECK(fastest < free_fall + (dimension == 2 ? 0.003f : 0.012f));
     }
   }
   SECTION("a pool across the floor stays still from the first step") {
@@ -131,14 +133,25 @@ TEST_CASE("liquid that starts against a wall starts at rest", "[gpu][liquid][phy
       block.min = glm::vec3(0.0f);
       block.max = glm::vec3(scene.domain.x, 0.4f * scene.domain.y, dimension == 3 ? scene.domain.z : 0.0f);
       block.max.y = std::round(block.max.y / scene.particle_spacing) * scene.particle_spacing;
-      // It starts hydrostatically compressed, so nothing is pushed: no particle outruns free fall
-      // by more than a fifth (the slowest to settle are the bottom corners, where the coverage
-      // is a product of the two walls' shares, 0.025 m/s in 2D against 0.026 of free fall).
+      // It starts hydrostatically compressed, so nothing is pushed and the pool as a whole does
+      // not fall onto itself: no particle outruns free fall by more than a fifth (the slowest to
+      // settle are the bottom corners, where the coverage is a product of the two walls' shares),
+      // and the RMS speed stays a small share of free fall (measured 0.13 of it in 2D, 0.24 in 3D;
+      // started uncompressed, all but the bottom few centimetres would still be falling freely:
+      // the pressure wave from the floor has covered c t = 2.3 cm of the 24 cm in 2D).
       const float free_fall = 9.81f * scene.time_step * k_steps;
-      const float fastest = max_speed_over_first_steps(scene);
-      INFO(dimension << "D: fastest particle " << fastest << " m/s over " << k_steps << " steps; free fall "
-                     << free_fall << " m/s");
+      liquid::LiquidNode node(test::gpu(), scene);
+      float fastest = 0.0f;
+      liquid::Diagnostics d;
+      for (int step = 0; step < k_steps; ++step) {
+        d = test::run_steps(node, 1);
+        fastest = std::max(fastest, d.max_speed);
+      }
+      const double rms = std::sqrt(2.0 * d.kinetic_energy / d.mass);
+      INFO(dimension << "D: fastest particle " << fastest << " m/s, RMS " << rms << " m/s over " << k_steps
+                     << " steps; free fall " << free_fall << " m/s");
       CHECK(fastest < 1.2f * free_fall);
+      CHECK(rms < 0.4 * free_fall);
     }
   }
   REQUIRE_NO_VALIDATION_MESSAGES();

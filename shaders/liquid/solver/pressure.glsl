@@ -5,8 +5,9 @@
 #define LIQUID_PRESSURE_GLSL
 
 // Fraction of the kernel's mass beyond a wall k + 0.5 cells from a cell centre (k >= 0), from the
-// table the CPU fills once per step (liquid/uniforms.cpp; r is at most LIQUID_MAX_KERNEL_RADIUS_CELLS). Selected with
-// comparisons, not an indexed read: an index that differs between fragments is a gather on lavapipe.
+// table the setup computes once (liquid/wall_coverage.h; r is at most LIQUID_MAX_KERNEL_RADIUS_CELLS).
+// Selected with comparisons, not an indexed read: an index that differs between fragments is a
+// gather on lavapipe.
 float kernel_mass_beyond(int k) {
   float beyond = 0.0;
   [[unroll]] for (int i = 0; i < LIQUID_WALL_TABLE_SIZE; ++i)
