@@ -3,9 +3,11 @@
 #include "engine/graph/transfer.h"
 #include "engine/vk/context.h"
 #include "liquid/specialization.h"
+#include "liquid/time_step.h"
 
 #include <glm/gtc/packing.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -78,6 +80,13 @@ LiquidNode::LiquidNode(engine::vk::Context& context, const Scene& scene, const L
   grid_uniforms_ = std::make_unique<engine::vk::UniformArena>(
       context, engine::vk::UniformArena::frame_bytes({sizeof(gpu::SolverUniforms)}), options.frames_in_flight + 1);
   energy_bound_ = kinetic_energy_bound(scene_, setup_, options.energy_bound_factor);
+  time_step_ = setup_.time_step;
+  if (scene_.adaptive_time_step) {  // the first steps: the initial velocities at rest density
+    Diagnostics initial;
+    initial.max_density_ratio = 1.0f;
+    for (const glm::vec4& v : setup_.velocities) initial.max_speed = std::max(initial.max_speed, glm::length(glm::vec3(v)));
+    adapt_time_step(initial);
+  }
   active_ = setup_.initial_particles;
   emitted_.assign(scene.emitters.size(), 0);
   pose_overrides_.resize(scene.obstacles.size());
@@ -167,7 +176,7 @@ LiquidImages LiquidNode::add_to(engine::graph::RenderGraph& graph, int steps) {
                    graph.import_image(s.density.name(), s.density)};
   PressureImages pressure = create_pressure_images(graph);
 
-  const float dt = setup_.time_step;
+  const float dt = float(time_step_);
   for (int k = 0; k < steps; ++k) {
     const double t1 = time_ + dt;
     StepInputs step;
@@ -212,6 +221,7 @@ LiquidNode::Checkpoint LiquidNode::save_checkpoint() {
   Checkpoint c;
   c.step = step_;
   c.time = time_;
+  c.time_step = time_step_;
   c.active = active_;
   c.emitted = emitted_;
   for (const auto& o : pose_overrides_)
@@ -235,6 +245,7 @@ void LiquidNode::restore_checkpoint(const Checkpoint& c) {
   engine::graph::upload_image(context_, state_->velocities[state_->current], std::as_bytes(std::span(c.velocities)));
   step_ = c.step;
   time_ = c.time;
+  time_step_ = c.time_step > 0.0 ? c.time_step : double(setup_.time_step);
   active_ = c.active;
   emitted_ = c.emitted;
   for (size_t i = 0; i < c.poses.size(); ++i) {
@@ -281,10 +292,24 @@ std::vector<glm::vec4> LiquidNode::read_grid_velocity() {
 Diagnostics LiquidNode::diagnose() { return diagnose(read_particles()); }
 
 Diagnostics LiquidNode::diagnose(const ParticleSnapshot& particles) {
-  const Diagnostics d =
+  Diagnostics d =
       compute_diagnostics(scene_, setup_, particles, read_density_ratio(), obstacle_poses(time_), step_, time_);
+  d.time_step = time_step_;  // the steps just run took it (adapt_time_step() comes after a diagnosis)
   check_stable(d, energy_bound_);
   return d;
+}
+
+double LiquidNode::adapt_time_step(const Diagnostics& d) {
+  if (scene_.adaptive_time_step)
+    time_step_ = cfl_time_step(setup_, *scene_.adaptive_time_step, d, double(setup_.time_step));
+  return time_step_;
+}
+
+void LiquidNode::set_time_step(double dt) {
+  if (!std::isfinite(dt) || dt <= 0.0 || dt > double(setup_.time_step))
+    throw std::invalid_argument("liquid: time step " + std::to_string(dt) + " s must be in (0, " +
+                                std::to_string(setup_.time_step) + "] s (the scene's time_step)");
+  time_step_ = dt;
 }
 
 }  // namespace liquid

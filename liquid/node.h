@@ -49,8 +49,19 @@ class LiquidNode {
   // Declares `steps` simulation steps on `graph` (the host then compiles and executes it).
   // Advances the host-side clock and particle count: the graph must be executed.
   LiquidImages add_to(engine::graph::RenderGraph& graph, int steps);
-  // The scene's steps per frame.
+  // The scene's steps per frame, and the most one add_to() takes (LiquidOptions::max_steps_per_frame).
   int substeps() const { return scene_.substeps; }
+  int max_steps_per_frame() const { return max_steps_per_frame_; }
+  // The length of the next steps (s): the scene's time_step, or with adaptive_time_step the last
+  // adapt_time_step()'s (at first, the CFL step of the initial velocities at rest density).
+  double time_step() const { return time_step_; }
+  // With the scene's adaptive_time_step: sizes the following steps by the CFL conditions for the
+  // state `d` describes (a diagnose() of the current state; liquid/time_step.h), at most the
+  // scene's time_step, and returns the step. Without it, returns the fixed step.
+  double adapt_time_step(const Diagnostics& d);
+  // Sets the following steps' length directly (a host fitting a whole number of steps into its
+  // frame). Throws std::invalid_argument unless 0 < dt <= the scene's time_step and finite.
+  void set_time_step(double dt);
 
   // External forces for the following steps (at most LIQUID_MAX_BRUSHES).
   void set_brushes(std::vector<ForceBrush> brushes) { brushes_ = std::move(brushes); }
@@ -107,6 +118,7 @@ class LiquidNode {
     };
     int step = 0;
     double time = 0.0;  // s
+    double time_step = 0.0;  // s, the next step's (0: the scene's)
     int active = 0;
     std::vector<int> emitted;      // per emitter
     std::vector<Pose> poses;       // per obstacle
@@ -153,6 +165,7 @@ class LiquidNode {
   int active_ = 0;
   int step_ = 0;
   double time_ = 0.0;
+  double time_step_ = 0.0;  // s, the next step's
   std::vector<int> emitted_;  // per emitter
   std::vector<ForceBrush> brushes_;
   struct PoseOverride {

@@ -139,6 +139,16 @@ Camera read_camera(const Reader& r, const Json& value, const std::string& path) 
   return camera;
 }
 
+AdaptiveTimeStep read_adaptive_time_step(const Reader& r, const Json& value, const std::string& path) {
+  r.check_keys(value, path, {"acoustic_cfl", "velocity_cfl"});
+  AdaptiveTimeStep a;
+  if (const Json* v = Reader::find(value, "acoustic_cfl"))
+    a.acoustic_cfl = float(r.number_in(*v, child(path, "acoustic_cfl"), 0.0, 1.0, true));
+  if (const Json* v = Reader::find(value, "velocity_cfl"))
+    a.velocity_cfl = float(r.number_in(*v, child(path, "velocity_cfl"), 0.0, 2.0, true));
+  return a;
+}
+
 // Reads an optional array member, each element with `read_one`; at most `max_count` elements.
 template <typename T, typename ReadOne>
 std::vector<T> read_array(const Reader& r, const Json& object, const char* key, int max_count, ReadOne read_one) {
@@ -209,6 +219,8 @@ void read_physics(const Reader& r, const Json& doc, Scene& scene) {
   if (const Json* v = Reader::find(doc, "pic_ratio")) scene.pic_ratio = float(r.number_in(*v, "pic_ratio", 0.0, 1.0));
   if (const Json* v = Reader::find(doc, "time_step")) scene.time_step = float(r.number_in(*v, "time_step", 1e-6, 0.1));
   if (const Json* v = Reader::find(doc, "substeps")) scene.substeps = r.integer_in(*v, "substeps", 1, 1000);
+  if (const Json* v = Reader::find(doc, "adaptive_time_step"))
+    scene.adaptive_time_step = read_adaptive_time_step(r, *v, "adaptive_time_step");
   if (const Json* v = Reader::find(doc, "wall_margin_cells"))
     scene.wall_margin_cells = float(r.number_in(*v, "wall_margin_cells", 0.0, 4.0));
   if (const Json* v = Reader::find(doc, "splat_format"))
@@ -254,6 +266,7 @@ Scene read_scene(const Json& doc, const std::string& source_name) {
   r.check_keys(doc, "",
                {"name", "dimension", "mode", "domain", "grid_resolution", "gravity", "particle_spacing", "density",
                 "rest_density", "stiffness", "gamma", "kernel_radius_cells", "pic_ratio", "time_step", "substeps",
+                "adaptive_time_step",
                 "wall_margin_cells", "splat_format", "pressure_force", "rest_depth", "fluid_blocks", "emitters", "obstacles", "ground",
                 "camera"});
   Scene scene;

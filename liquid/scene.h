@@ -96,6 +96,13 @@ struct Camera {
   float fov_y_degrees = 45.0f;
 };
 
+// CFL numbers of the adaptive step: dt = min(time_step, acoustic_cfl h / (c + |u|max),
+// velocity_cfl h / |u|max), with c the Tait form's speed of sound at the densest cell.
+struct AdaptiveTimeStep {
+  float acoustic_cfl = 0.16f;
+  float velocity_cfl = 0.4f;
+};
+
 struct Scene {
   std::string name;                 // file stem unless "name" is given
   // Where it was read from (the file, or parse_scene's source_name): the prefix of every error
@@ -113,7 +120,7 @@ struct Scene {
   float gamma = 5.0f;               // pressure exponent
   float kernel_radius_cells = 3.0f; // splat radius r, in grid cells
   float pic_ratio = 0.05f;          // r in the PIC/FLIP blend
-  float time_step = 0.002f;         // s, one simulation step
+  float time_step = 0.002f;         // s, one simulation step (with adaptive_time_step, the largest)
   int substeps = 8;                 // steps per rendered frame
   float wall_margin_cells = 0.5f;   // particles are clamped this many cells inside the walls (or where they started)
   SplatFormat splat_format = SplatFormat::Auto;
@@ -124,6 +131,9 @@ struct Scene {
   std::vector<Obstacle> obstacles;
   std::vector<GroundHill> ground;   // shallow water only
   std::optional<Camera> camera;     // 3D rendering; a default looks at the domain
+  // Steps sized from the state by CFL conditions (liquid/time_step.h); empty: every step is
+  // time_step (the chapter's fixed step).
+  std::optional<AdaptiveTimeStep> adaptive_time_step;
 };
 
 // Parses and validates a scene. `source_name` prefixes every error message.

@@ -225,11 +225,12 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
     for (int frame = first_frame; frame <= plan.end && !g_stop_signal; ++frame) {
       const bool written = frame >= plan.start;
       // Frame f is the state after f frames of steps: frame 0 takes none.
-      const capture::FrameResult result = capture::run_frame(loop, node, written ? &renderer : nullptr, camera,
-                                                             frame == 0 ? 0 : plan.steps_per_frame,
+      const int steps = frame == 0 ? 0 : capture::steps_for_frame(node, plan.steps_per_frame, plan.frame_seconds());
+      const capture::FrameResult result = capture::run_frame(loop, node, written ? &renderer : nullptr, camera, steps,
                                                              frame == 0 || settings.particles || settings.volumes);
       const liquid::ParticleSnapshot particles = node.read_particles();
       FrameStats row{frame, node.diagnose(particles), result.time.wall_ms, {}};  // throws on an unstable state
+      node.adapt_time_step(row.diagnostics);
       if (written) {
         for (const auto& t : result.time.passes) row.pass_ms[t.name] += t.milliseconds;
         writer.write(frame, node, particles, *result.image);
@@ -244,7 +245,7 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
                                  {frame, capture::fingerprint(record_text), node.save_checkpoint(), stats.text()});
         folder.wrote_output();
       }
-      progress.update(frame - first_frame + 1, plan.steps_per_frame / std::max(row.wall_ms * 1e-3, 1e-9), "steps");
+      progress.update(frame - first_frame + 1, steps / std::max(row.wall_ms * 1e-3, 1e-9), "steps");
     }
   } catch (const std::exception& error) {
     progress.interrupt();  // the error message starts on its own line

@@ -32,9 +32,9 @@ double median(std::vector<double> values) {
 }
 
 void print_diagnostics(const liquid::Diagnostics& d) {
-  std::printf("%7d %9.4f %9d %7d %8d %6d %9.3f %12.5g %12.5g %12.5g %9.3f\n", d.step, d.time, d.active_particles,
-              d.outside_domain, d.inside_obstacles, d.non_finite, d.max_density_ratio, d.kinetic_energy,
-              d.potential_energy, d.mechanical_energy, d.max_speed);
+  std::printf("%7d %9.4f %9d %7d %8d %6d %9.3f %12.5g %12.5g %12.5g %9.3f %10.4g\n", d.step, d.time,
+              d.active_particles, d.outside_domain, d.inside_obstacles, d.non_finite, d.max_density_ratio,
+              d.kinetic_energy, d.potential_energy, d.mechanical_energy, d.max_speed, d.time_step);
 }
 
 // Fails now, not after the whole run, when `path` cannot be written: it is a folder, or its
@@ -61,13 +61,14 @@ int run(const std::string& scene_path, int steps, int report_every, bool validat
   node_options.log = tools::stdout_log();
   liquid::LiquidNode node(context, scene, node_options);
   const auto& s = node.setup();
-  std::printf("scene %s: %dD, %d particles (capacity %d), grid %dx%dx%d, h = %.4g m, dt = %.3g s, k = %.4g, "
+  std::printf("scene %s: %dD, %d particles (capacity %d), grid %dx%dx%d, h = %.4g m, dt = %.3g s%s, k = %.4g, "
               "gamma = %.3g, rho0 = %.5g kg/m^3\n",
               scene.name.c_str(), s.dimension, s.initial_particles, s.capacity, s.grid_cells.x, s.grid_cells.y,
-              s.grid_cells.z, s.cell_size, scene.time_step, s.stiffness, s.gamma, s.rest_density);
+              s.grid_cells.z, s.cell_size, scene.time_step, scene.adaptive_time_step ? " (the largest; adaptive)" : "",
+              s.stiffness, s.gamma, s.rest_density);
   std::printf("device %s (%s)\n", context.device_name().c_str(), context.driver_description().c_str());
-  std::printf("%7s %9s %9s %7s %8s %6s %9s %12s %12s %12s %9s\n", "step", "time_s", "active", "outside", "inside_o",
-              "nan", "max_rho", "kinetic_J", "potential_J", "total_J", "max_v");
+  std::printf("%7s %9s %9s %7s %8s %6s %9s %12s %12s %12s %9s %10s\n", "step", "time_s", "active", "outside",
+              "inside_o", "nan", "max_rho", "kinetic_J", "potential_J", "total_J", "max_v", "dt_s");
   print_diagnostics(node.diagnose());
 
   tools::FrameLoop loop(context);
@@ -86,6 +87,7 @@ int run(const std::string& scene_path, int steps, int report_every, bool validat
     done += n;
     const liquid::Diagnostics d = node.diagnose();
     if (done == next_report) print_diagnostics(d);
+    node.adapt_time_step(d);  // the scene's adaptive_time_step: the next batch's step from this state
   }
   if (!dump_path.empty()) {
     const auto snapshot = node.read_particles();

@@ -3,6 +3,7 @@
 // no mechanical energy; the collapsing column's front follows Martin and Moyce (1952); and the
 // chapter's pressure gradient, the cause of the energy growth, does measurable work on still water.
 #include "liquid/node.h"
+#include "liquid/time_step.h"
 #include "liquid/validation.h"
 #include "tests/gpu/liquid_helpers.h"
 
@@ -153,5 +154,45 @@ TEST_CASE("the collapsing column's front follows Martin and Moyce and converges"
   CHECK(shipped.mean < 0.05);
   CHECK(shipped.max < 0.10);
   CHECK(shipped.mean < coarse.mean);
+  REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("adaptive steps keep stable a dam break whose fixed step explodes", "[gpu][liquid][physics][time_step]") {
+  // dam_break_2d with a step 32 times the shipped one (3.6 ms, an acoustic CFL of about 5): as a
+  // fixed step it explodes within 100 steps (0.36 s); with "adaptive_time_step" the same scene
+  // takes the CFL step after every batch (about 9e-5 s here, at most that 3.6 ms) and covers
+  // those 0.36 s intact, its clock the sum of the steps it took.
+  liquid::Scene scene = test::shipped_scene("dam_break_2d");
+  scene.time_step *= 32.0f;
+  const double covered = 100 * double(scene.time_step);
+  {
+    liquid::LiquidNode fixed(test::gpu(), scene);
+    CHECK_THROWS_AS(test::run_steps(fixed, 100), liquid::SimulationError);
+  }
+  scene.adaptive_time_step = liquid::AdaptiveTimeStep{};
+  liquid::LiquidNode node(test::gpu(), scene);
+  liquid::Diagnostics at_rest;
+  at_rest.max_density_ratio = 1.0f;  // the first batch: the CFL step of the liquid at rest
+  CHECK(node.time_step() ==
+        Approx(liquid::cfl_time_step(node.setup(), *scene.adaptive_time_step, at_rest, scene.time_step)));
+  liquid::Diagnostics d = node.diagnose();
+  double clock = 0.0, smallest = 1.0, largest = 0.0;
+  while (node.time() < covered) {
+    const double dt = node.adapt_time_step(d);
+    REQUIRE(dt == Approx(liquid::cfl_time_step(node.setup(), *scene.adaptive_time_step, d, scene.time_step)));
+    REQUIRE(dt <= scene.time_step);
+    smallest = std::min(smallest, dt);
+    largest = std::max(largest, dt);
+    const int steps = node.substeps();
+    d = test::run_steps(node, steps);  // throws SimulationError if the run blows up
+    clock += steps * double(float(dt));
+    REQUIRE(d.time_step == Approx(dt));
+  }
+  INFO("steps from " << smallest << " to " << largest << " s over " << node.time() << " s in " << node.step_count()
+                     << " steps; max rho/rho0 " << d.max_density_ratio);
+  CHECK(node.time() == Approx(clock).epsilon(1e-9));
+  CHECK(largest < 0.05 * scene.time_step);  // the acoustic bound, far below the scene's step
+  CHECK(smallest < largest);                // and it moves with the state
+  test::require_conserved(node, d, node.setup().initial_particles);
   REQUIRE_NO_VALIDATION_MESSAGES();
 }

@@ -101,11 +101,11 @@ def check_interrupt(sig):
         fail(f"summary.json: {summary['status']}, {summary['frames_written']} frames")
 
 
-def check_resume():
-    whole, cut = os.path.join(ARGS.work, "whole"), os.path.join(ARGS.work, "resumed")
+def check_resume(scene=None, label=""):
+    whole, cut = os.path.join(ARGS.work, "whole" + label), os.path.join(ARGS.work, "resumed" + label)
     for folder in (whole, cut):
         shutil.rmtree(folder, ignore_errors=True)
-    common = [ARGS.scene, "-s", "0", "-e", "24", "--export-particles"] + SMALL
+    common = [scene or ARGS.scene, "-s", "0", "-e", "24", "--export-particles"] + SMALL
     run(common + ["-o", whole])
     code, err = start_and_interrupt(common + ["-o", cut, "--checkpoint-every", "3"], 5, signal.SIGINT)
     if code != 130:
@@ -126,6 +126,34 @@ def check_resume():
     if [timing(r) for r in stats_rows(whole)] != [timing(r) for r in stats_rows(cut)]:
         fail("stats.csv diagnostics differ between the uninterrupted and the resumed run")
     print(f"resumed after an interrupt with {kept} frames written; 25 frames bit-identical")
+    return whole
+
+
+def check_adaptive():
+    """A scene with adaptive_time_step and a largest step 8 times the tiny scene's: every frame
+    still falls on its time (frame x frame_seconds), its steps are the CFL's (shorter than the
+    largest, so more of them per frame than the plan's), and a resumed run matches bit for bit."""
+    scene = json.load(open(ARGS.scene))
+    scene["time_step"] *= 8
+    scene["adaptive_time_step"] = {}
+    path = os.path.join(ARGS.work, "adaptive.json")
+    json.dump(scene, open(path, "w"))
+    out = check_resume(path, "_adaptive")
+    record = json.load(open(os.path.join(out, "capture.json")))
+    frame_seconds = record["frames"]["frame_seconds"]
+    largest = scene["time_step"]
+    rows = stats_rows(out)
+    for r in rows:
+        t, dt = float(r["time_s"]), float(r["time_step_s"])
+        if abs(t - int(r["frame"]) * frame_seconds) > 1e-6 * max(1.0, t):
+            fail(f"frame {r['frame']} at t = {t} s, not {int(r['frame']) * frame_seconds} s")
+        if int(r["frame"]) > 0 and not 0 < dt < largest:
+            fail(f"frame {r['frame']}: time step {dt} s, expected an adaptive one below {largest} s")
+    steps = [int(r["step"]) for r in rows]
+    per_frame = [b - a for a, b in zip(steps, steps[1:])]
+    if min(per_frame) <= record["frames"]["steps_per_frame"]:
+        fail(f"steps per frame {per_frame}: the CFL steps should be more than the plan's {record['frames']['steps_per_frame']}")
+    print(f"adaptive: {len(rows)} frames on their times, {min(per_frame)} to {max(per_frame)} steps each")
 
 
 def check_folders():
@@ -279,6 +307,6 @@ if __name__ == "__main__":
     os.makedirs(ARGS.work, exist_ok=True)
     checks = {"sigint": lambda: check_interrupt(signal.SIGINT), "sigterm": lambda: check_interrupt(signal.SIGTERM),
               "resume": check_resume, "dryrun": check_dry_run, "folders": check_folders, "range": check_range, "volume": check_volume,
-              "video": check_video}
+              "video": check_video, "adaptive": check_adaptive}
     checks[ARGS.check]()
     print("ok")

@@ -11,7 +11,8 @@
 namespace capture {
 namespace {
 
-constexpr char k_magic[8] = {'L', 'Q', 'C', 'K', 'P', 'T', '0', '1'};
+// 02: the node's next time step follows its clock (adaptive steps).
+constexpr char k_magic[8] = {'L', 'Q', 'C', 'K', 'P', 'T', '0', '2'};
 
 class Writer {
  public:
@@ -74,6 +75,7 @@ void save_checkpoint(const std::filesystem::path& path, const CaptureCheckpoint&
   w.put(int32_t(c.frame));
   w.put(int32_t(c.node.step));
   w.put(c.node.time);
+  w.put(c.node.time_step);
   w.put(int32_t(c.node.active));
   w.put_vector(c.node.emitted);
   w.put(uint64_t(c.node.poses.size()));
@@ -95,12 +97,16 @@ CaptureCheckpoint load_checkpoint(const std::filesystem::path& path) {
   Reader r(std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()), path.string());
   char magic[8];
   for (char& m : magic) m = r.get<char>();
+  if (std::memcmp(magic, k_magic, sizeof magic - 2) == 0 && std::memcmp(magic, k_magic, sizeof magic) != 0)
+    throw std::runtime_error(path.string() + ": a checkpoint of another format version (" + std::string(magic + 6, 2) +
+                             ", this build reads " + std::string(k_magic + 6, 2) + "); start the capture afresh");
   if (std::memcmp(magic, k_magic, sizeof magic) != 0) throw std::runtime_error(path.string() + ": not a checkpoint");
   CaptureCheckpoint c;
   c.settings_hash = r.get<uint64_t>();
   c.frame = r.get<int32_t>();
   c.node.step = r.get<int32_t>();
   c.node.time = r.get<double>();
+  c.node.time_step = r.get<double>();
   c.node.active = r.get<int32_t>();
   c.node.emitted = r.get_vector<int>();
   const uint64_t poses = r.get<uint64_t>();

@@ -170,6 +170,7 @@ void Viewer::refresh_diagnostics() {
   wait_all();
   try {
     stats_.diagnostics = session_->node().diagnose();
+    session_->node().adapt_time_step(*stats_.diagnostics);  // the scene's adaptive_time_step, if any
   } catch (const liquid::SimulationError& error) {
     stats_.simulation_error = std::string("unstable, paused: ") + error.what();
     settings_.paused = true;
