@@ -13,4 +13,8 @@ inline double kernel_weight(double distance_squared, double radius) {
 // to far better than float precision, so the setup's calibrations take the integral instead.
 constexpr double k_max_summed_lattice_ratio = 16.0;
 
+// Sub-cell offsets per axis a lattice is averaged over where the calibrations sum it (the automatic
+// rest density, the walls' coverage table).
+constexpr int k_lattice_offsets_per_axis = 4;
+
 }  // namespace liquid

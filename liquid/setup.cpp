@@ -19,8 +19,6 @@ constexpr int k_min_grid_cells = 8;
 // floor((max - min) / s + epsilon): a block whose extent is a whole number of spacings gets that
 // many particles even when the float division lands just below the integer.
 constexpr double k_lattice_epsilon = 1e-4;
-// Sub-cell offsets per axis averaged by the automatic rest density.
-constexpr int k_rest_density_offsets = 4;
 // CPU memory guard: initial particles are held in two vec4 arrays (32 bytes each).
 constexpr std::int64_t k_max_initial_particles = std::int64_t(1) << 26;
 
@@ -193,13 +191,13 @@ double lattice_weight_sum(int dimension, double spacing_cells, double radius_cel
   if (radius_cells / spacing_cells > k_max_summed_lattice_ratio)
     return kernel_integral_cells(dimension, radius_cells) / std::pow(spacing_cells, dimension);
   const int reach = int(std::ceil(radius_cells / spacing_cells)) + 1;
-  const int offsets_z = dimension == 3 ? k_rest_density_offsets : 1;
+  const int offsets_z = dimension == 3 ? k_lattice_offsets_per_axis : 1;
   double total = 0.0;
   int samples = 0;
   for (int oz = 0; oz < offsets_z; ++oz)
-    for (int oy = 0; oy < k_rest_density_offsets; ++oy)
-      for (int ox = 0; ox < k_rest_density_offsets; ++ox) {
-        const glm::dvec3 offset = (glm::dvec3(ox, oy, oz) + 0.5) / double(k_rest_density_offsets);
+    for (int oy = 0; oy < k_lattice_offsets_per_axis; ++oy)
+      for (int ox = 0; ox < k_lattice_offsets_per_axis; ++ox) {
+        const glm::dvec3 offset = (glm::dvec3(ox, oy, oz) + 0.5) / double(k_lattice_offsets_per_axis);
         const int kz_reach = dimension == 3 ? reach : 0;
         double sum = 0.0;
         for (int kz = -kz_reach; kz <= kz_reach; ++kz)

@@ -8,8 +8,6 @@
 namespace liquid {
 namespace {
 
-// Offsets along the wall averaged per tangential axis (as the automatic rest density's).
-constexpr int k_tangential_offsets = 4;
 constexpr int k_converged_samples = 4096;
 
 }  // namespace
@@ -33,15 +31,15 @@ double lattice_mass_beyond_wall(int dimension, double spacing_cells, double radi
     return kernel_mass_beyond_wall(dimension, radius_cells, distance_cells, k_converged_samples);
   const int reach = int(std::ceil(radius_cells / spacing_cells)) + 1;
   const int normal_reach = int(std::ceil((distance_cells + radius_cells) / spacing_cells)) + 1;
-  const int offsets_z = dimension == 3 ? k_tangential_offsets : 1;
+  const int offsets_z = dimension == 3 ? k_lattice_offsets_per_axis : 1;
   const int kz_reach = dimension == 3 ? reach : 0;
   double inside = 0.0, total = 0.0;
   for (int oz = 0; oz < offsets_z; ++oz)
-    for (int oy = 0; oy < k_tangential_offsets; ++oy)
+    for (int oy = 0; oy < k_lattice_offsets_per_axis; ++oy)
       for (int kz = -kz_reach; kz <= kz_reach; ++kz)
         for (int ky = -reach; ky <= reach; ++ky) {
-          const double dy = (ky + (oy + 0.5) / k_tangential_offsets) * spacing_cells;
-          const double dz = dimension == 3 ? (kz + (oz + 0.5) / k_tangential_offsets) * spacing_cells : 0.0;
+          const double dy = (ky + (oy + 0.5) / k_lattice_offsets_per_axis) * spacing_cells;
+          const double dz = dimension == 3 ? (kz + (oz + 0.5) / k_lattice_offsets_per_axis) * spacing_cells : 0.0;
           // Layers at (i + 0.5) s from the wall: i >= 0 inside, i < 0 the mirror image.
           for (int i = -normal_reach; i < normal_reach; ++i) {
             const double dx = (i + 0.5) * spacing_cells - distance_cells;

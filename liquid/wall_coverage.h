@@ -25,7 +25,7 @@ double lattice_mass_beyond_wall(int dimension, double spacing_cells, double radi
 // The chapter mode keeps the 16-interval rule it was validated with: it reads uniform liquid 7 %
 // dense in the wall cell, a soft layer that holds still water up but kicks liquid off a wall where
 // the wall meets a free surface. The splat-adjoint mode takes the lattice's own share and holds
-// still water with hydrostatic ghost cells instead (wall_ghost_pressure_rise in
+// still water with hydrostatic ghost cells instead (wall_ghost_rise_along in
 // shaders/liquid/common.glsl; docs/physics.md, "Start-up next to a wall").
 constexpr int k_wall_samples_chapter = 16;
 

@@ -92,19 +92,13 @@ vec4 fetch_grid(GRID_SAMPLER s, ivec3 c) {
 // stands for its mirror image inside, whose pressure it takes, plus the rise of still water's
 // pressure over the distance between the two, g.n d on a wall gravity points into. Mirroring alone
 // makes dP/dn = 0 at the wall, where still water needs dP/dn = g.n to hold its weight.
-// The rise is a sum over the axes; this is axis a's part for index i along it.
+// The rise is a sum over the axes; this is axis a's part for a cell at index i along it.
 float wall_ghost_rise_along(int a, int i) {
   int n = grid_cells()[a];
   float h = cell_size();
   if (i < 0) return max(-u.gravity[a], 0.0) * float(-2 * i - 1) * h;
   if (i >= n) return max(u.gravity[a], 0.0) * float(2 * (i - n) + 1) * h;
   return 0.0;
-}
-
-float wall_ghost_pressure_rise(ivec3 c) {
-  float rise = 0.0;
-  [[unroll]] for (int a = 0; a < DIM; ++a) rise += wall_ghost_rise_along(a, c[a]);
-  return rise;
 }
 
 // ---- Obstacles (section 6): analytic signed distances, negative inside -------------------------
@@ -210,10 +204,8 @@ vec3 external_acceleration(vec3 p) {
   return a;
 }
 
-// Keeps a position inside the domain, `margin` metres from every wall.
-vec3 clamp_to_domain(vec3 p) {
-  vec3 lo = vec3(u.wall_margin);
-  vec3 hi = u.domain - u.wall_margin;
+// Keeps a position inside the box [lo, hi] (z pinned to 0 in 2D).
+vec3 clamp_to_bounds(vec3 p, vec3 lo, vec3 hi) {
   p = clamp(p, lo, hi);
 #if DIM == 2
   p.z = 0.0;
@@ -221,18 +213,16 @@ vec3 clamp_to_domain(vec3 p) {
   return p;
 }
 
-// The same for a particle moving from `start`, which may already lie within the margin (the
-// initial lattice's first layer sits half a spacing from a wall): it may not move further toward
-// the wall, but is not snapped out to the margin either. Snapping a whole layer at once piled it
-// onto the next and kicked liquid off the walls at the free surface.
-vec3 clamp_to_domain_from(vec3 start, vec3 p) {
-  vec3 lo = min(vec3(u.wall_margin), start);
-  vec3 hi = max(u.domain - u.wall_margin, start);
-  p = clamp(p, lo, hi);
-#if DIM == 2
-  p.z = 0.0;
-#endif
-  return p;
+// Keeps a position inside the domain, `margin` metres from every wall.
+vec3 clamp_to_domain(vec3 p) { return clamp_to_bounds(p, vec3(u.wall_margin), u.domain - u.wall_margin); }
+
+// The box a particle moving from `start` is kept in: `wall_margin` inside the walls, or where it
+// started if that is closer (the initial lattice's first layer sits half a spacing from a wall). It
+// may not move further toward the wall, but is not snapped out to the margin either: snapping a
+// whole layer at once piled it onto the next and kicked liquid off the walls at the free surface.
+void domain_bounds_from(vec3 start, out vec3 lo, out vec3 hi) {
+  lo = min(vec3(u.wall_margin), start);
+  hi = max(u.domain - u.wall_margin, start);
 }
 
 #endif

@@ -41,9 +41,13 @@ float pressure_at(ivec3 c, float coverage) {
 }
 
 #if SPLAT_ADJOINT
-// Phi at cell c; beyond a wall, the mirror cell's (fetch_grid clamps to it: one cell out is the
-// wall cell's image) plus the hydrostatic rise, as potential.frag gathers P.
-float potential_at(ivec3 c) { return fetch_grid(u_potential, c).r + wall_ghost_pressure_rise(c); }
+// Phi at the neighbour `offset` (-1 or 1) cells from c along axis a; one cell beyond a wall, the
+// wall cell's (fetch_grid clamps to its mirror image) plus the hydrostatic rise, as potential.frag
+// gathers P. Only axis a can leave the grid, so only its part of the rise is taken.
+float potential_at(ivec3 c, int a, int offset) {
+  c[a] += offset;
+  return fetch_grid(u_potential, c).r + wall_ghost_rise_along(a, c[a]);
+}
 #endif
 
 void main() {
@@ -62,13 +66,8 @@ void main() {
 
 #if SPLAT_ADJOINT
   // Central differences of Phi, with the hydrostatic ghost cells beyond the walls.
-  vec3 grad_p;
-  grad_p.x = potential_at(c + ivec3(1, 0, 0)) - potential_at(c - ivec3(1, 0, 0));
-  grad_p.y = potential_at(c + ivec3(0, 1, 0)) - potential_at(c - ivec3(0, 1, 0));
-  grad_p.z = 0.0;
-#if DIM == 3
-  grad_p.z = potential_at(c + ivec3(0, 0, 1)) - potential_at(c - ivec3(0, 0, 1));
-#endif
+  vec3 grad_p = vec3(0.0);
+  [[unroll]] for (int a = 0; a < DIM; ++a) grad_p[a] = potential_at(c, a, 1) - potential_at(c, a, -1);
 #else
   // Wall coverage is a product over the axes, so each neighbour's is the centre's with one factor
   // swapped: 3 factors per axis instead of a full product per neighbour.

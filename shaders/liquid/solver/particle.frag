@@ -123,8 +123,10 @@ void main() {
   v = pic * u_new + (1.0 - pic) * (v + u_new - u_old);
 
   // Section 5.2: RK2 (midpoint) through the updated grid, clamped inside the domain at each stage.
-  vec3 x_mid = clamp_to_domain_from(x, x + 0.5 * dt * u_new);
-  vec3 x_new = clamp_to_domain_from(x, x + dt * grid_velocity(x_mid));
+  vec3 lo, hi;
+  domain_bounds_from(x, lo, hi);
+  vec3 x_mid = clamp_to_bounds(x + 0.5 * dt * u_new, lo, hi);
+  vec3 x_new = clamp_to_bounds(x + dt * grid_velocity(x_mid), lo, hi);
 
   // Obstacles: a particle that ended inside (or within half a cell of) an obstacle is moved back
   // to its surface and loses its velocity into it, relative to the obstacle.
@@ -134,13 +136,12 @@ void main() {
       float d = obstacle_distance(i, x_new);
       if (d >= skin) continue;
       vec3 normal = obstacle_normal(i, x_new);
-      x_new = clamp_to_domain_from(x, x_new + (skin - d) * normal);
+      x_new = clamp_to_bounds(x_new + (skin - d) * normal, lo, hi);
       float into = dot(v - u.obstacles[i].velocity, normal);
       if (into < 0.0) v -= into * normal;
     }
 
   // Walls: no velocity into a wall the particle was clamped against.
-  vec3 lo = min(vec3(u.wall_margin), x), hi = max(u.domain - u.wall_margin, x);
   for (int a = 0; a < DIM; ++a) {
     if (x_new[a] <= lo[a] && v[a] < 0.0) v[a] = 0.0;
     if (x_new[a] >= hi[a] && v[a] > 0.0) v[a] = 0.0;

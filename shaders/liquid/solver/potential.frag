@@ -8,7 +8,7 @@
 // gradient of P does, and that work is what made resting water gain energy (docs/physics.md).
 // Beyond a wall the cells are the mirror images of those inside (the particles' mirror images,
 // which the coverage correction stands for in the density), plus still water's hydrostatic rise
-// toward a wall gravity points into (wall_ghost_pressure_rise, common.glsl).
+// toward a wall gravity points into (wall_ghost_rise_along, common.glsl).
 // Output: target 0 = Phi (m^2/s^2).
 #extension GL_GOOGLE_include_directive : require
 #include "liquid/common.glsl"
