@@ -3,6 +3,7 @@
 #include "liquid/gpu_types.h"
 #include "liquid/scene.h"
 #include "liquid/scene_reader.h"
+#include "liquid/time_step.h"
 
 #include <array>
 #include <filesystem>
@@ -143,7 +144,7 @@ AdaptiveTimeStep read_adaptive_time_step(const Reader& r, const Json& value, con
   r.check_keys(value, path, {"acoustic_cfl", "velocity_cfl"});
   AdaptiveTimeStep a;
   if (const Json* v = Reader::find(value, "acoustic_cfl"))
-    a.acoustic_cfl = float(r.number_in(*v, child(path, "acoustic_cfl"), 0.0, 1.0, true));
+    a.acoustic_cfl = float(r.number_in(*v, child(path, "acoustic_cfl"), 0.0, k_max_acoustic_cfl, true));
   if (const Json* v = Reader::find(value, "velocity_cfl"))
     a.velocity_cfl = float(r.number_in(*v, child(path, "velocity_cfl"), 0.0, 2.0, true));
   return a;
@@ -217,6 +218,8 @@ void read_physics(const Reader& r, const Json& doc, Scene& scene) {
   if (const Json* v = Reader::find(doc, "kernel_radius_cells"))
     scene.kernel_radius_cells = float(r.number_in(*v, "kernel_radius_cells", 1.0, gpu::k_max_kernel_radius_cells));
   if (const Json* v = Reader::find(doc, "pic_ratio")) scene.pic_ratio = float(r.number_in(*v, "pic_ratio", 0.0, 1.0));
+  if (const Json* v = Reader::find(doc, "pic_ratio_reference_step"))
+    scene.pic_ratio_reference_step = float(r.number_in(*v, "pic_ratio_reference_step", 1e-6, 0.1));
   if (const Json* v = Reader::find(doc, "time_step")) scene.time_step = float(r.number_in(*v, "time_step", 1e-6, 0.1));
   if (const Json* v = Reader::find(doc, "substeps")) scene.substeps = r.integer_in(*v, "substeps", 1, 1000);
   if (const Json* v = Reader::find(doc, "adaptive_time_step"))
@@ -265,7 +268,7 @@ Scene read_scene(const Json& doc, const std::string& source_name) {
   if (!doc.is_object()) r.fail("(document)", std::string("must be a JSON object, got ") + doc.type_name());
   r.check_keys(doc, "",
                {"name", "dimension", "mode", "domain", "grid_resolution", "gravity", "particle_spacing", "density",
-                "rest_density", "stiffness", "gamma", "kernel_radius_cells", "pic_ratio", "time_step", "substeps",
+                "rest_density", "stiffness", "gamma", "kernel_radius_cells", "pic_ratio", "pic_ratio_reference_step", "time_step", "substeps",
                 "adaptive_time_step",
                 "wall_margin_cells", "splat_format", "pressure_force", "rest_depth", "fluid_blocks", "emitters", "obstacles", "ground",
                 "camera"});

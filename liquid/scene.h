@@ -120,6 +120,9 @@ struct Scene {
   float gamma = 5.0f;               // pressure exponent
   float kernel_radius_cells = 3.0f; // splat radius r, in grid cells
   float pic_ratio = 0.05f;          // r in the PIC/FLIP blend
+  // s; when set, pic_ratio is the blend over a step of this length and steps of other lengths
+  // blend at the same rate per second (liquid/pic_blend.h); empty: r per step, as the chapter.
+  std::optional<float> pic_ratio_reference_step;
   float time_step = 0.002f;         // s, one simulation step (with adaptive_time_step, the largest)
   int substeps = 8;                 // steps per rendered frame
   float wall_margin_cells = 0.5f;   // particles are clamped this many cells inside the walls (or where they started)

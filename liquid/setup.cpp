@@ -263,6 +263,7 @@ SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
   setup.particle_spacing = scene.particle_spacing;
   setup.kernel_radius_cells = scene.kernel_radius_cells;
   setup.pic_ratio = scene.pic_ratio;
+  setup.pic_ratio_reference_step = scene.pic_ratio_reference_step.value_or(0.0f);
   setup.splat_adjoint_pressure = scene.pressure_force == PressureForce::SplatAdjoint;
   setup.rest_depth = scene.rest_depth;
   const int d = scene.dimension;

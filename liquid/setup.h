@@ -40,6 +40,7 @@ struct SimulationSetup {
   glm::vec3 gravity{0.0f};      // m/s^2 (shallow water: zero in the plane)
   float kernel_radius_cells = 3.0f;  // r, the splat radius in cells
   float pic_ratio = 0.05f;      // section 5.1's blend: 1 = PIC, 0 = FLIP
+  float pic_ratio_reference_step = 0.0f;  // s, the step pic_ratio is given for; 0: per step (the chapter's)
   bool splat_adjoint_pressure = false;  // the scene's pressure_force is splat_adjoint
   float wall_margin = 0.0f;     // m, particles are kept this far from every wall (or where they started, if closer)
   std::vector<float> wall_share_beyond;  // the kernel's share beyond a wall k + 0.5 cells away (wall_coverage.h)

@@ -1,5 +1,7 @@
 #include "liquid/uniforms.h"
 
+#include "liquid/pic_blend.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -41,7 +43,7 @@ gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& set
   u.rest_density = setup.rest_density;
   u.density_scale = setup.density_scale;
   u.kernel_radius = setup.kernel_radius_cells;
-  u.pic_ratio = setup.pic_ratio;
+  u.pic_ratio = float(pic_blend_for_step(setup.pic_ratio, setup.pic_ratio_reference_step, step.dt));
   u.wall_margin = setup.wall_margin;
   u.obstacle_band = setup.obstacle_band;
   u.active_before = step.active_before;

@@ -90,6 +90,7 @@ FrontError compare_front(std::span<const double> T, std::span<const double> Z, d
     sum += relative;
     error.max = std::max(error.max, relative);
     ++error.points;
+    error.model.push_back(z);
   }
   if (error.points > 0) error.mean = sum / error.points;
   return error;

@@ -46,6 +46,7 @@ struct FrontError {
   double mean = 0.0;
   double max = 0.0;
   int points = 0;
+  std::vector<double> model;  // the front Z at each of those points, in the experiment's order
 };
 FrontError compare_front(std::span<const double> T, std::span<const double> Z, double t_min = 0.8,
                          double t_max = 3.35);

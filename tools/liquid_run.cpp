@@ -13,13 +13,16 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
-#include <system_error>
+#include <limits>
 #include <map>
+#include <system_error>
 #include <vector>
 
 namespace {
@@ -51,8 +54,8 @@ void check_output_file(const std::filesystem::path& path) {
   std::filesystem::remove(probe, ignored);
 }
 
-int run(const std::string& scene_path, int steps, int report_every, bool validation, const std::string& dump_path,
-        const std::string& grid_path) {
+int run(const std::string& scene_path, int steps, double seconds, int report_every, bool validation,
+        const std::string& dump_path, const std::string& grid_path) {
   const liquid::Scene scene = liquid::load_scene(scene_path);
   if (!dump_path.empty()) check_output_file(dump_path);
   engine::vk::Context context(engine::vk::ContextOptions{.validation = validation});
@@ -77,18 +80,32 @@ int run(const std::string& scene_path, int steps, int report_every, bool validat
   // One submission per batch of at most the scene's substeps, cut so that batches end on every
   // multiple of report_every (the reports fall on the steps asked for). The state is checked after
   // every batch, whatever the report interval: diagnose() throws at the first unstable batch.
+  // With --seconds the run ends at that simulated time (the last batch cut to reach it) instead.
+  if (seconds > 0.0) steps = std::numeric_limits<int>::max();
   int done = 0;
-  while (done < steps) {
-    const int next_report = std::min(steps, (done / report_every + 1) * report_every);
-    const int n = std::min(node.substeps(), next_report - done);
+  auto steps_to_end = [&] {
+    if (seconds <= 0.0) return steps - done;
+    return std::max(1, int(std::ceil((seconds - node.time()) / node.time_step() - 1e-6)));
+  };
+  const auto start = std::chrono::steady_clock::now();
+  liquid::Diagnostics last;
+  bool last_printed = true;
+  while (done < steps && (seconds <= 0.0 || node.time() < seconds - 1e-9)) {
+    const int next_report = int(std::min<long long>(steps, (done / report_every + 1LL) * report_every));
+    const int n = std::min({node.substeps(), next_report - done, steps_to_end()});
     const tools::FrameTime frame = loop.run([&](engine::graph::RenderGraph& graph) { node.add_to(graph, n); });
     step_ms.push_back(frame.wall_ms / n);
     for (const auto& t : frame.passes) pass_ms[t.name].push_back(t.milliseconds);
     done += n;
     const liquid::Diagnostics d = node.diagnose();
-    if (done == next_report) print_diagnostics(d);
+    last_printed = done == next_report;
+    if (last_printed) print_diagnostics(d);
+    last = d;
     node.adapt_time_step(d);  // the scene's adaptive_time_step: the next batch's step from this state
   }
+  // Every batch with its diagnosis, as a user's run spends it; setup and pipeline creation excluded.
+  const double run_wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!last_printed) print_diagnostics(last);
   if (!dump_path.empty()) {
     const auto snapshot = node.read_particles();
     std::string csv = "x,y,z,vx,vy,vz\n";
@@ -103,6 +120,8 @@ int run(const std::string& scene_path, int steps, int report_every, bool validat
   std::printf("median GPU time per pass (ms):");
   for (const auto& [name, values] : pass_ms) std::printf("  %s %.3f", name.c_str(), median(values));
   std::printf("\nmedian wall time per step: %.3f ms\n", median(step_ms));
+  std::printf("wall time of the steps: %.3f s for %.5g simulated s in %d steps: %.4g s per simulated second\n",
+              run_wall_s, node.time(), done, node.time() > 0.0 ? run_wall_s / node.time() : 0.0);
   tools::fail_on_validation_messages(context.validation_message_count());
   return 0;
 }
@@ -113,15 +132,19 @@ int main(int argc, char** argv) {
   CLI::App app{"Runs a liquid scene headless and prints diagnostics and per-pass GPU times"};
   std::string scene;
   int steps = 200, report_every = 50;
+  double seconds = 0.0;
   bool validation = false;
   std::string dump_path, grid_path;
   tools::add_grid_path_option(app, grid_path);
   app.add_option("--dump-particles", dump_path, "write the final particles as CSV");
   app.add_option("scene", scene, "scene JSON file")->required();
   app.add_option("-n,--steps", steps, "simulation steps")->check(tools::integer_range(1, 10000000));
+  app.add_option("-s,--seconds", seconds, "run to this simulated time instead of a step count (s)")
+      ->check(CLI::Range(1e-6, 1e6))
+      ->excludes("--steps");
   app.add_option("-r,--report-every", report_every, "steps between diagnostics lines (the state is checked every batch)")
       ->check(tools::integer_range(1, 1000000));
   app.add_flag("--validation", validation, "enable the Vulkan validation layer");
   return tools::run_main(app, argc, argv, "liquid_run",
-                         [&] { return run(scene, steps, report_every, validation, dump_path, grid_path); });
+                         [&] { return run(scene, steps, seconds, report_every, validation, dump_path, grid_path); });
 }

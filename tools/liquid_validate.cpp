@@ -7,6 +7,7 @@
 #include "engine/vk/context.h"
 #include "liquid/node.h"
 #include "liquid/scene.h"
+#include "liquid/scene_override.h"
 #include "liquid/validation.h"
 
 #include "tools/cli.h"
@@ -39,7 +40,16 @@ struct Options {
   std::vector<std::string> only;
   bool validation = false;
   std::string grid_path;  // --3d-path: empty for the device's choice
+  std::vector<liquid::SceneOverride> overrides;  // --set, applied to every scene
+  std::vector<double> column_2d_spacings, column_3d_spacings;  // empty: the defaults
 };
+
+// A scene of the scenes folder with the --set overrides applied.
+liquid::Scene load(const Options& o, const char* file) {
+  const fs::path path = o.scenes / file;
+  if (o.overrides.empty()) return liquid::load_scene(path);
+  return liquid::parse_scene(liquid::scene_document(path, o.overrides), path.string());
+}
 
 // One sample per rendered frame of simulated time.
 struct Sample {
@@ -162,7 +172,7 @@ double relative_volume_drift(const Run& run, double from) {
 
 // Loads `file` from the scenes folder and runs it for `seconds`, announced as `label`.
 Run run_shipped(engine::vk::Context& context, const Options& o, const char* file, const char* label, double seconds) {
-  const liquid::Scene scene = liquid::load_scene(o.scenes / file);
+  const liquid::Scene scene = load(o, file);
   std::printf("%s (%s, %.0f s)...\n", label, scene.name.c_str(), seconds);
   return run_scene(context, o, scene, seconds);
 }
@@ -222,14 +232,23 @@ liquid::Scene column_at(const liquid::Scene& base, double spacing) {
   s.particle_spacing = float(spacing);
   s.grid_resolution = int(std::lround(*base.grid_resolution / scale));
   s.time_step = float(base.time_step * scale);
+  if (base.pic_ratio_reference_step) s.pic_ratio_reference_step = float(*base.pic_ratio_reference_step * scale);
   s.substeps = int(std::lround(base.substeps / scale));
   s.name = base.name + " (spacing " + tools::format_cli_number(spacing) + " m)";
   return s;
 }
 
-void column(engine::vk::Context& context, const Options& o, const std::string& file, std::vector<double> spacings,
+// Mean |a - b| over two fronts sampled at the same points.
+double mean_change(const std::vector<double>& a, const std::vector<double>& b) {
+  double sum = 0.0;
+  const size_t n = std::min(a.size(), b.size());
+  for (size_t i = 0; i < n; ++i) sum += std::abs(a[i] - b[i]);
+  return n ? sum / double(n) : 0.0;
+}
+
+void column(engine::vk::Context& context, const Options& o, const char* file, std::vector<double> spacings,
             std::vector<Check>& checks, std::vector<Run>& runs) {
-  const liquid::Scene base = liquid::load_scene(o.scenes / file);
+  const liquid::Scene base = load(o, file);
   const double a = base.fluid_blocks.at(0).max.x - base.fluid_blocks.at(0).min.x;
   const double g = glm::length(base.gravity);
   const double t_end = 3.4 / std::sqrt(2.0 * g / a);
@@ -255,6 +274,28 @@ void column(engine::vk::Context& context, const Options& o, const std::string& f
     checks.push_back({base.name + ": mean error finest / coarsest spacing", errors.back().mean / errors.front().mean,
                       "<= 1, not rising", converging});
   }
+  if (errors.size() > 2) {
+    // The front itself converging: each refinement moves it less than the one before (the mean
+    // change of Z over the experiment's points, shrinking geometrically).
+    std::vector<double> change;
+    for (size_t i = 1; i < errors.size(); ++i) change.push_back(mean_change(errors[i - 1].model, errors[i].model));
+    double worst = 0.0;
+    for (size_t i = 1; i < change.size(); ++i) worst = std::max(worst, change[i] / change[i - 1]);
+    checks.push_back({base.name + ": front change per refinement / previous one, largest", worst, "< 1", worst < 1.0});
+    // The limit it converges to, by Richardson extrapolation of the last three spacings (halving).
+    const std::vector<double>& z1 = errors[errors.size() - 3].model;
+    const std::vector<double>& z2 = errors[errors.size() - 2].model;
+    const std::vector<double>& z3 = errors.back().model;
+    if (!z3.empty() && z1.size() == z3.size() && z2.size() == z3.size()) {
+      const double d1 = z2.back() - z1.back(), d2 = z3.back() - z2.back();
+      const double ratio = d1 != 0.0 ? d2 / d1 : 0.0;
+      const double limit = ratio > 0.0 && ratio < 1.0 ? z3.back() + d2 * ratio / (1.0 - ratio) : z3.back();
+      std::printf("%s: front at the last point, by spacing:", base.name.c_str());
+      for (const liquid::FrontError& e : errors) std::printf(" %.3f", e.model.empty() ? 0.0 : e.model.back());
+      std::printf("; converging (ratio %.2f) to %.3f, experiment %.3f\n", ratio, limit,
+                  liquid::martin_moyce_front().back().Z);
+    }
+  }
 }
 
 bool wanted(const Options& o, const std::string& name) {
@@ -269,11 +310,12 @@ int run(const Options& o) {
   std::vector<Run> runs;
   if (wanted(o, "rest_pool")) rest_pool(context, o, checks, runs);
   if (wanted(o, "energy")) energy(context, o, checks, runs);
-  if (wanted(o, "column")) {
-    column(context, o, "column_2d.json", o.quick ? std::vector<double>{0.004} : std::vector<double>{0.004, 0.002, 0.001},
-           checks, runs);
-    column(context, o, "column_3d.json", {0.004}, checks, runs);
-  }
+  const std::vector<double> default_2d = o.quick ? std::vector<double>{0.004} : std::vector<double>{0.004, 0.002, 0.001};
+  const std::vector<double> default_3d = o.quick ? std::vector<double>{0.004} : std::vector<double>{0.004, 0.002};
+  if (wanted(o, "column") || wanted(o, "column_2d"))
+    column(context, o, "column_2d.json", o.column_2d_spacings.empty() ? default_2d : o.column_2d_spacings, checks, runs);
+  if (wanted(o, "column") || wanted(o, "column_3d"))
+    column(context, o, "column_3d.json", o.column_3d_spacings.empty() ? default_3d : o.column_3d_spacings, checks, runs);
   std::printf("\n%-60s %12s   %-25s\n", "figure", "measured", "target");
   int unmet = 0;
   for (const Check& c : checks) {
@@ -303,13 +345,20 @@ int main(int argc, char** argv) {
   app.add_option("--scenes", scenes, "folder holding rest_pool_2d, dam_break_2d, column_2d and column_3d");
   app.add_option("-o,--out", out, "output folder (validation.json)");
   app.add_flag("--quick", o.quick, "shorter runs (2 s pool, 3 s dam break, one 2D column spacing)");
-  app.add_option("--only", o.only, "rest_pool, energy or column (repeatable)")
-      ->check(CLI::IsMember({"rest_pool", "energy", "column"}));
+  app.add_option("--only", o.only, "rest_pool, energy, column, or one column: column_2d, column_3d (repeatable)")
+      ->check(CLI::IsMember({"rest_pool", "energy", "column", "column_2d", "column_3d"}));
   app.add_flag("--validation", o.validation, "enable the Vulkan validation layer");
+  std::vector<std::string> sets;
+  app.add_option("--set", sets, "override a field of every scene run, checked like the file (key=value, repeatable)");
+  app.add_option("--column-2d-spacings", o.column_2d_spacings, "2D column particle spacings, m (default 0.004 0.002 0.001)")
+      ->check(CLI::Range(0.0002, 0.05));
+  app.add_option("--column-3d-spacings", o.column_3d_spacings, "3D column particle spacings, m (default 0.004 0.002; --quick 0.004)")
+      ->check(CLI::Range(0.0005, 0.05));
   tools::add_grid_path_option(app, o.grid_path);
   return tools::run_main(app, argc, argv, "liquid_validate", [&] {
     o.scenes = scenes.empty() ? default_scenes() : fs::path(scenes);
     o.out = out;
+    for (const std::string& s : sets) o.overrides.push_back(liquid::parse_scene_override(s));
     return run(o);
   });
 }

@@ -2,6 +2,7 @@
 // lattice, kernel normalisation and rest density, emitters, device limits, and the physical
 // sanity of every shipped scene.
 #include "liquid/setup.h"
+#include "liquid/time_step.h"
 #include "tests/support/scenes.h"
 
 #include <catch2/catch.hpp>
@@ -426,8 +427,16 @@ TEST_CASE("shipped scenes are in the stable weakly compressible regime", "[setup
       // Mach number at most 0.45: density varies by a few percent in the fastest flow.
       CHECK(sound >= 2.2 * fastest);
     }
-    // Acoustic CFL of 0.16: measured on rest_pool_2d, FLIP velocity noise grows steadily above ~0.2.
-    CHECK(scene.time_step <= 0.16 * setup.cell_size / sound);
+    // The acoustic CFL of the scene's regime (liquid/time_step.h): the chapter's 0.16, or the
+    // longer steps of the splat-adjoint pressure with the PIC blend per second, whose reference
+    // step is one of the chapter's regime (where r = 0.05 was chosen).
+    const double acoustic_step = setup.cell_size / sound;
+    if (scene.pressure_force == PressureForce::SplatAdjoint && scene.pic_ratio_reference_step) {
+      CHECK(scene.time_step <= k_acoustic_cfl_smoothed * acoustic_step);
+      CHECK(*scene.pic_ratio_reference_step <= k_acoustic_cfl_chapter * acoustic_step * 1.001);
+    } else {
+      CHECK(scene.time_step <= k_acoustic_cfl_chapter * acoustic_step);
+    }
     // A rendered frame covers about 1/30 s of simulated time.
     CHECK(scene.time_step * scene.substeps == Approx(1.0 / 30.0).epsilon(0.05));
   }
@@ -454,4 +463,19 @@ TEST_CASE("fluid blocks are carved around the obstacles they overlap", "[setup]"
   CHECK(setup.capacity == setup.initial_particles);
   for (const glm::vec4& p : setup.positions)
     REQUIRE(glm::length(glm::vec2(p) - glm::vec2(0.5f, 0.1f)) >= carved_to - 1e-5f);
+}
+
+TEST_CASE("dam_break_tank_2d is SPlisHSPlasH's DamBreakModel_2D at 64,516 particles", "[setup]") {
+  // tools/compare_dfsph.py runs the two side by side: DFSPH with particle radius 0.0029412 fills its
+  // 1.5 m column, 2.5 cm off the floor and the left wall of a 4 m tank, with 254 x 254 particles.
+  const Scene scene = scene_of("dam_break_tank_2d.json");
+  const SimulationSetup setup = make_setup(scene, {});
+  CHECK(setup.initial_particles == 254 * 254);
+  CHECK(scene.domain.x == 4.0f);
+  CHECK(scene.domain.y == 4.0f);
+  REQUIRE(scene.fluid_blocks.size() == 1);
+  CHECK(scene.fluid_blocks[0].min == glm::vec3(0.025f, 0.025f, 0.0f));
+  CHECK(scene.fluid_blocks[0].max.x == Approx(1.525f));
+  CHECK(scene.fluid_blocks[0].max.y == Approx(1.525f));
+  CHECK(scene.particle_spacing == Approx(2.0 * 0.0029412));
 }

@@ -52,7 +52,7 @@ TEST_CASE("adaptive_time_step: the scene key, its defaults and its bounds", "[sc
   CHECK(parse(j).adaptive_time_step->velocity_cfl == 1.0f);
 
   j["adaptive_time_step"] = {{"acoustic_cfl", 0.0}};
-  CHECK_THROWS_WITH(parse(j), Contains("dam.json: adaptive_time_step.acoustic_cfl: must be in (0, 1], got 0"));
+  CHECK_THROWS_WITH(parse(j), Contains("dam.json: adaptive_time_step.acoustic_cfl: must be in (0, 2], got 0"));
   j["adaptive_time_step"] = {{"velocity_cfl", 3}};
   CHECK_THROWS_WITH(parse(j), Contains("dam.json: adaptive_time_step.velocity_cfl: must be in (0, 2], got 3"));
   j["adaptive_time_step"] = {{"acoustic", 0.1}};

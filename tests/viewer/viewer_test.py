@@ -51,7 +51,8 @@ def com(r):
 def drag(args):
     # A left drag up and to the right through the 2D dam's column (tests/viewer/drag_2d.json).
     scene = os.path.join(args.scenes, "dam_break_2d.json")
-    common = [scene, "--frames", "30", "--steps-per-frame", "16", *SIZE, "--no-panel"]
+    # 2 steps of 0.91 ms a frame: the simulated time the drag was measured over (16 chapter-sized steps).
+    common = [scene, "--frames", "30", "--steps-per-frame", "2", *SIZE, "--no-panel"]
     base = run(args, "drag_none", common)
     dragged = run(args, "drag", [*common, "--script", os.path.join(args.scripts, "drag_2d.json")])
     # The brush's last place: the script's last cursor (88, 110) in the 320 x 240 window's 2D
@@ -115,7 +116,8 @@ def resize(args):
 def golden(args):
     scene = os.path.join(args.scenes, "dam_break_2d.json")
     shot = os.path.join(args.out, "viewer_dam_break_2d.png")
-    run(args, "golden", [scene, "--frames", "12", "--steps-per-frame", "16", "--width", "256", "--height", "192",
+    # 24 steps (21.8 ms), the time of the 192 chapter-sized steps the golden was first recorded at.
+    run(args, "golden", [scene, "--frames", "12", "--steps-per-frame", "2", "--width", "256", "--height", "192",
                          "--no-panel", "--screenshot", shot])
     result = subprocess.run([args.compare, shot, "viewer_dam_break_2d"], capture_output=True, text=True)
     print(result.stdout, result.stderr, sep="")
