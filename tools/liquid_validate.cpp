@@ -70,6 +70,7 @@ struct Check {
   double value = 0.0;
   std::string bound;
   bool met = false;
+  bool target = true;  // false: a figure printed beside the targets, not held to its bound
 };
 
 fs::path default_scenes() {
@@ -131,7 +132,8 @@ Run run_scene(engine::vk::Context& context, const Options& o, const liquid::Scen
 }
 
 void print_check(const Check& c) {
-  std::printf("  %-58s %12.5g   target %-18s %s\n", c.what.c_str(), c.value, c.bound.c_str(), c.met ? "met" : "NOT MET");
+  std::printf("  %-58s %12.5g   %-6s %-18s %s\n", c.what.c_str(), c.value, c.target ? "target" : "", c.bound.c_str(),
+              !c.target ? "figure" : c.met ? "met" : "NOT MET");
 }
 
 std::string json_series(const Run& run) {
@@ -155,7 +157,8 @@ std::string json_checks(const std::vector<Check>& checks) {
   out << "[";
   for (size_t i = 0; i < checks.size(); ++i)
     out << (i ? ", " : "") << "{\"what\": \"" << checks[i].what << "\", \"value\": " << checks[i].value
-        << ", \"target\": \"" << checks[i].bound << "\", \"met\": " << (checks[i].met ? "true" : "false") << "}";
+        << ", \"target\": \"" << checks[i].bound << "\", \"met\": " << (checks[i].met ? "true" : "false")
+        << ", \"is_target\": " << (checks[i].target ? "true" : "false") << "}";
   out << "]";
   return out.str();
 }
@@ -263,16 +266,21 @@ void column(engine::vk::Context& context, const Options& o, const char* file, st
     const liquid::FrontError e = liquid::compare_front(T, Z);
     errors.push_back(e);
     const std::string label = base.name + " at spacing " + tools::format_cli_number(spacing) + " m";
-    checks.push_back({label + ": mean |Z - Z_exp| / Z_exp", e.mean, "< 0.05", e.mean < 0.05});
-    checks.push_back({label + ": max |Z - Z_exp| / Z_exp", e.max, "< 0.10", e.max < 0.10});
+    // The front target holds at the scene's own spacing; the others are figures (coarser ones lag,
+    // finer ones run ahead towards the converged front: docs/physics.md).
+    const bool target = std::abs(spacing / base.particle_spacing - 1.0) < 1e-3;
+    checks.push_back({label + ": mean |Z - Z_exp| / Z_exp", e.mean, "< 0.05", e.mean < 0.05, target});
+    checks.push_back({label + ": max |Z - Z_exp| / Z_exp", e.max, "< 0.10", e.max < 0.10, target});
     run.name = label;
     runs.push_back(run);
   }
   if (errors.size() > 1) {
     bool converging = true;
     for (size_t i = 1; i < errors.size(); ++i) converging = converging && errors[i].mean <= errors[i - 1].mean + 0.005;
+    // Not a target: the front converges to one ahead of the experiment (its release), so the error
+    // falls to the shipped spacing and rises past it.
     checks.push_back({base.name + ": mean error finest / coarsest spacing", errors.back().mean / errors.front().mean,
-                      "<= 1, not rising", converging});
+                      "<= 1, not rising", converging, false});
   }
   if (errors.size() > 2) {
     // The front itself converging: each refinement moves it less than the one before (the mean
@@ -281,7 +289,7 @@ void column(engine::vk::Context& context, const Options& o, const char* file, st
     for (size_t i = 1; i < errors.size(); ++i) change.push_back(mean_change(errors[i - 1].model, errors[i].model));
     double worst = 0.0;
     for (size_t i = 1; i < change.size(); ++i) worst = std::max(worst, change[i] / change[i - 1]);
-    checks.push_back({base.name + ": front change per refinement / previous one, largest", worst, "< 1", worst < 1.0});
+    checks.push_back({base.name + ": front converging: change per refinement / previous one", worst, "< 1", worst < 1.0});
     // The limit it converges to, by Richardson extrapolation of the last three spacings (halving).
     const std::vector<double>& z1 = errors[errors.size() - 3].model;
     const std::vector<double>& z2 = errors[errors.size() - 2].model;
@@ -310,7 +318,8 @@ int run(const Options& o) {
   std::vector<Run> runs;
   if (wanted(o, "rest_pool")) rest_pool(context, o, checks, runs);
   if (wanted(o, "energy")) energy(context, o, checks, runs);
-  const std::vector<double> default_2d = o.quick ? std::vector<double>{0.004} : std::vector<double>{0.004, 0.002, 0.001};
+  // --quick: the 2D column at its own spacing (a target), the 3D one at twice it (a figure).
+  const std::vector<double> default_2d = o.quick ? std::vector<double>{0.002} : std::vector<double>{0.004, 0.002, 0.001};
   const std::vector<double> default_3d = o.quick ? std::vector<double>{0.004} : std::vector<double>{0.004, 0.002};
   if (wanted(o, "column") || wanted(o, "column_2d"))
     column(context, o, "column_2d.json", o.column_2d_spacings.empty() ? default_2d : o.column_2d_spacings, checks, runs);
@@ -318,9 +327,11 @@ int run(const Options& o) {
     column(context, o, "column_3d.json", o.column_3d_spacings.empty() ? default_3d : o.column_3d_spacings, checks, runs);
   std::printf("\n%-60s %12s   %-25s\n", "figure", "measured", "target");
   int unmet = 0;
+  int targets = 0;
   for (const Check& c : checks) {
     print_check(c);
-    unmet += c.met ? 0 : 1;
+    targets += c.target ? 1 : 0;
+    unmet += c.target && !c.met ? 1 : 0;
   }
   std::ostringstream json;
   json << "{\"device\": \"" << context.device_name() << "\", \"quick\": " << (o.quick ? "true" : "false")
@@ -329,8 +340,8 @@ int run(const Options& o) {
   json << "]}\n";
   fs::create_directories(o.out);
   engine::io::write_file_atomically(o.out / "validation.json", json.str());
-  std::printf("\n%d of %zu targets met; series in %s (plot: python3 tools/plot_validation.py %s)\n",
-              int(checks.size()) - unmet, checks.size(), (o.out / "validation.json").string().c_str(),
+  std::printf("\n%d of %d targets met; series in %s (plot: python3 tools/plot_validation.py %s)\n",
+              targets - unmet, targets, (o.out / "validation.json").string().c_str(),
               (o.out / "validation.json").string().c_str());
   return unmet == 0 ? 0 : 1;  // a target not met fails the command
 }
@@ -344,13 +355,13 @@ int main(int argc, char** argv) {
   std::string scenes, out = o.out.string();
   app.add_option("--scenes", scenes, "folder holding rest_pool_2d, dam_break_2d, column_2d and column_3d");
   app.add_option("-o,--out", out, "output folder (validation.json)");
-  app.add_flag("--quick", o.quick, "shorter runs (2 s pool, 3 s dam break, one 2D column spacing)");
+  app.add_flag("--quick", o.quick, "shorter runs (2 s pool, 3 s dam break, one spacing of each column)");
   app.add_option("--only", o.only, "rest_pool, energy, column, or one column: column_2d, column_3d (repeatable)")
       ->check(CLI::IsMember({"rest_pool", "energy", "column", "column_2d", "column_3d"}));
   app.add_flag("--validation", o.validation, "enable the Vulkan validation layer");
   std::vector<std::string> sets;
   app.add_option("--set", sets, "override a field of every scene run, checked like the file (key=value, repeatable)");
-  app.add_option("--column-2d-spacings", o.column_2d_spacings, "2D column particle spacings, m (default 0.004 0.002 0.001)")
+  app.add_option("--column-2d-spacings", o.column_2d_spacings, "2D column particle spacings, m (default 0.004 0.002 0.001; --quick 0.002)")
       ->check(CLI::Range(0.0002, 0.05));
   app.add_option("--column-3d-spacings", o.column_3d_spacings, "3D column particle spacings, m (default 0.004 0.002; --quick 0.004)")
       ->check(CLI::Range(0.0005, 0.05));
