@@ -140,7 +140,7 @@ int main(int argc, char** argv) {
   app.add_option("scene", scene, "scene JSON file")->required();
   app.add_option("-n,--steps", steps, "simulation steps")->check(tools::integer_range(1, 10000000));
   app.add_option("-s,--seconds", seconds, "run to this simulated time instead of a step count (s)")
-      ->check(CLI::Range(1e-6, 1e6))
+      ->check(tools::finite_range(1e-6, 1e6))
       ->excludes("--steps");
   app.add_option("-r,--report-every", report_every, "steps between diagnostics lines (the state is checked every batch)")
       ->check(tools::integer_range(1, 1000000));

@@ -362,9 +362,9 @@ int main(int argc, char** argv) {
   std::vector<std::string> sets;
   app.add_option("--set", sets, "override a field of every scene run, checked like the file (key=value, repeatable)");
   app.add_option("--column-2d-spacings", o.column_2d_spacings, "2D column particle spacings, m (default 0.004 0.002 0.001; --quick 0.002)")
-      ->check(CLI::Range(0.0002, 0.05));
+      ->check(tools::finite_range(0.0002, 0.05));
   app.add_option("--column-3d-spacings", o.column_3d_spacings, "3D column particle spacings, m (default 0.004 0.002; --quick 0.004)")
-      ->check(CLI::Range(0.0005, 0.05));
+      ->check(tools::finite_range(0.0005, 0.05));
   tools::add_grid_path_option(app, o.grid_path);
   return tools::run_main(app, argc, argv, "liquid_validate", [&] {
     o.scenes = scenes.empty() ? default_scenes() : fs::path(scenes);
