@@ -3,7 +3,6 @@
 #include "liquid/gpu_types.h"
 #include "liquid/scene.h"
 #include "liquid/scene_reader.h"
-#include "liquid/time_step.h"
 
 #include <array>
 #include <filesystem>
@@ -239,6 +238,14 @@ void read_physics(const Reader& r, const Json& doc, Scene& scene) {
     if (!shallow) r.fail("rest_depth", "only allowed in shallow_water mode");
     scene.rest_depth = float(r.number_in(*v, "rest_depth", 0.0, k_max_length, true));
   }
+  // Steps past the chapter's regime are stable only for the twice-smoothed pressure, and only
+  // accurate with the PIC blend per second (docs/physics.md, "Longer steps").
+  const bool long_steps = scene.pressure_force == PressureForce::SplatAdjoint && scene.pic_ratio_reference_step;
+  if (scene.adaptive_time_step && scene.adaptive_time_step->acoustic_cfl > k_max_acoustic_cfl_chapter && !long_steps)
+    r.fail("adaptive_time_step.acoustic_cfl",
+           "above " + format_number(k_max_acoustic_cfl_chapter) +
+               " needs \"pressure_force\": \"splat_adjoint\" and pic_ratio_reference_step, got " +
+               format_number(scene.adaptive_time_step->acoustic_cfl));
 }
 
 void read_contents(const Reader& r, const Json& doc, Scene& scene) {

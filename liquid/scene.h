@@ -96,10 +96,24 @@ struct Camera {
   float fov_y_degrees = 45.0f;
 };
 
+// Acoustic CFL numbers (dt c / h) of the two regimes (docs/physics.md, "Longer steps"). The
+// chapter's: r blended per step, FLIP velocity noise grows above about 0.2 on rest_pool_2d. The
+// splat-adjoint pressure with the PIC blend per second (pic_ratio_reference_step): its pressure is
+// smoothed twice by the kernel, so the shortest waves it carries are about 2 r h long, and
+// dam_break_2d (r = 3 cells) runs stable at 2.4 and explodes at 3.6; the shipped scenes stay at
+// about half of 2.4, scaled by r / 3 for another kernel radius.
+inline constexpr double k_acoustic_cfl_chapter = 0.16;
+inline constexpr double k_acoustic_cfl_smoothed = 1.3;
+inline constexpr double k_acoustic_cfl_smoothed_stable = 2.4;  // the largest measured stable
+// The largest acoustic_cfl adaptive_time_step accepts: in the chapter's regime, and with the
+// splat-adjoint pressure and pic_ratio_reference_step.
+inline constexpr double k_max_acoustic_cfl_chapter = 1.0;
+inline constexpr double k_max_acoustic_cfl = 2.0;
+
 // CFL numbers of the adaptive step: dt = min(time_step, acoustic_cfl h / (c + |u|max),
 // velocity_cfl h / |u|max), with c the Tait form's speed of sound at the densest cell.
 struct AdaptiveTimeStep {
-  float acoustic_cfl = 0.16f;
+  float acoustic_cfl = float(k_acoustic_cfl_chapter);
   float velocity_cfl = 0.4f;
 };
 

@@ -15,16 +15,6 @@
 
 namespace liquid {
 
-// Acoustic CFL numbers (dt c / h) of the two regimes (docs/physics.md, "Longer steps"). The
-// chapter's: r blended per step, FLIP velocity noise grows above about 0.2 on rest_pool_2d. The
-// splat-adjoint pressure with the PIC blend per second (pic_ratio_reference_step): its pressure is
-// smoothed twice by the kernel, so the shortest waves it carries are about 2 r h long, and
-// dam_break_2d runs stable at 2.4 and explodes at 3.6; the shipped scenes keep half that margin.
-inline constexpr double k_acoustic_cfl_chapter = 0.16;
-inline constexpr double k_acoustic_cfl_smoothed = 1.3;
-// The largest acoustic_cfl adaptive_time_step accepts.
-inline constexpr double k_max_acoustic_cfl = 2.0;
-
 // Speed of sound (m/s) at density ratio rho / rho0.
 double speed_of_sound(const SimulationSetup& setup, double density_ratio);
 

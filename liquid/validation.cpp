@@ -96,6 +96,17 @@ FrontError compare_front(std::span<const double> T, std::span<const double> Z, d
   return error;
 }
 
+Scene scene_at_spacing(const Scene& base, double spacing) {
+  Scene s = base;
+  const double scale = spacing / base.particle_spacing;
+  s.particle_spacing = float(spacing);
+  if (base.grid_resolution) s.grid_resolution = int(std::lround(*base.grid_resolution / scale));
+  s.time_step = float(base.time_step * scale);
+  if (base.pic_ratio_reference_step) s.pic_ratio_reference_step = float(*base.pic_ratio_reference_step * scale);
+  s.substeps = std::max(1, int(std::lround(base.substeps / scale)));
+  return s;
+}
+
 double max_gain_in_window(std::span<const double> times, std::span<const double> energies, double t_from,
                           double window) {
   double gain = 0.0;

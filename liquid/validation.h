@@ -51,6 +51,19 @@ struct FrontError {
 FrontError compare_front(std::span<const double> T, std::span<const double> Z, double t_min = 0.8,
                          double t_max = 3.35);
 
+// The points compare_front() compares over its default range [0.8, 3.35]; a run that covers
+// fewer has not measured the front.
+inline constexpr int k_front_points = 14;
+
+// Simulated time between two samples of the front: T steps of 0.035 for a = 0.1 m.
+inline constexpr double k_front_sample_period_s = 0.0025;
+
+// `base` at another particle spacing: the grid's cell count, the step, the PIC reference step and
+// the steps per frame scaled with it, so that the refined scene keeps its regime (the acoustic CFL
+// and r per step). The PIC blend's numerical viscosity, about (rate per second) h^2, then falls in
+// proportion to the spacing, so a refinement converges towards the inviscid limit.
+Scene scene_at_spacing(const Scene& base, double spacing);
+
 // The largest E(t2) - E(t1) over t_from <= t1 <= t2 <= t1 + window, from samples (t, E) in time order.
 double max_gain_in_window(std::span<const double> times, std::span<const double> energies, double t_from,
                           double window);

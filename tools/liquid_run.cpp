@@ -1,5 +1,6 @@
-// liquid_run: runs a scene headless for N simulation steps (no rendering) and prints the solver's
-// diagnostics as it goes and the median GPU time of each pass at the end.
+// liquid_run: runs a scene headless for N simulation steps or S simulated seconds (no rendering)
+// and prints the solver's diagnostics as it goes, then the median GPU time of each pass and the
+// wall time per simulated second.
 #include "engine/io/atomic_file.h"
 #include "engine/vk/context.h"
 #include "liquid/node.h"
@@ -85,7 +86,9 @@ int run(const std::string& scene_path, int steps, double seconds, int report_eve
   int done = 0;
   auto steps_to_end = [&] {
     if (seconds <= 0.0) return steps - done;
-    return std::max(1, int(std::ceil((seconds - node.time()) / node.time_step() - 1e-6)));
+    // In double, clamped before the cast: a long run at a short step needs more than INT_MAX steps.
+    const double left = std::ceil((seconds - node.time()) / node.time_step() - 1e-6);
+    return int(std::clamp(left, 1.0, double(node.substeps())));
   };
   const auto start = std::chrono::steady_clock::now();
   liquid::Diagnostics last;

@@ -55,6 +55,15 @@ TEST_CASE("adaptive_time_step: the scene key, its defaults and its bounds", "[sc
   CHECK_THROWS_WITH(parse(j), Contains("dam.json: adaptive_time_step.acoustic_cfl: must be in (0, 2], got 0"));
   j["adaptive_time_step"] = {{"velocity_cfl", 3}};
   CHECK_THROWS_WITH(parse(j), Contains("dam.json: adaptive_time_step.velocity_cfl: must be in (0, 2], got 3"));
+  // Past the chapter's regime only with the twice-smoothed pressure and the PIC blend per second.
+  j["adaptive_time_step"] = {{"acoustic_cfl", 1.3}};
+  CHECK_THROWS_WITH(parse(j), Contains("dam.json: adaptive_time_step.acoustic_cfl: above 1 needs \"pressure_force\": "
+                                       "\"splat_adjoint\" and pic_ratio_reference_step, got 1.3"));
+  j["pressure_force"] = "splat_adjoint";
+  j["pic_ratio_reference_step"] = 1e-4;
+  CHECK(parse(j).adaptive_time_step->acoustic_cfl == 1.3f);
+  j.erase("pressure_force");
+  j.erase("pic_ratio_reference_step");
   j["adaptive_time_step"] = {{"acoustic", 0.1}};
   CHECK_THROWS_WITH(parse(j), Contains("dam.json: adaptive_time_step.acoustic: unknown key"));
   j["adaptive_time_step"] = 0.1;

@@ -146,9 +146,9 @@ TEST_CASE("RGBA16F against RGBA32F splats: density and particles after 200 chapt
     double density;        // mean |rho16 - rho32| / mean rho32 over the grid
     double rms_cells;      // particle distance between the runs, RMS
   };
-  // Measured: dam_break_2d 3.2% (mean -2.9%: 16-bit sums read low), particles 0.37 cells RMS
-  // (0.85 at most); small_3d 8.9% (mean -7.9%; a 3D cell sums ~4 times as many kernels), 0.32
-  // cells RMS (0.59 at most). (Before the blocks resting on the floor started hydrostatically
+  // Measured (the same simulated time as 200 chapter-sized steps): dam_break_2d 3.1% (mean -2.9%:
+  // 16-bit sums read low), particles 0.38 cells RMS (0.86 at most); small_3d 8.9% (mean -7.9%; a
+  // 3D cell sums ~4 times as many kernels), 0.33 cells RMS (0.60 at most). (Before the blocks resting on the floor started hydrostatically
   // compressed, their first 200 steps were mostly that compression: 0.16 and 0.48 cells RMS.)
   for (const Bound& b : {Bound{"dam_break_2d", 0.06, 0.75}, Bound{"small_3d", 0.18, 0.65}}) {
     INFO(b.scene);
