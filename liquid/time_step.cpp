@@ -5,6 +5,25 @@
 
 namespace liquid {
 
+namespace {
+
+// The long steps' CFL numbers were measured with a kernel of 3 cells.
+double kernel_scale(const SimulationSetup& setup) { return setup.kernel_radius_cells / 3.0; }
+
+}  // namespace
+
+bool long_step_regime(const SimulationSetup& setup) {
+  return setup.splat_adjoint_pressure && setup.pic_ratio_reference_step > 0.0f;
+}
+
+double regime_acoustic_cfl(const SimulationSetup& setup) {
+  return long_step_regime(setup) ? k_acoustic_cfl_smoothed * kernel_scale(setup) : k_acoustic_cfl_chapter;
+}
+
+double stable_acoustic_cfl(const SimulationSetup& setup) {
+  return long_step_regime(setup) ? k_acoustic_cfl_smoothed_stable * kernel_scale(setup) : k_max_acoustic_cfl_chapter;
+}
+
 double speed_of_sound(const SimulationSetup& setup, double density_ratio) {
   const double ratio = std::max(density_ratio, 1.0);  // below rest density the clamp leaves P = 0
   return std::sqrt(double(setup.stiffness) * setup.gamma * std::pow(ratio, double(setup.gamma)));

@@ -15,6 +15,16 @@
 
 namespace liquid {
 
+// The long-step regime (liquid/scene.h): the splat-adjoint pressure with the PIC blend per second.
+bool long_step_regime(const SimulationSetup& setup);
+
+// The acoustic CFL a scene of the setup's regime keeps to: the chapter's 0.16, or the long steps'
+// 1.3 scaled by the kernel radius / 3 cells (the shortest waves it carries are a kernel wide).
+double regime_acoustic_cfl(const SimulationSetup& setup);
+
+// The largest acoustic CFL known stable in the setup's regime, for its kernel radius.
+double stable_acoustic_cfl(const SimulationSetup& setup);
+
 // Speed of sound (m/s) at density ratio rho / rho0.
 double speed_of_sound(const SimulationSetup& setup, double density_ratio);
 

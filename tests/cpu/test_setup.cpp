@@ -431,14 +431,11 @@ TEST_CASE("shipped scenes are in the stable weakly compressible regime", "[setup
     // longer steps of the splat-adjoint pressure with the PIC blend per second, whose reference
     // step is one of the chapter's regime (where r = 0.05 was chosen).
     const double acoustic_step = setup.cell_size / sound;
-    if (scene.pressure_force == PressureForce::SplatAdjoint && scene.pic_ratio_reference_step) {
-      // The bound was measured with a kernel of 3 cells; the shortest waves scale with it.
-      CHECK(scene.time_step <= k_acoustic_cfl_smoothed * scene.kernel_radius_cells / 3.0 * acoustic_step);
-      CHECK(*scene.pic_ratio_reference_step <= k_acoustic_cfl_chapter * acoustic_step * 1.001);
+    CHECK(scene.time_step <= regime_acoustic_cfl(setup) * acoustic_step);
+    if (long_step_regime(setup)) {
+      CHECK(setup.pic_ratio_reference_step <= k_acoustic_cfl_chapter * acoustic_step * 1.001);
       // and r was chosen at a step of the chapter's regime, not far below it (r(dt) would near PIC).
-      CHECK(scene.time_step <= 8.2 * *scene.pic_ratio_reference_step);
-    } else {
-      CHECK(scene.time_step <= k_acoustic_cfl_chapter * acoustic_step);
+      CHECK(scene.time_step <= 8.2 * setup.pic_ratio_reference_step);
     }
     // A rendered frame covers about 1/30 s of simulated time.
     CHECK(scene.time_step * scene.substeps == Approx(1.0 / 30.0).epsilon(0.05));

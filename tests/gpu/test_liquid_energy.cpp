@@ -50,13 +50,8 @@ std::vector<Sample> run_sampled(liquid::LiquidNode& node, double seconds, int ev
 
 // rest_pool_2d at twice its cell size (same depth, same acoustic CFL): 1,000 particles on 32².
 liquid::Scene coarse_pool() {
-  liquid::Scene s = test::shipped_scene("rest_pool_2d");
-  s.grid_resolution = 32;
-  s.particle_spacing *= 2.0f;
-  s.time_step *= 2.0f;
-  s.pic_ratio_reference_step.value() *= 2.0f;  // the same regime at twice the cell size
-  s.substeps = (s.substeps + 1) / 2;
-  return s;
+  const liquid::Scene base = test::shipped_scene("rest_pool_2d");
+  return liquid::scene_at_spacing(base, 2.0 * base.particle_spacing);
 }
 
 // column_2d at `spacing_factor` times its particle spacing (grid, step and PIC reference step with it).

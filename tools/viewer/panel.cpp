@@ -1,6 +1,7 @@
 #include "tools/viewer/panel.h"
 
 #include "liquid/node.h"
+#include "liquid/time_step.h"
 
 #include <imgui.h>
 
@@ -24,11 +25,8 @@ void live_parameters(liquid::LiquidNode& node) {
   const bool per_second = setup.pic_ratio_reference_step > 0.0f;
   changed |= ImGui::SliderFloat(per_second ? "PIC ratio (per reference step)" : "PIC ratio", &p.pic_ratio, 0.0f, 1.0f);
   // The stiffest k the present step stays stable with: the speed of sound sqrt(k gamma) within the
-  // regime's acoustic CFL (liquid/scene.h), the long steps' scaled by the kernel radius.
-  const bool long_steps = setup.splat_adjoint_pressure && per_second;
-  const double cfl = long_steps ? liquid::k_acoustic_cfl_smoothed_stable * setup.kernel_radius_cells / 3.0
-                                : liquid::k_max_acoustic_cfl_chapter;
-  const double sound = cfl * setup.cell_size / node.time_step();
+  // regime's stable acoustic CFL.
+  const double sound = liquid::stable_acoustic_cfl(setup) * setup.cell_size / node.time_step();
   const float stiffest = float(std::clamp(sound * sound / setup.gamma, 1.0, 500.0));
   changed |= ImGui::SliderFloat("stiffness k", &p.stiffness, 0.0f, stiffest, "%.1f", ImGuiSliderFlags_Logarithmic);
   if (changed) node.set_runtime_parameters(p);  // the sliders' ranges are all valid values
