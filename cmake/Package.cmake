@@ -1,7 +1,9 @@
 # Install rules and the package files, so a host finds the libraries with
 #   find_package(RasterLiquids CONFIG REQUIRED)  ->  RasterLiquids::engine, RasterLiquids::liquid
-# against an install prefix (cmake --install) or this build tree. Public headers go under
-# include/rasterliquids/ with the same paths as in the source tree (#include "liquid/node.h").
+# against an install prefix (cmake --install) or this build tree, and RasterLiquids::vdb where
+# OpenVDB was found. Only the public headers are installed: the source tree's include/ folder,
+# under include/rasterliquids/ with the same paths (#include "liquid/node.h"); the internals
+# beside the sources stay out.
 # The SPIR-V stays embedded in the (static) shader libraries, which are installed beside them.
 include(CMakePackageConfigHelpers)
 set(package_dir "${CMAKE_INSTALL_LIBDIR}/cmake/RasterLiquids")
@@ -10,10 +12,15 @@ install(TARGETS rasterliquids_engine rasterliquids_engine_shaders rasterliquids_
         EXPORT RasterLiquidsTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${RASTERLIQUIDS_INCLUDE_DIR})
-install(DIRECTORY engine liquid DESTINATION ${RASTERLIQUIDS_INCLUDE_DIR} FILES_MATCHING PATTERN "*.h")
-install(FILES shaders/liquid/shared.h DESTINATION ${RASTERLIQUIDS_INCLUDE_DIR}/shaders/liquid)
-install(FILES shaders/liquid/render/view_blocks.h DESTINATION ${RASTERLIQUIDS_INCLUDE_DIR}/shaders/liquid/render)
+install(DIRECTORY include/ DESTINATION ${RASTERLIQUIDS_INCLUDE_DIR} FILES_MATCHING PATTERN "*.h")
 install(EXPORT RasterLiquidsTargets NAMESPACE RasterLiquids:: DESTINATION ${package_dir})
+# The OpenVDB export in a file of its own, loaded by the package only where OpenVDB is found again.
+if(TARGET rasterliquids_vdb)
+  install(TARGETS rasterliquids_vdb EXPORT RasterLiquidsVdbTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+          INCLUDES DESTINATION ${RASTERLIQUIDS_INCLUDE_DIR})
+  install(EXPORT RasterLiquidsVdbTargets NAMESPACE RasterLiquids:: DESTINATION ${package_dir})
+  export(EXPORT RasterLiquidsVdbTargets NAMESPACE RasterLiquids:: FILE "${PROJECT_BINARY_DIR}/RasterLiquidsVdbTargets.cmake")
+endif()
 
 configure_package_config_file(cmake/RasterLiquidsConfig.cmake.in
   "${PROJECT_BINARY_DIR}/RasterLiquidsConfig.cmake" INSTALL_DESTINATION ${package_dir})

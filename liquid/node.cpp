@@ -1,315 +1,56 @@
+// The public LiquidNode forwards to the Simulation it owns (liquid/solver/simulation.h), so the
+// public header names no internal type.
 #include "liquid/node.h"
 
-#include "engine/graph/transfer.h"
-#include "engine/vk/context.h"
-#include "liquid/specialization.h"
-#include "liquid/time_step.h"
-
-#include <glm/gtc/packing.hpp>
-
-#include <algorithm>
-#include <cmath>
-#include <cstdlib>
-#include <cstring>
-#include <stdexcept>
+#include "liquid/solver/simulation.h"
 
 namespace liquid {
-namespace {
 
-DeviceLimits device_limits(const engine::vk::Context& context) {
-  const auto& l = context.limits();
-  return {int(l.maxImageDimension2D), int(l.maxImageDimension3D), int(l.maxFramebufferLayers)};
-}
-
-bool blendable(const engine::vk::Context& context, VkFormat format) {
-  return context.format_supports(format, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT);
-}
-
-// The 3D path: LiquidOptions' or LIQUID_3D_PATH's, else the device's best (2D scenes use none).
-GridPath grid_path(const engine::vk::Context& context, const LiquidOptions& options, int dimension) {
-  std::optional<GridPath> requested = options.grid_path;
-  if (!requested)
-    if (const char* env = std::getenv("LIQUID_3D_PATH"); env && *env) requested = parse_grid_path(env, "LIQUID_3D_PATH");
-  const GridPathSupport support{context.supports_geometry_shader(), context.supports_vertex_layer_output()};
-  if (dimension == 2) return requested.value_or(GridPath::VertexLayer);
-  return choose_grid_path(support, requested);
-}
-
-// The atlas is one 2D image: both sides within the device's 2D limit.
-void check_atlas_fits(const engine::vk::Context& context, const GridLayout& layout) {
-  if (!layout.atlas()) return;
-  const engine::vk::ImageDesc d = layout.image_desc(VK_FORMAT_R32G32B32A32_SFLOAT, 0);
-  const uint32_t limit = context.limits().maxImageDimension2D;
-  if (d.width > limit || d.height > limit)
-    throw std::runtime_error("the 3D grid's atlas (" + std::to_string(d.width) + " x " + std::to_string(d.height) +
-                             " texels) exceeds the device's 2D image limit of " + std::to_string(limit) +
-                             "; lower grid_resolution or use another 3D path");
-}
-
-template <class T>
-std::vector<T> as_vector(const std::vector<std::byte>& bytes, size_t count) {
-  std::vector<T> out(count);
-  std::memcpy(out.data(), bytes.data(), std::min(bytes.size(), count * sizeof(T)));
-  return out;
-}
-
-}  // namespace
+static_assert(k_max_force_brushes == LIQUID_MAX_BRUSHES, "the public brush limit is the solver's");
 
 LiquidNode::LiquidNode(engine::vk::Context& context, const Scene& scene, const LiquidOptions& options)
-    : context_(context), scene_(scene), setup_(make_setup(scene, device_limits(context))),
-      frames_in_flight_(options.frames_in_flight) {
-  layout_ = GridLayout(setup_.dimension, setup_.grid_cells, grid_path(context, options, setup_.dimension));
-  check_atlas_fits(context, layout_);
-  const SplatFormatChoice format = choose_splat_format(
-      scene.splat_format, blendable(context, VK_FORMAT_R32G32B32A32_SFLOAT), blendable(context, VK_FORMAT_R16G16B16A16_SFLOAT));
-  splat_format_ = format.format;
-  if (options.log) {
-    if (setup_.dimension == 3) options.log("liquid: 3D path: " + grid_path_description(layout_.path));
-    if (format.fell_back) options.log("liquid: the device cannot blend into RGBA32F; the splat uses RGBA16F");
-  }
-  const std::vector<int32_t> specialization = scene_specialization(scene_, setup_);
-  splat_ = std::make_unique<SplatPass>(context, setup_, layout_, splat_format_, specialization);
-  grid_ = std::make_unique<GridPass>(context, setup_, layout_, specialization);
-  if (setup_.splat_adjoint_pressure) pressure_ = std::make_unique<PressurePass>(context, layout_, specialization);
-  particle_update_ = std::make_unique<ParticleUpdatePass>(context, layout_, specialization);
-  state_ = std::make_unique<LiquidState>(context, setup_, layout_, splat_format_);
-  max_steps_per_frame_ = options.max_steps_per_frame > 0 ? options.max_steps_per_frame : scene.substeps;
-  uniforms_ = std::make_unique<engine::vk::UniformArena>(
-      context, engine::vk::UniformArena::frame_bytes({sizeof(gpu::SolverUniforms)}, max_steps_per_frame_),
-      options.frames_in_flight + 1);
-  grid_uniforms_ = std::make_unique<engine::vk::UniformArena>(
-      context, engine::vk::UniformArena::frame_bytes({sizeof(gpu::SolverUniforms)}), options.frames_in_flight + 1);
-  energy_bound_ = kinetic_energy_bound(scene_, setup_, options.energy_bound_factor);
-  time_step_ = setup_.time_step;
-  if (scene_.adaptive_time_step) {  // the first steps: the initial velocities at rest density
-    Diagnostics initial;
-    initial.max_density_ratio = 1.0f;
-    for (const glm::vec4& v : setup_.velocities) initial.max_speed = std::max(initial.max_speed, glm::length(glm::vec3(v)));
-    adapt_time_step(initial);
-  }
-  active_ = setup_.initial_particles;
-  emitted_.assign(scene.emitters.size(), 0);
-  pose_overrides_.resize(scene.obstacles.size());
-}
-
+    : simulation_(std::make_unique<Simulation>(context, scene, options)) {}
 LiquidNode::~LiquidNode() = default;
 
-void LiquidNode::set_runtime_parameters(const RuntimeParameters& p) {
-  if (!std::isfinite(p.gravity.x) || !std::isfinite(p.gravity.y) || !std::isfinite(p.gravity.z))
-    throw std::invalid_argument("liquid: gravity must be finite");
-  if (!(p.pic_ratio >= 0.0f && p.pic_ratio <= 1.0f)) throw std::invalid_argument("liquid: pic_ratio must be in [0, 1]");
-  if (!(p.stiffness >= 0.0f && std::isfinite(p.stiffness))) throw std::invalid_argument("liquid: stiffness must be >= 0");
-  setup_.gravity = p.gravity;
-  setup_.pic_ratio = p.pic_ratio;
-  setup_.stiffness = p.stiffness;
-}
+const Scene& LiquidNode::scene() const { return simulation_->scene(); }
+int LiquidNode::dimension() const { return simulation_->dimension(); }
+engine::vk::Context& LiquidNode::context() const { return simulation_->context(); }
+glm::ivec3 LiquidNode::grid_cells() const { return simulation_->setup().grid_cells; }
+float LiquidNode::cell_size() const { return simulation_->setup().cell_size; }
+GridPath LiquidNode::grid_path() const { return simulation_->grid_layout().path; }
+uint32_t LiquidNode::frames_in_flight() const { return simulation_->frames_in_flight(); }
 
+LiquidImages LiquidNode::add_to(engine::graph::RenderGraph& graph, int steps) { return simulation_->add_to(graph, steps); }
+int LiquidNode::substeps() const { return simulation_->substeps(); }
+int LiquidNode::max_steps_per_frame() const { return simulation_->max_steps_per_frame(); }
+double LiquidNode::time_step() const { return simulation_->time_step(); }
+double LiquidNode::adapt_time_step(const Diagnostics& d) { return simulation_->adapt_time_step(d); }
+void LiquidNode::set_time_step(double dt) { simulation_->set_time_step(dt); }
+
+void LiquidNode::set_brushes(std::vector<ForceBrush> brushes) { simulation_->set_brushes(std::move(brushes)); }
+RuntimeParameters LiquidNode::runtime_parameters() const { return simulation_->runtime_parameters(); }
+void LiquidNode::set_runtime_parameters(const RuntimeParameters& p) { simulation_->set_runtime_parameters(p); }
 void LiquidNode::set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity) {
-  if (index >= pose_overrides_.size())
-    throw std::out_of_range("liquid: obstacle " + std::to_string(index) + " does not exist");
-  pose_overrides_[index] = PoseOverride{center, velocity, time_};
+  simulation_->set_obstacle_pose(index, center, velocity);
 }
+std::vector<ObstaclePose> LiquidNode::obstacle_poses(double time) const { return simulation_->obstacle_poses(time); }
 
-std::vector<ObstaclePose> LiquidNode::obstacle_poses(double time) const {
-  std::vector<ObstaclePose> poses;
-  for (size_t i = 0; i < scene_.obstacles.size(); ++i) {
-    if (const auto& o = pose_overrides_[i])
-      poses.push_back({o->center + o->velocity * float(time - o->since), o->velocity});
-    else
-      poses.push_back(scripted_pose(scene_.obstacles[i], time));
-  }
-  return poses;
-}
+int LiquidNode::active_particles() const { return simulation_->active_particles(); }
+int LiquidNode::step_count() const { return simulation_->step_count(); }
+double LiquidNode::time() const { return simulation_->time(); }
 
-gpu::SolverUniforms LiquidNode::uniforms_for(const StepInputs& step) const {
-  gpu::SolverUniforms u = make_uniforms(scene_, setup_, step);
-  u.atlas_columns = layout_.tiles.x;
-  u.atlas_rows = layout_.tiles.y;
-  return u;
-}
-
-gpu::SolverUniforms LiquidNode::current_uniforms() const {
-  StepInputs inputs;
-  inputs.obstacle_poses = obstacle_poses(time_);
-  return uniforms_for(inputs);
-}
-
-std::vector<EmissionRange> LiquidNode::emit(double end_time, int& next_index) {
-  // Emitters (the paper's jet): this step's new particles take the next texels in order.
-  std::vector<EmissionRange> ranges;
-  for (size_t e = 0; e < scene_.emitters.size(); ++e) {
-    const int total = emitted_by(scene_.emitters[e], setup_.dimension, setup_.particle_spacing, end_time);
-    const int count = std::min(total - emitted_[e], setup_.capacity - next_index);
-    if (count <= 0) continue;
-    ranges.push_back({int(e), next_index, next_index + count});
-    next_index += count;
-    emitted_[e] += count;
-  }
-  return ranges;
-}
-
-LiquidNode::PressureImages LiquidNode::create_pressure_images(engine::graph::RenderGraph& graph) const {
-  if (!pressure_) return {};
-  return {graph.create_image("liquid.pressure", pressure_->image_desc()),
-          graph.create_image("liquid.potential", pressure_->image_desc())};
-}
-
-GridImages LiquidNode::add_grid(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
-                                ImageHandle splat, const GridImages& grids, PressureImages& pressure) const {
-  if (!pressure_) return grid_->add_to(graph, slice, splat, grids);
-  const ImageHandle potential = pressure_->add_to(graph, slice, splat, pressure.pressure, pressure.potential);
-  return grid_->add_to(graph, slice, splat, grids, potential);
-}
-
-LiquidImages LiquidNode::add_to(engine::graph::RenderGraph& graph, int steps) {
-  if (steps > max_steps_per_frame_)
-    throw std::invalid_argument("liquid: " + std::to_string(steps) + " steps in one frame, at most " +
-                                std::to_string(max_steps_per_frame_) + " (LiquidOptions::max_steps_per_frame)");
-  uniforms_->begin_frame();
-  LiquidState& s = *state_;
-  std::array<ParticleImages, 2> particles;
-  for (int i = 0; i < 2; ++i)
-    particles[i] = {graph.import_image(s.positions[i].name(), s.positions[i]),
-                    graph.import_image(s.velocities[i].name(), s.velocities[i])};
-  ImageHandle splat = graph.import_image(s.splat.name(), s.splat);
-  GridImages grids{graph.import_image(s.grid_velocity.name(), s.grid_velocity),
-                   graph.import_image(s.density.name(), s.density)};
-  PressureImages pressure = create_pressure_images(graph);
-
-  const float dt = float(time_step_);
-  for (int k = 0; k < steps; ++k) {
-    const double t1 = time_ + dt;
-    StepInputs step;
-    step.dt = dt;
-    step.active_before = active_;
-    int next_index = active_;
-    step.emissions = emit(t1, next_index);
-    step.active_after = next_index;
-    step.obstacle_poses = obstacle_poses(t1);
-    step.brushes = brushes_;
-    const engine::vk::UniformSlice slice = uniforms_->push(uniforms_for(step));
-
-    const int cur = s.current, next = 1 - s.current;
-    splat = splat_->add_to(graph, slice, particles[cur], splat, active_);
-    grids = add_grid(graph, slice, splat, grids, pressure);
-    particles[next] = particle_update_->add_to(graph, slice, particles[cur], splat, grids, particles[next],
-                                               step.active_after);
-    s.current = next;
-    active_ = step.active_after;
-    time_ = t1;
-    ++step_;
-  }
-  return {particles[s.current].positions, particles[s.current].velocities, splat, grids.velocity, grids.density};
-}
+ParticleSnapshot LiquidNode::read_particles() { return simulation_->read_particles(); }
+std::vector<float> LiquidNode::read_density_ratio() { return simulation_->read_density_ratio(); }
+std::vector<glm::vec4> LiquidNode::read_splat() { return simulation_->read_splat(); }
+std::vector<glm::vec4> LiquidNode::read_grid_velocity() { return simulation_->read_grid_velocity(); }
+Diagnostics LiquidNode::diagnose() { return simulation_->diagnose(); }
+Diagnostics LiquidNode::diagnose(const ParticleSnapshot& particles) { return simulation_->diagnose(particles); }
+double LiquidNode::energy_bound() const { return simulation_->energy_bound(); }
 
 LiquidImages LiquidNode::add_grids_to(engine::graph::RenderGraph& graph, const LiquidImages& images) {
-  grid_uniforms_->begin_frame();
-  StepInputs step;
-  step.dt = 0.0f;  // the grid pass then leaves the splatted velocity unaccelerated
-  step.active_before = step.active_after = active_;
-  step.obstacle_poses = obstacle_poses(time_);
-  step.brushes = brushes_;
-  const engine::vk::UniformSlice slice = grid_uniforms_->push(uniforms_for(step));
-  const ParticleImages particles{images.positions, images.velocities};
-  const ImageHandle splat = splat_->add_to(graph, slice, particles, images.splat, active_);
-  PressureImages pressure = create_pressure_images(graph);
-  const GridImages grids = add_grid(graph, slice, splat, GridImages{images.grid_velocity, images.density}, pressure);
-  return {images.positions, images.velocities, splat, grids.velocity, grids.density};
+  return simulation_->add_grids_to(graph, images);
 }
-
-LiquidNode::Checkpoint LiquidNode::save_checkpoint() {
-  Checkpoint c;
-  c.step = step_;
-  c.time = time_;
-  c.time_step = time_step_;
-  c.active = active_;
-  c.emitted = emitted_;
-  for (const auto& o : pose_overrides_)
-    c.poses.push_back(o ? Checkpoint::Pose{true, o->center, o->velocity, o->since} : Checkpoint::Pose{});
-  const size_t texels = size_t(setup_.particle_texture.x) * setup_.particle_texture.y;
-  c.positions = as_vector<glm::vec4>(engine::graph::download_image(context_, state_->positions[state_->current]), texels);
-  c.velocities =
-      as_vector<glm::vec4>(engine::graph::download_image(context_, state_->velocities[state_->current]), texels);
-  return c;
-}
-
-void LiquidNode::restore_checkpoint(const Checkpoint& c) {
-  const size_t texels = size_t(setup_.particle_texture.x) * setup_.particle_texture.y;
-  if (c.positions.size() != texels || c.velocities.size() != texels || c.emitted.size() != emitted_.size() ||
-      c.poses.size() != pose_overrides_.size() || c.active < 0 || c.active > setup_.capacity)
-    throw std::invalid_argument("liquid: the checkpoint does not match this scene (" + std::to_string(c.positions.size()) +
-                                " particle texels, " + std::to_string(c.emitted.size()) + " emitters, " +
-                                std::to_string(c.poses.size()) + " obstacles; the scene has " + std::to_string(texels) +
-                                ", " + std::to_string(emitted_.size()) + ", " + std::to_string(pose_overrides_.size()) + ")");
-  engine::graph::upload_image(context_, state_->positions[state_->current], std::as_bytes(std::span(c.positions)));
-  engine::graph::upload_image(context_, state_->velocities[state_->current], std::as_bytes(std::span(c.velocities)));
-  step_ = c.step;
-  time_ = c.time;
-  time_step_ = c.time_step > 0.0 ? c.time_step : double(setup_.time_step);
-  active_ = c.active;
-  emitted_ = c.emitted;
-  for (size_t i = 0; i < c.poses.size(); ++i) {
-    const Checkpoint::Pose& p = c.poses[i];
-    pose_overrides_[i] = p.overridden ? std::optional(PoseOverride{p.center, p.velocity, p.since}) : std::nullopt;
-  }
-}
-
-ParticleSnapshot LiquidNode::read_particles() {
-  ParticleSnapshot snapshot;
-  snapshot.positions =
-      as_vector<glm::vec4>(engine::graph::download_image(context_, state_->positions[state_->current]), size_t(active_));
-  snapshot.velocities =
-      as_vector<glm::vec4>(engine::graph::download_image(context_, state_->velocities[state_->current]), size_t(active_));
-  return snapshot;
-}
-
-std::vector<float> LiquidNode::read_density_ratio() {
-  const auto bytes = engine::graph::download_image(context_, state_->density);
-  std::vector<float> ratio(bytes.size() / 2);
-  const uint16_t* halves = reinterpret_cast<const uint16_t*>(bytes.data());
-  for (size_t i = 0; i < ratio.size(); ++i) ratio[i] = glm::unpackHalf1x16(halves[i]);
-  return layout_.to_linear(ratio);
-}
-
-std::vector<glm::vec4> LiquidNode::read_splat() {
-  const engine::vk::ImageDesc& d = state_->splat.desc();
-  const size_t texels = size_t(d.width) * d.height * d.depth_or_layers;
-  const auto bytes = engine::graph::download_image(context_, state_->splat);
-  if (d.format == VK_FORMAT_R32G32B32A32_SFLOAT) return layout_.to_linear(as_vector<glm::vec4>(bytes, texels));
-  std::vector<glm::vec4> out(texels);
-  const uint16_t* halves = reinterpret_cast<const uint16_t*>(bytes.data());
-  for (size_t i = 0; i < texels; ++i)
-    for (int c = 0; c < 4; ++c) out[i][c] = glm::unpackHalf1x16(halves[i * 4 + c]);
-  return layout_.to_linear(out);
-}
-
-std::vector<glm::vec4> LiquidNode::read_grid_velocity() {
-  const engine::vk::ImageDesc& d = state_->grid_velocity.desc();
-  const size_t texels = size_t(d.width) * d.height * d.depth_or_layers;
-  return layout_.to_linear(as_vector<glm::vec4>(engine::graph::download_image(context_, state_->grid_velocity), texels));
-}
-
-Diagnostics LiquidNode::diagnose() { return diagnose(read_particles()); }
-
-Diagnostics LiquidNode::diagnose(const ParticleSnapshot& particles) {
-  Diagnostics d =
-      compute_diagnostics(scene_, setup_, particles, read_density_ratio(), obstacle_poses(time_), step_, time_);
-  d.time_step = time_step_;  // the steps just run took it (adapt_time_step() comes after a diagnosis)
-  check_stable(d, energy_bound_);
-  return d;
-}
-
-double LiquidNode::adapt_time_step(const Diagnostics& d) {
-  if (scene_.adaptive_time_step)
-    time_step_ = cfl_time_step(setup_, *scene_.adaptive_time_step, d, double(setup_.time_step));
-  return time_step_;
-}
-
-void LiquidNode::set_time_step(double dt) {
-  if (!std::isfinite(dt) || dt <= 0.0 || dt > double(setup_.time_step))
-    throw std::invalid_argument("liquid: time step " + std::to_string(dt) + " s must be in (0, " +
-                                std::to_string(setup_.time_step) + "] s (the scene's time_step)");
-  time_step_ = dt;
-}
+Checkpoint LiquidNode::save_checkpoint() { return simulation_->save_checkpoint(); }
+void LiquidNode::restore_checkpoint(const Checkpoint& checkpoint) { simulation_->restore_checkpoint(checkpoint); }
 
 }  // namespace liquid

@@ -1,7 +1,8 @@
 #include "engine/passes/fxaa.h"
 
-#include "engine_shaders.h"
+#include "engine/passes/bindings.h"
 #include "engine/passes/fullscreen.h"
+#include "engine_shaders.h"
 
 #include <stdexcept>
 
@@ -35,17 +36,18 @@ graph::ImageHandle FxaaPass::add_to(graph::RenderGraph& graph, graph::ImageHandl
     throw std::logic_error("fxaa: input '" + graph.image_name(input) + "' is not a 2D image of the pass's format");
   desc.usage = 0;
   struct Data {
+    PassBindings bindings;
     graph::ImageHandle output;
   };
   const Data& data = graph.add_pass<Data>(
       name,
       [&](graph::PassBuilder& builder, Data& d) {
-        builder.read(input, graph::Access::FragmentSampled);
+        d.bindings = PassBindings(pipeline_);
+        d.bindings.bind_image(builder, 0, input, sampler_.handle());
         d.output = builder.write(builder.create(name + ".output", desc), graph::Access::ColorAttachmentWrite);
       },
-      [this, input, settings](graph::PassContext& ctx, const Data&) {
-        pipeline_.bind(ctx.cmd, ctx.width, ctx.height);
-        pipeline_.push_image(ctx.cmd, 0, ctx.image(input).sampled_view(), sampler_.handle());
+      [this, settings](graph::PassContext& ctx, const Data& d) {
+        d.bindings.bind_and_push(ctx);
         const FxaaPush push{{1.0f / float(ctx.width), 1.0f / float(ctx.height)},
                             settings.edge_threshold,
                             settings.edge_threshold_min,

@@ -98,8 +98,10 @@ std::string lower(std::string s) {
 
 Context::Context(const ContextOptions& options) : print_messages_(options.print_validation_messages) {
   std::string preference = options.device;
+  // RASTERLIQUIDS_DEVICE, or LIQUID_DEVICE, its name before the engine had one of its own.
   if (preference.empty())
-    if (const char* env = std::getenv("LIQUID_DEVICE")) preference = env;
+    for (const char* variable : {"RASTERLIQUIDS_DEVICE", "LIQUID_DEVICE"})
+      if (const char* env = std::getenv(variable); env && preference.empty()) preference = env;
   try {
     create_instance(options);
     pick_physical_device(preference, options);

@@ -21,7 +21,7 @@ const Required k_required[] = {
     {"synchronization2", [](DeviceFeatures& f) -> VkBool32& { return f.v13.synchronization2; }},
 };
 
-// Used where the device has them; each picks a way of rendering the 3D grids (liquid/grid_layout.h):
+// Used where the device has them; each picks a way of rendering the 3D grids (liquid/solver/grid_layout.h):
 // geometry shaders route full-screen passes to a slice, shaderOutputLayer lets a vertex shader do it.
 // Without either, 3D grids are stored as 2D atlases of their slices; 2D scenes need neither.
 const Required k_optional[] = {

@@ -10,11 +10,11 @@
 
 #include "engine/graph/render_graph.h"
 #include "engine/graph/transfer.h"
+#include "engine/io/png.h"
 #include "engine/vk/context.h"
-#include "engine/vk/png.h"
+#include "liquid/camera.h"
 #include "liquid/node.h"
-#include "liquid/render/camera.h"
-#include "liquid/render/renderer.h"
+#include "liquid/renderer.h"
 #include "liquid/scene.h"
 
 #include <array>
@@ -107,7 +107,7 @@ int run(const Options& o) {
   liquid::LiquidNode node(context, scene, liquid::LiquidOptions{.frames_in_flight = k_frames_in_flight});
   liquid::LiquidRenderer renderer(
       context, node, liquid::RenderSettings{.width = o.width, .height = o.height, .composite = true});
-  const liquid::CameraView camera = liquid::default_camera(node.scene(), node.setup());
+  const liquid::CameraView camera = liquid::default_camera(node);
   const glm::mat4 view_projection = renderer.view_projection(camera);  // the host draws with the same matrix
   ScenePass scene_pass(context);
 

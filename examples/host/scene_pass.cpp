@@ -2,7 +2,7 @@
 
 #include "engine/vk/context.h"
 #include "host_shaders.h"
-#include "liquid/render/renderer.h"
+#include "liquid/renderer.h"
 
 namespace {
 

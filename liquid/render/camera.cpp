@@ -1,7 +1,9 @@
-#include "liquid/render/camera.h"
+#include "liquid/camera.h"
 
+#include "liquid/node.h"
+#include "liquid/physics/setup.h"
 #include "liquid/render/height_field.h"
-#include "liquid/setup.h"
+#include "liquid/solver/simulation.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -9,7 +11,9 @@
 
 namespace liquid {
 
-CameraView default_camera(const Scene& scene, const SimulationSetup& setup) {
+CameraView default_camera(const LiquidNode& node) {
+  const Scene& scene = node.scene();
+  const SimulationSetup& setup = node.simulation().setup();
   if (setup.shallow_water) return default_height_field_camera(scene, setup);
   if (scene.camera) {
     const Camera& c = *scene.camera;

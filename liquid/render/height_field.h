@@ -6,12 +6,13 @@
 #include "engine/graph/render_graph.h"
 #include "engine/vk/buffer.h"
 #include "engine/vk/pipeline.h"
-#include "engine/vk/uniform_arena.h"
 #include "engine/vk/sampler.h"
+#include "engine/vk/uniform_arena.h"
+#include "liquid/camera.h"
 #include "liquid/node.h"
-#include "liquid/render/camera.h"
-#include "liquid/render/renderer.h"
+#include "liquid/physics/setup.h"
 #include "liquid/render/view_uniforms.h"
+#include "liquid/renderer.h"
 
 namespace liquid {
 

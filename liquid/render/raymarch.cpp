@@ -2,20 +2,16 @@
 
 #include "engine/passes/bindings.h"
 #include "engine/passes/fullscreen.h"
+#include "liquid/solver/images.h"
+#include "liquid/solver/simulation.h"
+#include "liquid/solver/specialization.h"
+#include "liquid/solver/uniforms.h"
 #include "liquid_shaders.h"
-#include "liquid/specialization.h"
-#include "liquid/uniforms.h"
 #include "shaders/liquid/render/view_blocks.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
 
 namespace liquid {
-
-using engine::graph::Access;
-using engine::graph::ImageHandle;
-using engine::graph::PassBuilder;
-using engine::graph::PassContext;
-using engine::vk::DescriptorKind;
 
 namespace {
 
@@ -24,7 +20,7 @@ constexpr float k_fine_step_cells = 0.6f;
 // The scene's constants plus the raymarch's own (constant_id LIQUID_RAYMARCH_COMPOSITE_ID).
 std::vector<int32_t> raymarch_specialization(const LiquidNode& node, bool composite) {
   static_assert(LIQUID_RAYMARCH_COMPOSITE_ID == specialization_id::count, "the raymarch's constant follows the scene's");
-  std::vector<int32_t> constants = scene_specialization(node.scene(), node.setup());
+  std::vector<int32_t> constants = scene_specialization(node.scene(), node.simulation().setup());
   constants.push_back(composite ? 1 : 0);
   return constants;
 }
@@ -38,7 +34,7 @@ glm::mat4 raymarch_view_projection(const SimulationSetup& setup, const CameraVie
 
 RaymarchPass::RaymarchPass(engine::vk::Context& context, const LiquidNode& node, bool composite)
     : node_(node),
-      bricks_(3, (node.setup().grid_cells + k_brick_cells - 1) / k_brick_cells, node.grid_layout().path),
+      bricks_(3, (node.simulation().setup().grid_cells + k_brick_cells - 1) / k_brick_cells, node.simulation().grid_layout().path),
       occupancy_(context, engine::vk::GraphicsPipelineDesc{
                               .name = "liquid.occupancy",
                               .vertex = grid_pass_shaders(bricks_).vertex,
@@ -75,11 +71,11 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
   if (bool(targets) != composite_)
     throw std::logic_error(composite_ ? "liquid.raymarch: a compositing pass draws into host targets"
                                       : "liquid.raymarch: host targets need a compositing pass");
-  const SimulationSetup& setup = node_.setup();
+  const SimulationSetup& setup = node_.simulation().setup();
   const engine::vk::UniformSlice solver = uniforms_.begin_frame();
 
   const glm::ivec3 bricks = bricks_.cells;
-  const GridLayout& grid = node_.grid_layout();
+  const GridLayout& grid = node_.simulation().grid_layout();
   const glm::mat4 vp = raymarch_view_projection(setup, camera, float(settings.width) / float(settings.height));
   gpu::RaymarchUniforms render{};
   render.inverse_view_projection = glm::inverse(vp);

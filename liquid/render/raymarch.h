@@ -6,11 +6,12 @@
 #include "engine/vk/pipeline.h"
 #include "engine/vk/sampler.h"
 #include "engine/vk/uniform_arena.h"
-#include "liquid/grid_layout.h"
+#include "liquid/camera.h"
 #include "liquid/node.h"
-#include "liquid/render/camera.h"
-#include "liquid/render/renderer.h"
+#include "liquid/physics/setup.h"
 #include "liquid/render/view_uniforms.h"
+#include "liquid/renderer.h"
+#include "liquid/solver/grid_layout.h"
 
 namespace liquid {
 

@@ -1,9 +1,10 @@
-#include "liquid/render/renderer.h"
+#include "liquid/renderer.h"
 
 #include "engine/vk/context.h"
 #include "liquid/render/height_field.h"
 #include "liquid/render/raymarch.h"
 #include "liquid/render/view2d.h"
+#include "liquid/solver/simulation.h"
 
 #include <stdexcept>
 #include <string>
@@ -16,7 +17,7 @@ LiquidRenderer::LiquidRenderer(engine::vk::Context& context, const LiquidNode& n
   if (settings.width == 0 || settings.height == 0 || settings.width > limit || settings.height > limit)
     throw std::invalid_argument("frame size " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
                                 " is outside the device's limit of 1.." + std::to_string(limit) + " pixels per side");
-  const SimulationSetup& setup = node.setup();
+  const SimulationSetup& setup = node.simulation().setup();
   if (setup.shallow_water)
     height_field_ = std::make_unique<HeightFieldPass>(context, node);
   else if (setup.dimension == 3)
@@ -29,7 +30,7 @@ LiquidRenderer::LiquidRenderer(engine::vk::Context& context, const LiquidNode& n
 }
 
 glm::mat4 LiquidRenderer::view_projection(const CameraView& camera) const {
-  return raymarch_view_projection(node_.setup(), camera, float(settings_.width) / float(settings_.height));
+  return raymarch_view_projection(node_.simulation().setup(), camera, float(settings_.width) / float(settings_.height));
 }
 
 LiquidRenderer::~LiquidRenderer() = default;

@@ -2,9 +2,11 @@
 
 #include "engine/passes/bindings.h"
 #include "engine/passes/fullscreen.h"
+#include "liquid/solver/images.h"
+#include "liquid/solver/simulation.h"
+#include "liquid/solver/specialization.h"
+#include "liquid/solver/uniforms.h"
 #include "liquid_shaders.h"
-#include "liquid/specialization.h"
-#include "liquid/uniforms.h"
 #include "shaders/liquid/render/view_blocks.h"
 
 #include <algorithm>
@@ -12,12 +14,6 @@
 #include <stdexcept>
 
 namespace liquid {
-
-using engine::graph::Access;
-using engine::graph::ImageHandle;
-using engine::graph::PassBuilder;
-using engine::graph::PassContext;
-using engine::vk::DescriptorKind;
 
 namespace {
 
@@ -58,7 +54,7 @@ View2dPass::View2dPass(engine::vk::Context& context, const LiquidNode& node)
                            .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
                                         {LIQUID_BINDING_VIEW2D_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
                            .push_constant_size = sizeof(View2dPush),
-                           .specialization = scene_specialization(node.scene(), node.setup())}),
+                           .specialization = scene_specialization(node.scene(), node.simulation().setup())}),
       particles_(context, engine::vk::GraphicsPipelineDesc{
                               .name = "liquid.view2d.particles",
                               .vertex = liquid_shaders::particles2d_vert,
@@ -74,7 +70,7 @@ View2dPass::View2dPass(engine::vk::Context& context, const LiquidNode& node)
 
 ImageHandle View2dPass::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
                                const RenderSettings& settings) {
-  const SimulationSetup& setup = node_.setup();
+  const SimulationSetup& setup = node_.simulation().setup();
   const engine::vk::UniformSlice solver = uniforms_.begin_frame();
 
   const View2dLayout layout = fit_view2d(glm::vec2(setup.domain), settings.width, settings.height);

@@ -7,8 +7,8 @@
 #include "engine/vk/sampler.h"
 #include "engine/vk/uniform_arena.h"
 #include "liquid/node.h"
-#include "liquid/render/renderer.h"
 #include "liquid/render/view_uniforms.h"
+#include "liquid/renderer.h"
 
 #include <glm/glm.hpp>
 

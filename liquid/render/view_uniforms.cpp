@@ -1,4 +1,5 @@
 #include "liquid/render/view_uniforms.h"
+#include "liquid/solver/simulation.h"
 
 namespace liquid {
 
@@ -9,7 +10,7 @@ ViewUniforms::ViewUniforms(engine::vk::Context& context, const LiquidNode& node,
 
 engine::vk::UniformSlice ViewUniforms::begin_frame() {
   arena_.begin_frame();
-  return arena_.push(node_.current_uniforms());
+  return arena_.push(node_.simulation().current_uniforms());
 }
 
 }  // namespace liquid

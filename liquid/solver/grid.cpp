@@ -2,18 +2,14 @@
 
 #include "engine/passes/bindings.h"
 #include "engine/passes/fullscreen.h"
+#include "liquid/solver/images.h"
+#include "liquid/solver/state.h"
+#include "liquid/solver/uniforms.h"
 #include "liquid_shaders.h"
-#include "liquid/state.h"
-#include "liquid/uniforms.h"
 
 #include <stdexcept>
 
 namespace liquid {
-
-using engine::graph::Access;
-using engine::graph::PassBuilder;
-using engine::graph::PassContext;
-using engine::vk::DescriptorKind;
 
 namespace {
 

@@ -2,16 +2,12 @@
 
 #include "engine/passes/bindings.h"
 #include "engine/passes/fullscreen.h"
+#include "liquid/solver/images.h"
+#include "liquid/solver/state.h"
+#include "liquid/solver/uniforms.h"
 #include "liquid_shaders.h"
-#include "liquid/state.h"
-#include "liquid/uniforms.h"
 
 namespace liquid {
-
-using engine::graph::Access;
-using engine::graph::PassBuilder;
-using engine::graph::PassContext;
-using engine::vk::DescriptorKind;
 
 ParticleUpdatePass::ParticleUpdatePass(engine::vk::Context& context, const GridLayout& layout,
                                        const std::vector<int32_t>& specialization)

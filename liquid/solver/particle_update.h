@@ -7,8 +7,8 @@
 #include "engine/vk/pipeline.h"
 #include "engine/vk/sampler.h"
 #include "engine/vk/uniform_arena.h"
-#include "liquid/grid_layout.h"
-#include "liquid/setup.h"
+#include "liquid/physics/setup.h"
+#include "liquid/solver/grid_layout.h"
 #include "liquid/solver/images.h"
 
 #include <cstdint>

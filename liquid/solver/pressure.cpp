@@ -2,15 +2,11 @@
 
 #include "engine/passes/bindings.h"
 #include "engine/passes/fullscreen.h"
+#include "liquid/solver/images.h"
+#include "liquid/solver/uniforms.h"
 #include "liquid_shaders.h"
-#include "liquid/uniforms.h"
 
 namespace liquid {
-
-using engine::graph::Access;
-using engine::graph::PassBuilder;
-using engine::graph::PassContext;
-using engine::vk::DescriptorKind;
 
 namespace {
 

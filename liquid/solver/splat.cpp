@@ -1,17 +1,13 @@
 #include "liquid/solver/splat.h"
 
 #include "engine/passes/bindings.h"
+#include "liquid/solver/images.h"
+#include "liquid/solver/uniforms.h"
 #include "liquid_shaders.h"
-#include "liquid/uniforms.h"
 
 #include <cmath>
 
 namespace liquid {
-
-using engine::graph::Access;
-using engine::graph::PassBuilder;
-using engine::graph::PassContext;
-using engine::vk::DescriptorKind;
 
 namespace {
 

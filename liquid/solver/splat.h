@@ -1,14 +1,14 @@
 // Section 3, the splat: every active particle drawn once as a point (once per slice it reaches in
 // 3D) and its kernel w = (1 - d^2/r^2)^3 accumulated by additive blending into the splat grid:
 // rgb = sum w u, a = sum w. Shaders: shaders/liquid/solver/splat.vert, splat.frag (and splat.geom on
-// the geometry-shader path, liquid/grid_layout.h).
+// the geometry-shader path, liquid/solver/grid_layout.h).
 #pragma once
 
 #include "engine/vk/pipeline.h"
 #include "engine/vk/sampler.h"
 #include "engine/vk/uniform_arena.h"
-#include "liquid/grid_layout.h"
-#include "liquid/setup.h"
+#include "liquid/physics/setup.h"
+#include "liquid/solver/grid_layout.h"
 #include "liquid/solver/images.h"
 
 #include <cstdint>

@@ -13,7 +13,7 @@ layout(std140, set = 0, binding = LIQUID_BINDING_SOLVER_UNIFORMS) uniform Solver
 
 // ---- Scene features, fixed when a pipeline is created (specialization constants) ----
 // Every pipeline whose shaders include this file passes liquid::scene_specialization(setup)
-// (liquid/specialization.cpp; a CPU test checks these ids against it). Why not uniforms: lavapipe
+// (liquid/solver/specialization.cpp; a CPU test checks these ids against it). Why not uniforms: lavapipe
 // runs both sides of every branch for every fragment (masked SIMD lanes) and a loop's body at least
 // once, so code a scene does not use still costs there, and an obstacle index that varies in a loop
 // turns each of its uniform reads into a per-lane gather. With constant counts and kinds the

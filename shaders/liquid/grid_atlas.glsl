@@ -1,4 +1,4 @@
-// A 3D grid stored as a 2D atlas of its slices (the "atlas" path, liquid/grid_layout.h): slice z of
+// A 3D grid stored as a 2D atlas of its slices (the "atlas" path, liquid/solver/grid_layout.h): slice z of
 // a grid of `cells` is the tile (z % tiles.x, z / tiles.x) of an image of cells.xy * tiles texels.
 // The one place shaders map cells to atlas texels and back, and interpolate across slices.
 // The divisions are done in float: lavapipe has no vector integer division, so an int one runs

@@ -1,7 +1,8 @@
 // The one source of every number and layout the liquid's C++ and GLSL share: limits, obstacle-kind
 // codes, descriptor binding numbers and the solver's per-step uniform block. Included by
-// liquid/gpu_types.h (C++, std140 checked by static_asserts there and by a SPIR-V reflection test)
-// and by shaders/liquid/common.glsl.
+// liquid/solver/gpu_types.h (C++, std140 checked by static_asserts there and by a SPIR-V reflection
+// test), directly by the scene checks and CPU physics for the limits, and by
+// shaders/liquid/common.glsl.
 #ifndef LIQUID_SHARED_H
 #define LIQUID_SHARED_H
 
@@ -61,6 +62,19 @@ using glm::mat4;
 using glm::vec2;
 using glm::vec3;
 using glm::vec4;
+// The limits and codes above under C++ names, for the scene checks and the CPU physics, which
+// include this file directly (it sits below every folder of liquid/).
+constexpr int k_max_obstacles = LIQUID_MAX_OBSTACLES;
+constexpr int k_max_balls = LIQUID_MAX_BALLS;
+constexpr int k_max_ground_hills = LIQUID_MAX_GROUND_HILLS;
+constexpr int k_max_brushes = LIQUID_MAX_BRUSHES;
+constexpr int k_max_emitters = LIQUID_MAX_EMITTERS;
+constexpr int k_max_kernel_radius_cells = LIQUID_MAX_KERNEL_RADIUS_CELLS;
+constexpr int k_wall_table_size = LIQUID_WALL_TABLE_SIZE;
+
+constexpr int k_obstacle_sphere = LIQUID_OBSTACLE_SPHERE;
+constexpr int k_obstacle_box = LIQUID_OBSTACLE_BOX;
+constexpr int k_obstacle_metaballs = LIQUID_OBSTACLE_METABALLS;
 }  // namespace liquid::gpu
 #define LIQUID_STRUCT(name) struct alignas(16) name
 #define LIQUID_ALIGN16 alignas(16)
@@ -119,7 +133,7 @@ LIQUID_STRUCT(SolverUniforms) {
   int brush_count;
   int emission_count;      // emitters adding particles this step
   float rest_depth;        // shallow water: depth at rest, m
-  int atlas_columns;       // the atlas path: columns and rows of slice tiles (liquid/grid_layout.h);
+  int atlas_columns;       // the atlas path: columns and rows of slice tiles (liquid/solver/grid_layout.h);
   int atlas_rows;          // 1 and 1 otherwise
   // Fraction of the kernel's mass beyond a wall k + 0.5 cells from a cell centre: [k / 4][k % 4].
   LIQUID_ALIGN16 vec4 wall_kernel_beyond[LIQUID_WALL_TABLE_SIZE / 4];

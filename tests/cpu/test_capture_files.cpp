@@ -2,7 +2,7 @@
 // scene fields overridden the way --set does it, checked like the file.
 #include "liquid/export/volume.h"
 #include "liquid/scene.h"
-#include "liquid/scene_override.h"
+#include "liquid/scene/override.h"
 
 #include <catch2/catch.hpp>
 

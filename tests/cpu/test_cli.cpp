@@ -1,6 +1,6 @@
-// The tools' number checks (tools/cli.h): CLI11's own Range lets "nan" through (every comparison
+// The tools' number checks (tools/common/cli.h): CLI11's own Range lets "nan" through (every comparison
 // with NaN is false) and calls "abc" "not in range"; these must refuse both, naming which it is.
-#include "tools/cli.h"
+#include "tools/common/cli.h"
 
 #include <catch2/catch.hpp>
 

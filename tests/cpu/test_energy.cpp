@@ -1,8 +1,8 @@
 // Energy diagnostics on the CPU: potential energy from the domain's floor along gravity, and the
 // mechanical energy as kinetic plus potential.
-#include "liquid/diagnostics.h"
+#include "liquid/analysis/diagnostics.h"
+#include "liquid/physics/setup.h"
 #include "liquid/scene.h"
-#include "liquid/setup.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,7 +1,7 @@
 // The CPU side of the 3D paths: which path a device gets, the atlas's tiling and its read-back
 // conversion, and the splat format's fallback.
-#include "liquid/grid_layout.h"
-#include "liquid/state.h"
+#include "liquid/solver/grid_layout.h"
+#include "liquid/solver/state.h"
 
 #include <catch2/catch.hpp>
 

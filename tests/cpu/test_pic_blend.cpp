@@ -1,9 +1,9 @@
-// The PIC/FLIP blend as a rate (liquid/pic_blend.h): the scene key, the arithmetic, and the
+// The PIC/FLIP blend as a rate (liquid/physics/pic_blend.h): the scene key, the arithmetic, and the
 // uniform block's blend for the step it is built for.
-#include "liquid/pic_blend.h"
+#include "liquid/physics/pic_blend.h"
+#include "liquid/physics/setup.h"
 #include "liquid/scene.h"
-#include "liquid/setup.h"
-#include "liquid/uniforms.h"
+#include "liquid/solver/uniforms.h"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>

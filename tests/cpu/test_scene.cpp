@@ -44,6 +44,13 @@ Json valid_3d() {
 
 Scene parse(const Json& j) { return parse_scene(j.dump(2), "dam.json"); }
 
+// valid_2d() with `key` set to `value` (JSON text) is refused with a message containing `message`.
+void refused_with(const char* key, const char* value, const std::string& message) {
+  Json j = valid_2d();
+  j[key] = Json::parse(value);
+  REQUIRE_THROWS_WITH(parse(j), Contains(message));
+}
+
 }  // namespace
 
 TEST_CASE("every shipped scene loads", "[scene]") {
@@ -201,10 +208,9 @@ TEST_CASE("malformed scenes are rejected naming the file and field", "[scene]") 
     REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: fluid_blocks[0].veloctiy: unknown key"));
   }
   SECTION("a key of another obstacle shape") {
-    Json j = valid_2d();
-    j["obstacles"] = Json::parse(R"([{ "shape": "sphere", "center": [0.5, 0.2], "radius": 0.1,
-                                       "half_extent": [0.1, 0.1] }])");
-    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: obstacles[0].half_extent: unknown key"));
+    refused_with("obstacles", R"([{ "shape": "sphere", "center": [0.5, 0.2], "radius": 0.1,
+                                       "half_extent": [0.1, 0.1] }])",
+                 "dam.json: obstacles[0].half_extent: unknown key");
   }
   SECTION("wrong type") {
     Json j = valid_2d();
@@ -284,27 +290,23 @@ TEST_CASE("malformed scenes are rejected naming the file and field", "[scene]") 
     REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: stiffness: not used in shallow_water mode"));
   }
   SECTION("ground in liquid mode") {
-    Json j = valid_2d();
-    j["ground"] = Json::parse(R"([{ "center": [0.5, 0.3], "height": 0.02, "width": 0.1 }])");
-    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: ground: only allowed in shallow_water mode"));
+    refused_with("ground", R"([{ "center": [0.5, 0.3], "height": 0.02, "width": 0.1 }])",
+                 "dam.json: ground: only allowed in shallow_water mode");
   }
   SECTION("emitter with zero velocity") {
-    Json j = valid_2d();
-    j["emitters"] = Json::parse(R"([{ "position": [0.5, 0.5], "velocity": [0, 0], "radius": 0.02,
-                                      "capacity": 100 }])");
-    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: emitters[0].velocity: must be nonzero"));
+    refused_with("emitters", R"([{ "position": [0.5, 0.5], "velocity": [0, 0], "radius": 0.02,
+                                      "capacity": 100 }])",
+                 "dam.json: emitters[0].velocity: must be nonzero");
   }
   SECTION("emitter stopping before it starts") {
-    Json j = valid_2d();
-    j["emitters"] = Json::parse(R"([{ "position": [0.5, 0.5], "velocity": [1, 0], "radius": 0.02,
-                                      "start_time": 1.0, "stop_time": 0.5, "capacity": 100 }])");
-    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: emitters[0].stop_time: must be greater than start_time"));
+    refused_with("emitters", R"([{ "position": [0.5, 0.5], "velocity": [1, 0], "radius": 0.02,
+                                      "start_time": 1.0, "stop_time": 0.5, "capacity": 100 }])",
+                 "dam.json: emitters[0].stop_time: must be greater than start_time");
   }
   SECTION("emitter capacity that is not an integer") {
-    Json j = valid_2d();
-    j["emitters"] = Json::parse(R"([{ "position": [0.5, 0.5], "velocity": [1, 0], "radius": 0.02,
-                                      "capacity": 10.5 }])");
-    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: emitters[0].capacity: must be an integer, got 10.5"));
+    refused_with("emitters", R"([{ "position": [0.5, 0.5], "velocity": [1, 0], "radius": 0.02,
+                                      "capacity": 10.5 }])",
+                 "dam.json: emitters[0].capacity: must be an integer, got 10.5");
   }
   SECTION("camera in 2D") {
     Json j = valid_2d();
@@ -312,10 +314,9 @@ TEST_CASE("malformed scenes are rejected naming the file and field", "[scene]") 
     REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: camera: only allowed in 3D scenes"));
   }
   SECTION("metaballs threshold outside (0, 1)") {
-    Json j = valid_2d();
-    j["obstacles"] = Json::parse(R"([{ "shape": "metaballs", "balls": [{ "center": [0.5, 0.2], "radius": 0.1 }],
-                                       "threshold": 1 }])");
-    REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: obstacles[0].threshold: must be in (0, 1), got 1"));
+    refused_with("obstacles", R"([{ "shape": "metaballs", "balls": [{ "center": [0.5, 0.2], "radius": 0.1 }],
+                                       "threshold": 1 }])",
+                 "dam.json: obstacles[0].threshold: must be in (0, 1), got 1");
   }
   SECTION("rest density that is neither a number nor auto") {
     Json j = valid_2d();

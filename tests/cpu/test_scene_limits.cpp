@@ -2,6 +2,7 @@
 // (and the field), within a stated time. The loader used to be quadratic in the number of objects
 // (200,000 empty objects in one array took 4.8 s; a 50 MB file was read whole and took 11 s and
 // 1.2 GB before being refused), so the timings here are the finding's test.
+#include "liquid/physics/setup.h"
 #include "liquid/scene.h"
 #include "tests/support/scenes.h"
 
@@ -140,4 +141,37 @@ TEST_CASE("a folder or a device given as the scene is named as such", "[scene][l
   REQUIRE_THROWS_WITH(load_scene("/dev/zero"), "/dev/zero: larger than the 4 MiB a scene file may be");
   REQUIRE_THROWS_WITH(load_scene(test_scenes::k_scene_dir / "no_such_scene.json"),
                       Contains("no_such_scene.json: cannot open scene file (No such file or directory)"));
+}
+
+TEST_CASE("the solver's list limits hold for a scene file and for a scene built in code", "[scene][limits]") {
+  // From a file: the reader refuses the ninth obstacle, naming the file and the list.
+  const std::string sphere = R"({"shape": "sphere", "center": [0.8, 0.1], "radius": 0.01})";
+  std::string obstacles = sphere;
+  for (int i = 1; i < 9; ++i) obstacles += ", " + sphere;
+  const std::string text = R"({"dimension": 2, "domain": [1.0, 0.6], "particle_spacing": 0.01,
+    "fluid_blocks": [{"min": [0.0, 0.0], "max": [0.3, 0.45]}], "obstacles": [)" + obstacles + "]}";
+  REQUIRE_THROWS_WITH(parse_scene(text, "nine.json"), "nine.json: obstacles: at most 8 are supported, got 9");
+  // Built in code, past the reader: make_setup refuses it before any stage indexes the solver's
+  // fixed-size arrays (obstacles, metaballs, ground hills, emitters).
+  Scene scene = test_scenes::scene_of("obstacles_2d.json");
+  scene.source.clear();
+  scene.name = "code";
+  const auto refused = [](const Scene& s, const std::string& message) {
+    REQUIRE_THROWS_AS(make_setup(s, {}), SceneError);
+    REQUIRE_THROWS_WITH(make_setup(s, {}), message);
+  };
+  Scene many = scene;
+  many.obstacles.resize(9, scene.obstacles.front());
+  refused(many, "code: obstacles: at most 8 are supported, got 9");
+  Scene balls = scene;
+  balls.obstacles.resize(1);
+  balls.obstacles[0].shape = ObstacleShape::Metaballs;
+  balls.obstacles[0].balls.resize(33);
+  refused(balls, "code: obstacles: at most 32 metaballs in all are supported, got 33");
+  Scene emitters = scene;
+  emitters.emitters.resize(5);
+  refused(emitters, "code: emitters: at most 4 are supported, got 5");
+  Scene hills = scene;
+  hills.ground.resize(17);
+  refused(hills, "code: ground: at most 16 are supported, got 17");
 }

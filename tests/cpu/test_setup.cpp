@@ -1,8 +1,8 @@
 // Derived setup with no GPU: grid sizing (section 7's N^(1/d) rule), the deterministic particle
 // lattice, kernel normalisation and rest density, emitters, device limits, and the physical
 // sanity of every shipped scene.
-#include "liquid/setup.h"
-#include "liquid/time_step.h"
+#include "liquid/physics/setup.h"
+#include "liquid/physics/time_step.h"
 #include "tests/support/scenes.h"
 
 #include <catch2/catch.hpp>
@@ -427,12 +427,12 @@ TEST_CASE("shipped scenes are in the stable weakly compressible regime", "[setup
       // Mach number at most 0.45: density varies by a few percent in the fastest flow.
       CHECK(sound >= 2.2 * fastest);
     }
-    // The acoustic CFL of the scene's regime (liquid/time_step.h): the chapter's 0.16, or the
+    // The acoustic CFL of the scene's regime (liquid/physics/time_step.h): the chapter's 0.16, or the
     // longer steps of the splat-adjoint pressure with the PIC blend per second, whose reference
     // step is one of the chapter's regime (where r = 0.05 was chosen).
     const double acoustic_step = setup.cell_size / sound;
     CHECK(scene.time_step <= regime_acoustic_cfl(setup) * acoustic_step);
-    if (long_step_regime(setup)) {
+    if (setup.long_steps) {
       CHECK(setup.pic_ratio_reference_step <= k_acoustic_cfl_chapter * acoustic_step * 1.001);
       // and r was chosen at a step of the chapter's regime, not far below it (r(dt) would near PIC).
       CHECK(scene.time_step <= 8.2 * setup.pic_ratio_reference_step);
@@ -466,7 +466,7 @@ TEST_CASE("fluid blocks are carved around the obstacles they overlap", "[setup]"
 }
 
 TEST_CASE("dam_break_tank_2d is SPlisHSPlasH's DamBreakModel_2D at 64,516 particles", "[setup]") {
-  // tools/compare_dfsph.py runs the two side by side: DFSPH with particle radius 0.0029412 fills its
+  // tools/dfsph/compare_dfsph.py runs the two side by side: DFSPH with particle radius 0.0029412 fills its
   // 1.5 m column, 2.5 cm off the floor and the left wall of a 4 m tank, with 254 x 254 particles.
   const Scene scene = scene_of("dam_break_tank_2d.json");
   const SimulationSetup setup = make_setup(scene, {});

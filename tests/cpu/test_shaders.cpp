@@ -1,10 +1,10 @@
 // What the host and the shaders must agree on, read back from the embedded SPIR-V: the
 // specialization ids the shaders declare (shaders/liquid/common.glsl) against the ids the host fills
-// in (liquid/specialization.h), and the std140 offsets glslang gave the uniform block of
+// in (liquid/solver/specialization.h), and the std140 offsets glslang gave the uniform block of
 // shaders/liquid/shared.h against the C++ struct's. A mismatch fails here instead of silently
 // feeding a wrong value.
-#include "liquid/gpu_types.h"
-#include "liquid/specialization.h"
+#include "liquid/solver/gpu_types.h"
+#include "liquid/solver/specialization.h"
 #include "liquid_shaders.h"
 #include "shaders/liquid/render/view_blocks.h"
 

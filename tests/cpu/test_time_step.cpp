@@ -1,7 +1,7 @@
-// Adaptive time steps on the CPU: the scene key, and the CFL step for a state (liquid/time_step.h).
+// Adaptive time steps on the CPU: the scene key, and the CFL step for a state (liquid/physics/time_step.h).
+#include "liquid/physics/setup.h"
+#include "liquid/physics/time_step.h"
 #include "liquid/scene.h"
-#include "liquid/setup.h"
-#include "liquid/time_step.h"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>

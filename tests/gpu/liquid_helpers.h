@@ -6,6 +6,7 @@
 #include "engine/vk/commands.h"
 #include "liquid/node.h"
 #include "liquid/scene.h"
+#include "liquid/solver/simulation.h"
 #include "tests/support/gpu.h"
 
 #include <string>
@@ -41,7 +42,7 @@ inline void require_conserved(liquid::LiquidNode& node, const liquid::Diagnostic
                 << d.inside_obstacles << ", non-finite " << d.non_finite << ", max rho/rho0 " << d.max_density_ratio
                 << ", KE " << d.kinetic_energy << " J");
   CHECK(d.active_particles == expected_count);
-  CHECK(d.mass == Approx(expected_count * double(node.setup().particle_mass)));
+  CHECK(d.mass == Approx(expected_count * double(node.simulation().setup().particle_mass)));
   CHECK(d.non_finite == 0);
   CHECK(d.outside_domain == 0);
   CHECK(d.inside_obstacles == 0);

@@ -3,7 +3,7 @@
 // in seconds; goldens catch a change in the solver or in the shading.
 #include "engine/graph/transfer.h"
 #include "engine/vk/commands.h"
-#include "liquid/render/renderer.h"
+#include "liquid/renderer.h"
 #include "tests/gpu/liquid_helpers.h"
 #include "tests/support/gpu.h"
 #include "tests/support/image_compare.h"
@@ -36,7 +36,7 @@ Frame step_and_render(liquid::LiquidNode& node, int steps, bool fxaa = true) {
   liquid::LiquidRenderer renderer(context, node, {.width = k_width, .height = k_height, .fxaa = fxaa});
   engine::graph::RenderGraph graph(&context);
   const liquid::LiquidImages images = node.add_to(graph, 0);
-  const liquid::RenderOutputs out = renderer.add_to(graph, images, liquid::default_camera(node.scene(), node.setup()));
+  const liquid::RenderOutputs out = renderer.add_to(graph, images, liquid::default_camera(node));
   const engine::graph::Readback color = engine::graph::add_readback(graph, out.final, "test.color");
   std::optional<engine::graph::Readback> depth;
   if (out.depth.valid()) depth = engine::graph::add_readback(graph, out.depth, "test.depth");
@@ -75,7 +75,7 @@ double water_fraction(const Rgba8Image& image) {
 
 }  // namespace
 
-// The 3D goldens hold on every 3D path (liquid/grid_layout.h) with the same golden and tolerance:
+// The 3D goldens hold on every 3D path (liquid/solver/grid_layout.h) with the same golden and tolerance:
 // the paths differ only in how a cell is addressed and, on the atlas, in interpolating between
 // slices by hand, which moves no pixel past k_frame_tolerance (the paths agree within
 // test_grid_paths.cpp's bounds).

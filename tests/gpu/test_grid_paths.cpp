@@ -1,4 +1,4 @@
-// The 3D paths of liquid/grid_layout.h (geometry shader, vertex-layer, atlas), each on a device
+// The 3D paths of liquid/solver/grid_layout.h (geometry shader, vertex-layer, atlas), each on a device
 // created with only the feature it needs (the atlas with neither geometryShader nor
 // shaderOutputLayer), so the validation layer reports any use of a disabled feature: the physics
 // tests run on every path, the paths agree with each other, the grids read back alike, and a
@@ -8,6 +8,7 @@
 #include "liquid/export/volume.h"
 #include "liquid/node.h"
 #include "liquid/scene.h"
+#include "liquid/solver/simulation.h"
 #include "tests/gpu/liquid_helpers.h"
 #include "tests/support/gpu.h"
 
@@ -66,7 +67,7 @@ TEMPLATE_TEST_CASE("small 3D dam break conserves particles and stays in the doma
                    "[gpu][liquid][physics][paths]", test::GeometryPath, test::VertexLayerPath, test::AtlasPath) {
   engine::vk::Context& context = test::gpu_for(TestType::path);
   liquid::LiquidNode node(context, test::shipped_scene("small_3d"), test::options_for(TestType::path));
-  REQUIRE(node.grid_layout().path == TestType::path);
+  REQUIRE(node.simulation().grid_layout().path == TestType::path);
   const int count = node.active_particles();
   const liquid::Diagnostics d = test::run_steps(node, 500);
   test::require_conserved(node, d, count);
@@ -88,7 +89,7 @@ TEMPLATE_TEST_CASE("a 3D pool at rest stays at rest with a level surface", "[gpu
   CHECK(d.kinetic_energy < bound);
   // Level surface: the top particle of each column of 2 x 2 cells, away from the walls, lies
   // within 1.5 cells of the mean surface height.
-  const auto& s = node.setup();
+  const auto& s = node.simulation().setup();
   const float bin = 2.0f * s.cell_size;
   const int bx = int(s.domain.x / bin), bz = int(s.domain.z / bin);
   std::vector<float> top(size_t(bx * bz), -1.0f);
@@ -113,7 +114,7 @@ TEMPLATE_TEST_CASE("a mirror-symmetric 3D scene stays symmetric", "[gpu][liquid]
   liquid::LiquidNode node(context, liquid::parse_scene(k_symmetric_3d, "symmetric_3d.json"),
                           test::options_for(TestType::path));
   const liquid::Diagnostics d = test::run_steps(node, 300);
-  const auto& s = node.setup();
+  const auto& s = node.simulation().setup();
   // Centre of mass on the mirror plane within a tenth of a cell.
   INFO("centre of mass x " << d.center_of_mass.x << " m, mirror plane " << s.domain.x / 2 << " m");
   CHECK(std::abs(d.center_of_mass.x - s.domain.x / 2) < 0.1f * s.cell_size);
@@ -216,7 +217,7 @@ TEST_CASE("a device without geometry shaders or gl_Layer from vertex shaders run
 TEST_CASE("each device gets the 3D path it can run, and a forced one it cannot is refused by feature",
           "[gpu][liquid][paths]") {
   const liquid::Scene scene = test::shipped_scene("small_3d");
-  const auto chosen = [&](engine::vk::Context& context) { return liquid::LiquidNode(context, scene).grid_layout().path; };
+  const auto chosen = [&](engine::vk::Context& context) { return liquid::LiquidNode(context, scene).grid_path(); };
   CHECK(chosen(test::gpu()) == GridPath::VertexLayer);
   CHECK(chosen(test::gpu_with({.geometry_shader = true})) == GridPath::GeometryShader);
   CHECK(chosen(test::gpu_with({})) == GridPath::Atlas);

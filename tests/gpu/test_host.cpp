@@ -5,7 +5,8 @@
 #include "engine/vk/buffer.h"
 #include "engine/vk/commands.h"
 #include "examples/host/host_vulkan.h"
-#include "liquid/render/renderer.h"
+#include "liquid/renderer.h"
+#include "liquid/solver/simulation.h"
 #include "tests/gpu/liquid_helpers.h"
 #include "tests/support/gpu.h"
 #include "tests/support/image_compare.h"
@@ -137,7 +138,7 @@ Composite composite_frame(liquid::LiquidNode& node, HostTargets& targets, int st
     depth = engine::graph::add_upload(graph, depth, std::as_bytes(std::span(values)), "host.depth_bands");
   }
   const liquid::LiquidImages images = node.add_to(graph, steps);
-  renderer.add_to(graph, images, liquid::default_camera(node.scene(), node.setup()), {color, depth});
+  renderer.add_to(graph, images, liquid::default_camera(node), {color, depth});
   graph.compile();
   graph.execute(c);
   cmd.submit_and_wait();
@@ -176,7 +177,7 @@ TEST_CASE("a host's own device is adopted, not owned, and runs the node with zer
       cmd.submit_and_wait();
     }
     const liquid::Diagnostics d = node.diagnose();
-    CHECK(d.active_particles == node.setup().initial_particles);
+    CHECK(d.active_particles == node.simulation().setup().initial_particles);
     CHECK(d.non_finite == 0);
     INFO("last validation message: " << context.last_validation_message());
     CHECK(context.validation_message_count() == 0u);
@@ -296,7 +297,7 @@ TEST_CASE("two frames in flight, each with its own graph and command buffer, hav
     VkCommandBuffer cmd = slot.cmd.begin();  // waits for the frame that used this slot two frames ago
     slot.graph.reset();
     const liquid::LiquidImages images = node.add_to(slot.graph, 4);
-    renderer.add_to(slot.graph, images, liquid::default_camera(node.scene(), node.setup()));
+    renderer.add_to(slot.graph, images, liquid::default_camera(node));
     slot.graph.compile();
     slot.graph.execute(cmd);
     slot.cmd.submit();  // not waited for: the next frame is recorded while this one runs

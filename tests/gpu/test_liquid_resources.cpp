@@ -6,9 +6,9 @@
 // (docs/memory.md); these keep it so.
 #include "engine/graph/render_graph.h"
 #include "engine/vk/commands.h"
+#include "liquid/camera.h"
 #include "liquid/node.h"
-#include "liquid/render/camera.h"
-#include "liquid/render/renderer.h"
+#include "liquid/renderer.h"
 #include "tests/gpu/liquid_helpers.h"
 #include "tests/support/memory.h"
 
@@ -66,7 +66,7 @@ TEST_CASE("a long raymarched 3D capture does not grow host memory", "[gpu][liqui
   engine::vk::Context& context = test::gpu();
   liquid::LiquidNode node(context, busy_small_3d(), liquid::LiquidOptions{.frames_in_flight = 1, .max_steps_per_frame = 1});
   liquid::LiquidRenderer renderer(context, node, liquid::RenderSettings{.width = 64, .height = 48});
-  const liquid::CameraView camera = liquid::default_camera(node.scene(), node.setup());
+  const liquid::CameraView camera = liquid::default_camera(node);
   engine::graph::RenderGraph graph(&context);
   engine::vk::CommandBuffer cmd(context);
   double before = 0.0;

@@ -8,8 +8,9 @@
 #include "liquid/scene.h"
 #include "tests/gpu/liquid_helpers.h"
 #include "tests/support/gpu.h"
-#if LIQUID_HAVE_OPENVDB
+#if RASTERLIQUIDS_HAVE_OPENVDB
 #include "liquid/export/vdb.h"
+#include "liquid/solver/simulation.h"
 #endif
 
 #include <catch2/catch.hpp>
@@ -96,7 +97,7 @@ TEST_CASE("grids rebuilt from the particles read the rest density of the initial
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
-#if LIQUID_HAVE_OPENVDB
+#if RASTERLIQUIDS_HAVE_OPENVDB
 TEST_CASE("OpenVDB files hold the node's density and velocity grids in metres", "[gpu][liquid][export][paths]") {
   // 3D on every path: the atlas's read-back is converted to the same cell order.
   using liquid::GridPath;
@@ -120,8 +121,8 @@ TEST_CASE("OpenVDB files hold the node's density and velocity grids in metres", 
     CHECK(file.grid_names == std::vector<std::string>{"density", "velocity"});
     CHECK(file.frame.frame == 7);
     CHECK(file.frame.time_s == node.time());
-    CHECK(file.voxel_size == Approx(node.setup().cell_size));
-    CHECK(file.voxel_zero.x == Approx(0.5 * node.setup().cell_size));
+    CHECK(file.voxel_size == Approx(node.simulation().setup().cell_size));
+    CHECK(file.voxel_zero.x == Approx(0.5 * node.simulation().setup().cell_size));
     size_t liquid_cells = 0;
     for (float rho : volume.density) liquid_cells += rho > 0.0f;
     REQUIRE(liquid_cells > 100);

@@ -5,7 +5,7 @@ set(consumer_build "${WORK_DIR}/consumer-${MODE}")
 file(REMOVE_RECURSE "${consumer_build}")
 execute_process(COMMAND ${CMAKE_COMMAND} -S "${SOURCE_DIR}/tests/package/consumer" -B "${consumer_build}"
                         -G "${GENERATOR}" -DCMAKE_BUILD_TYPE=Release -DMODE=${MODE}
-                        -DRASTERLIQUIDS_SOURCE=${SOURCE_DIR} -DRasterLiquids_DIR=${BUILD_DIR}
+                        -DRASTERLIQUIDS_SOURCE=${SOURCE_DIR} -DRasterLiquids_DIR=${BUILD_DIR} -DEXPECT_VDB=${EXPECT_VDB}
                 RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 900)
 message(STATUS "${out}${err}")
 if(NOT code EQUAL 0)

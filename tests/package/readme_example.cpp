@@ -1,24 +1,24 @@
 // The README's engine snippet, verbatim between the markers: compiled with the suite so it stays
-// true (tests/package/doc_snippets.cmake checks that the README still holds exactly this text).
+// true (tests/package/doc_snippets.py checks that the README still holds exactly this text).
 // BEGIN README
 #include "engine/graph/render_graph.h"
 #include "engine/graph/transfer.h"
+#include "engine/io/png.h"
 #include "engine/vk/commands.h"
 #include "engine/vk/context.h"
-#include "engine/vk/png.h"
+#include "liquid/camera.h"
 #include "liquid/node.h"
-#include "liquid/render/camera.h"
-#include "liquid/render/renderer.h"
+#include "liquid/renderer.h"
 #include "liquid/scene.h"
 
 int main() {
-  engine::vk::Context context;  // or the engine's own; LIQUID_DEVICE picks the device
+  engine::vk::Context context;  // or the engine's own; RASTERLIQUIDS_DEVICE picks the device
   liquid::LiquidNode node(context, liquid::load_scene("assets/scenes/dam_break_3d.json"),
                           liquid::LiquidOptions{.frames_in_flight = 1});  // one frame at a time, as below
   liquid::LiquidRenderer renderer(context, node, liquid::RenderSettings{.width = 1024, .height = 768});
 
   // The scene's camera (or one that frames the domain) ...
-  liquid::CameraView camera = liquid::default_camera(node.scene(), node.setup());
+  liquid::CameraView camera = liquid::default_camera(node);
   // ... or one of your own, in metres:
   camera = liquid::CameraView{.position = {0.5f, 0.75f, 1.5f}, .target = {0.5f, 0.2f, 0.25f}, .fov_y_degrees = 45.0f};
 

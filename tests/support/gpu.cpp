@@ -1,5 +1,5 @@
 #include "tests/support/gpu.h"
-#include "tools/keep_modules_loaded.h"  // sanitizer builds: the driver stays mapped for LeakSanitizer
+#include "tools/common/keep_modules_loaded.h"  // sanitizer builds: the driver stays mapped for LeakSanitizer
 
 #include <functional>
 #include <map>

@@ -1,4 +1,4 @@
-// The Vulkan contexts GPU tests share: lavapipe (or LIQUID_DEVICE) with the validation layer
+// The Vulkan contexts GPU tests share: lavapipe (or RASTERLIQUIDS_DEVICE) with the validation layer
 // and synchronization validation on. Each GPU test ends with REQUIRE_NO_VALIDATION_MESSAGES(), and
 // the test main fails the run if any message was counted at all, on any of them.
 #pragma once

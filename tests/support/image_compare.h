@@ -3,7 +3,7 @@
 // paths are in the message. Goldens are rewritten only when LIQUID_UPDATE_GOLDENS=1.
 #pragma once
 
-#include "engine/vk/png.h"
+#include "engine/io/png.h"
 
 #include <string>
 

@@ -1,8 +1,8 @@
 // The shipped scenes, for the CPU tests: where they are, every one of them, and one by name.
 #pragma once
 
+#include "liquid/physics/setup.h"
 #include "liquid/scene.h"
-#include "liquid/setup.h"
 
 #include <algorithm>
 #include <filesystem>

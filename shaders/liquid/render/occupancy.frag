@@ -2,7 +2,7 @@
 // Empty-space skipping for the raymarch: each texel of this coarse volume holds the largest
 // rho / rho0 of one BRICK^3 block of the density grid, plus a one-cell border (trilinear lookups
 // at a block's edge read the neighbours). Rendered as a layered full-screen pass, or (ATLAS=1, the
-// atlas path of liquid/grid_layout.h) as one full-screen pass over the occupancy atlas reading the
+// atlas path of liquid/solver/grid_layout.h) as one full-screen pass over the occupancy atlas reading the
 // density atlas.
 #ifndef ATLAS
 #define ATLAS 0

@@ -14,7 +14,7 @@
 layout(std140, set = 0, binding = LIQUID_BINDING_VIEW_UNIFORMS) uniform RaymarchBlock {
   RaymarchUniforms r;
 };
-// Both grids are 3D images, or 2D atlases of their slices on the atlas path (ATLAS=1, liquid/grid_layout.h).
+// Both grids are 3D images, or 2D atlases of their slices on the atlas path (ATLAS=1, liquid/solver/grid_layout.h).
 layout(set = 0, binding = LIQUID_BINDING_RAYMARCH_DENSITY) uniform GRID_SAMPLER u_density;    // rho / rho0, linear filtering
 layout(set = 0, binding = LIQUID_BINDING_RAYMARCH_OCCUPANCY) uniform GRID_SAMPLER u_occupancy;  // per-brick max, nearest
 

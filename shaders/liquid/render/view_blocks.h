@@ -28,7 +28,7 @@ LIQUID_STRUCT(RaymarchUniforms) {
   float fine_step_cells;   // march step inside occupied bricks
   ivec3 bricks;            // occupancy volume size
   float brick_cells;       // occupancy brick edge, cells
-  int brick_columns;       // the atlas path: the occupancy atlas's tiles (liquid/grid_layout.h);
+  int brick_columns;       // the atlas path: the occupancy atlas's tiles (liquid/solver/grid_layout.h);
   int brick_rows;          // 1 and 1 otherwise
 };
 
@@ -37,7 +37,7 @@ LIQUID_PUSH(OccupancyPush) {
   ivec3 grid_cells;        // the density grid
   int brick_cells;
   ivec3 bricks;            // the occupancy grid it writes
-  // The atlas path (liquid/grid_layout.h): tiles of the density atlas and of the occupancy atlas.
+  // The atlas path (liquid/solver/grid_layout.h): tiles of the density atlas and of the occupancy atlas.
   int grid_columns;
   int grid_rows;
   int brick_columns;

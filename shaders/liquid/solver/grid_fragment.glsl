@@ -1,5 +1,5 @@
 // The cell a fragment of a full-screen grid pass computes (grid.frag, pressure.frag, potential.frag),
-// on every path of liquid/grid_layout.h: in 2D and in the atlas it follows from the fragment's
+// on every path of liquid/solver/grid_layout.h: in 2D and in the atlas it follows from the fragment's
 // position; on the layered paths the slice comes from the layered full-screen pair (v_layer).
 // Include after common.glsl.
 #ifndef LIQUID_GRID_FRAGMENT_GLSL

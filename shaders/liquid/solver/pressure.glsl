@@ -5,7 +5,7 @@
 #define LIQUID_PRESSURE_GLSL
 
 // Fraction of the kernel's mass beyond a wall k + 0.5 cells from a cell centre (k >= 0), from the
-// table the setup computes once (liquid/wall_coverage.h; r is at most LIQUID_MAX_KERNEL_RADIUS_CELLS).
+// table the setup computes once (liquid/physics/wall_coverage.h; r is at most LIQUID_MAX_KERNEL_RADIUS_CELLS).
 // Selected with comparisons, not an indexed read: an index that differs between fragments is a
 // gather on lavapipe.
 float kernel_mass_beyond(int k) {

@@ -1,5 +1,5 @@
 #version 450
-// Splat pass on the geometry-shader path (liquid/grid_layout.h), for devices with geometry shaders
+// Splat pass on the geometry-shader path (liquid/solver/grid_layout.h), for devices with geometry shaders
 // but without shaderOutputLayer: routes each point of splat.vert (GEOMETRY_LAYER=1) to its slice
 // with gl_Layer. It emits the point's square as two triangles rather than a point, since writing
 // gl_PointSize here would need one more device feature (shaderTessellationAndGeometryPointSize);

@@ -3,7 +3,7 @@
 // textures by gl_VertexIndex (no vertex buffer). In 3D each particle is drawn once per slice it
 // can touch (instance i = the i-th such slice); the point size is the kernel's chord in that slice,
 // so the rasterizer visits exactly the cells within radius r. The point reaches its slice by the
-// path of liquid/grid_layout.h: gl_Layer written here (vertex-layer), a geometry shader given the
+// path of liquid/solver/grid_layout.h: gl_Layer written here (vertex-layer), a geometry shader given the
 // slice (GEOMETRY_LAYER=1, splat.geom), or the slice's tile of the atlas (ATLAS=1).
 #ifndef GEOMETRY_LAYER
 #define GEOMETRY_LAYER 0

@@ -3,8 +3,12 @@
 #include "engine/vk/context.h"
 #include "engine/vk/device_requirements.h"
 #include "liquid/scene.h"
+#if RASTERLIQUIDS_HAVE_OPENVDB
+#include "liquid/export/vdb.h"
+#endif
 
 #include <cstdio>
+#include <filesystem>
 
 int host_engine_version();
 
@@ -18,5 +22,16 @@ int main() {
   } catch (const engine::vk::NoDeviceError& error) {
     std::printf("no device: %s\n", error.what());
   }
+#if RASTERLIQUIDS_HAVE_OPENVDB
+  // RasterLiquids::vdb links: a 2x2 volume of still liquid.
+  liquid::VolumeFrame volume;
+  volume.cells = {2, 2, 1};
+  volume.cell_size = 0.1f;
+  volume.density.assign(4, 1.0f);
+  volume.velocity.assign(4, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  const std::filesystem::path path = std::filesystem::temp_directory_path() / "rasterliquids_consumer.vdb";
+  liquid::write_vdb(path, volume, {});
+  std::printf("wrote %s\n", path.string().c_str());
+#endif
   return 0;
 }

@@ -1,0 +1,43 @@
+// OpenVDB volumes of a frame (built only where OpenVDB is installed: RASTERLIQUIDS_HAVE_OPENVDB). Two
+// grids: float "density" (rho/rho0, a fog volume) and vec3 "velocity" (m/s), active only where the
+// cell holds liquid, with a world transform in metres: voxel (i, j, k) is the cell whose centre is
+// origin + (i + 0.5, j + 0.5, k + 0.5) * cell_size. 2D grids become one voxel deep (k = 0).
+#pragma once
+
+#include "liquid/export/volume.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace liquid {
+
+struct VdbFrame {
+  int frame = 0;
+  double time_s = 0.0;  // simulated time, stored in the file's metadata as "time_s"
+  std::string scene;    // stored as "scene"
+};
+
+// Writes the file through a temporary name renamed into place; throws std::runtime_error naming
+// the path when it cannot be written.
+void write_vdb(const std::filesystem::path& path, const VolumeFrame& volume, const VdbFrame& frame);
+
+// A file read back through OpenVDB: its grids' active voxels and what places them, for checking
+// a written file against the node's readback.
+struct VdbContents {
+  template <class T>
+  struct Voxel {
+    glm::ivec3 index;
+    T value;
+  };
+  std::vector<std::string> grid_names;
+  VdbFrame frame;
+  double voxel_size = 0.0;      // m
+  glm::dvec3 voxel_zero{0.0};   // world position of voxel (0, 0, 0), m
+  std::vector<Voxel<float>> density;
+  std::vector<Voxel<glm::vec3>> velocity;
+};
+// Throws std::runtime_error naming the path when it cannot be read or lacks either grid.
+VdbContents read_vdb(const std::filesystem::path& path);
+
+}  // namespace liquid

@@ -1,0 +1,115 @@
+// LiquidNode: the one entry point a host engine uses. Created from a scene, it adds the solver's
+// passes (splat -> grid -> particle update, per step) to the host's render graph each frame,
+// exposes the grids and particles as graph images for the host's own passes, takes force brushes
+// and obstacle updates, and reads back particles and diagnostics on demand.
+#pragma once
+
+#include "engine/graph/render_graph.h"
+#include "liquid/scene.h"
+#include "liquid/types.h"
+
+#include <memory>
+#include <vector>
+
+namespace engine::vk {
+class Context;
+}
+
+namespace liquid {
+
+class Simulation;  // the solver itself: internal, not installed
+
+class LiquidNode {
+ public:
+  // Throws SceneError when the scene does not fit the device (grid or particle count past its
+  // limits), std::runtime_error when the device lacks a needed format feature or the forced 3D
+  // path's feature, and std::invalid_argument for a LIQUID_3D_PATH that names no path.
+  LiquidNode(engine::vk::Context& context, const Scene& scene, const LiquidOptions& options = {});
+  ~LiquidNode();
+  LiquidNode(const LiquidNode&) = delete;
+  LiquidNode& operator=(const LiquidNode&) = delete;
+
+  // The scene the node was created from.
+  const Scene& scene() const;
+  int dimension() const;
+  engine::vk::Context& context() const;
+  // The grid: cells per axis (z = 1 in 2D) and the edge of one cell (m).
+  glm::ivec3 grid_cells() const;
+  float cell_size() const;
+  // The 3D path the node chose (LiquidOptions::grid_path; meaningless in 2D).
+  GridPath grid_path() const;
+  // Frames the GPU may still be running when add_to() is called (views size their uniforms by it).
+  uint32_t frames_in_flight() const;
+
+  // Declares `steps` simulation steps on `graph` (the host then compiles and executes it).
+  // Advances the host-side clock and particle count: the graph must be executed.
+  LiquidImages add_to(engine::graph::RenderGraph& graph, int steps);
+  // The scene's steps per frame, and the most one add_to() takes (LiquidOptions::max_steps_per_frame).
+  int substeps() const;
+  int max_steps_per_frame() const;
+  // The length of the next steps (s): the scene's time_step, or with adaptive_time_step the last
+  // adapt_time_step()'s (at first, the CFL step of the initial velocities at rest density).
+  double time_step() const;
+  // With the scene's adaptive_time_step: sizes the following steps by the CFL conditions for the
+  // state `d` describes (a diagnose() of the current state), at most the scene's time_step, and
+  // returns the step. Without it, returns the fixed step.
+  double adapt_time_step(const Diagnostics& d);
+  // Sets the following steps' length directly (a host fitting a whole number of steps into its
+  // frame). Throws std::invalid_argument unless 0 < dt <= the scene's time_step and finite.
+  void set_time_step(double dt);
+
+  // External forces for the following steps (at most k_max_force_brushes).
+  void set_brushes(std::vector<ForceBrush> brushes);
+  // The parameters a host may change while the node runs; they take effect from the next step.
+  // Throws std::invalid_argument on a non-finite gravity, a PIC ratio outside [0, 1] or a negative
+  // stiffness. (The energy bound stays the scene's.)
+  using RuntimeParameters = liquid::RuntimeParameters;
+  RuntimeParameters runtime_parameters() const;
+  void set_runtime_parameters(const RuntimeParameters& parameters);
+  // Places obstacle `index` (a host-driven obstacle): from now on it moves at `velocity` from
+  // `center`, replacing the scene's scripted motion. The set of obstacles and their shapes are
+  // fixed when the node is created (the shaders are specialized for them).
+  void set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity);
+  std::vector<ObstaclePose> obstacle_poses(double time) const;
+
+  int active_particles() const;
+  int step_count() const;
+  double time() const;
+
+  // Blocking reads (own submission): call when no frame of this node is in flight.
+  ParticleSnapshot read_particles();
+  // The grids, cell (x, y, z) at x + nx (y + ny z) on every path.
+  std::vector<float> read_density_ratio();
+  std::vector<glm::vec4> read_splat();
+  std::vector<glm::vec4> read_grid_velocity();
+  // Diagnostics of the current state; throws SimulationError when the state is unstable.
+  Diagnostics diagnose();
+  // The same from particles the host already read back (read_particles()), saving a download.
+  Diagnostics diagnose(const ParticleSnapshot& particles);
+  double energy_bound() const;
+
+  // Adds a splat and a grid pass of the particles in `images` (what add_to() returned on this
+  // graph, possibly for 0 steps) with a zero time step, and returns the new grids: the density and
+  // grid velocity of the state as it is now, where add_to()'s come from the last step's splat,
+  // taken before its particle update. Exports use it so every file of a frame holds one instant;
+  // the particles, clock and counts are left as they are.
+  LiquidImages add_grids_to(engine::graph::RenderGraph& graph, const LiquidImages& images);
+
+  // The whole state between steps (liquid::Checkpoint). Blocking read: call when no frame of this
+  // node is in flight.
+  using Checkpoint = liquid::Checkpoint;
+  Checkpoint save_checkpoint();
+  // Throws std::invalid_argument when the checkpoint's sizes (texture, emitters, obstacles) do not
+  // match this node's scene.
+  void restore_checkpoint(const Checkpoint& checkpoint);
+
+  // The solver inside, for the library's own renderer, tools and tests: its header
+  // (liquid/solver/simulation.h) is internal and not installed, so a host cannot use it.
+  Simulation& simulation() { return *simulation_; }
+  const Simulation& simulation() const { return *simulation_; }
+
+ private:
+  std::unique_ptr<Simulation> simulation_;
+};
+
+}  // namespace liquid

@@ -1,0 +1,82 @@
+// LiquidRenderer: draws a LiquidNode's state on the host's render graph, after the solver's
+// passes: a raymarch of the density volume (3D), the density field as liquid (2D) or a lit
+// height field (shallow water); then FXAA. Outputs are graph images the host composites or reads.
+#pragma once
+
+#include "engine/graph/render_graph.h"
+#include "engine/passes/fxaa.h"
+#include "liquid/camera.h"
+#include "liquid/node.h"
+
+#include <memory>
+
+namespace engine::vk {
+class Context;
+}
+
+namespace liquid {
+
+// What every view writes (the FXAA pass reads the colour in the same format): RGBA8 colour and,
+// where the view has depth, D32 depth.
+constexpr VkFormat k_color_format = VK_FORMAT_R8G8B8A8_UNORM;
+constexpr VkFormat k_depth_format = VK_FORMAT_D32_SFLOAT;
+
+struct RenderSettings {
+  uint32_t width = 1024;   // the paper's frame: 1024 x 768
+  uint32_t height = 768;
+  float iso_level = 0.5f;  // surface where rho / rho0 crosses this value
+  bool fxaa = true;
+  bool draw_particles = false;  // 2D views: the particles as points over the liquid
+  // 3D: draw into the host's own colour and depth targets (add_to with HostTargets) instead of a
+  // frame of the renderer's own with its floor, sky and tank.
+  bool composite = false;
+};
+
+// A host's own targets for compositing (RenderSettings::composite): its colour (RGBA8 UNORM) and
+// depth (D32_SFLOAT) images at the renderer's size, imported into the graph with their contents
+// (engine::vk::Image::wrap + RenderGraph::import_image). The liquid is blended over the colour
+// where its surface is nearer than the host's depth, and writes its own depth there, so host
+// geometry in front hides the liquid and the host's later passes see the liquid's depth.
+struct HostTargets {
+  engine::graph::ImageHandle color;
+  engine::graph::ImageHandle depth;
+};
+
+struct RenderOutputs {
+  engine::graph::ImageHandle color;  // RGBA8, before FXAA
+  engine::graph::ImageHandle depth;  // D32 (3D views), metric depth of the first surface hit
+  engine::graph::ImageHandle final;  // RGBA8 after FXAA (== color when FXAA is off)
+};
+
+class RaymarchPass;
+class View2dPass;
+class HeightFieldPass;
+
+class LiquidRenderer {
+ public:
+  // Throws std::invalid_argument when the size exceeds the device's 2D image limit.
+  LiquidRenderer(engine::vk::Context& context, const LiquidNode& node, const RenderSettings& settings);
+  ~LiquidRenderer();
+
+  RenderOutputs add_to(engine::graph::RenderGraph& graph, const LiquidImages& images, const CameraView& camera);
+  // Composites into the host's targets (3D scenes, RenderSettings::composite); `color` and `depth`
+  // of the result are the targets' new versions, `final` the FXAA output (or `color`).
+  RenderOutputs add_to(engine::graph::RenderGraph& graph, const LiquidImages& images, const CameraView& camera,
+                       const HostTargets& targets);
+  const RenderSettings& settings() const { return settings_; }
+
+  // The view-projection (Vulkan clip space, y down, depth 0..1) the 3D view uses for `camera` at
+  // the renderer's aspect ratio: a host compositing with depth draws its geometry with this matrix
+  // so that its depths and the liquid's agree.
+  glm::mat4 view_projection(const CameraView& camera) const;
+
+ private:
+  const LiquidNode& node_;
+  RenderSettings settings_;
+  std::unique_ptr<RaymarchPass> raymarch_;
+  std::unique_ptr<View2dPass> view2d_;
+  std::unique_ptr<HeightFieldPass> height_field_;
+  std::unique_ptr<engine::passes::FxaaPass> fxaa_;
+};
+
+}  // namespace liquid

@@ -1,0 +1,168 @@
+// Scene description in physical units (metres, seconds, kg/m^3, m/s^2), loaded from JSON and
+// validated field by field. This is plain data: liquid/physics/setup.h turns it into grid sizes, particle
+// mass and initial particles; the GPU side never sees JSON.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace liquid {
+
+// Thrown for any problem in a scene file; what() names the file and the field, e.g.
+// "scenes/x.json: fluid_blocks[1].min: must lie inside the domain".
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// What a scene file may hold, checked while it is read so that no input can make the loader spend
+// more than a fraction of a second or more than a few tens of MB (a scene is a few kB; these are
+// far above anything a scene needs). Each is refused with one line naming the file.
+constexpr std::size_t k_max_scene_bytes = std::size_t(4) << 20;  // 4 MiB of JSON text
+constexpr int k_max_scene_nesting = 8;          // the deepest scene is 6: obstacles[i].balls[j].center
+constexpr int k_max_fluid_blocks = 1 << 14;     // also the most elements of any array in the file
+constexpr int k_max_scene_values = 1 << 19;     // JSON values in the whole file (a 3D block is 13)
+
+enum class SimulationMode {
+  Liquid,        // the chapter's liquid: P = k (rho/rho0)^gamma with gravity
+  ShallowWater,  // section 6, figure 4: 2D density read as water height, ground term as obstacle
+};
+
+// The splat's accumulation format. Auto: RGBA32F where the device can blend into it, else RGBA16F
+// (the chapter's choice; many mobile GPUs cannot blend 32-bit floats). See choose_splat_format().
+enum class SplatFormat { Auto, Rgba32f, Rgba16f };
+
+// How the grid pass turns pressure into force. Chapter: the central differences of P (section 4,
+// eq. 3). SplatAdjoint: of P smoothed with the splat's own kernel, the gradient of an energy, so
+// resting water stays at rest (docs/physics.md).
+enum class PressureForce { Chapter, SplatAdjoint };
+
+// A box of liquid filled with particles on a lattice of the scene's particle spacing.
+struct FluidBlock {
+  glm::vec3 min{0.0f};       // m (z ignored in 2D)
+  glm::vec3 max{0.0f};       // m
+  glm::vec3 velocity{0.0f};  // m/s, initial velocity of its particles
+};
+
+// A nozzle that adds particles over time (the paper's water jet), up to `capacity` particles.
+struct Emitter {
+  glm::vec3 position{0.0f};  // m, nozzle centre
+  glm::vec3 velocity{0.0f};  // m/s, jet velocity (its direction is the nozzle axis)
+  float radius = 0.0f;       // m, nozzle radius
+  float start_time = 0.0f;   // s
+  float stop_time = 1e30f;   // s
+  int capacity = 0;          // most particles this emitter ever adds
+};
+
+enum class ObstacleShape { Sphere, Box, Metaballs };
+
+struct Metaball {
+  glm::vec3 center{0.0f};  // m
+  float radius = 0.0f;     // m, radius of influence
+};
+
+// A rigid obstacle: an analytic shape whose smooth distance field adds an artificial pressure in
+// the grid pass (section 6). It may move: position(t) = center + velocity t + amplitude sin(2 pi f t).
+struct Obstacle {
+  ObstacleShape shape = ObstacleShape::Sphere;
+  glm::vec3 center{0.0f};        // m
+  float radius = 0.0f;           // m (sphere)
+  glm::vec3 half_extent{0.0f};   // m (box)
+  std::vector<Metaball> balls;   // metaballs: surface where sum (1 - d^2/R^2)^2 = threshold;
+                                 // centres relative to `center` (the JSON gives them in domain
+                                 // coordinates; the parser puts `center` at their centroid)
+  float threshold = 0.5f;        // metaballs iso level, in (0, 1)
+  glm::vec3 velocity{0.0f};      // m/s, constant drift
+  glm::vec3 oscillation_amplitude{0.0f};  // m
+  float oscillation_frequency = 0.0f;     // Hz
+};
+
+// Shallow-water ground: height b(x, y) = sum of Gaussian hills, in metres above the bed.
+struct GroundHill {
+  glm::vec2 center{0.0f};  // m
+  float height = 0.0f;     // m
+  float width = 0.0f;      // m, Gaussian standard deviation
+};
+
+struct Camera {
+  glm::vec3 position{0.0f};  // m
+  glm::vec3 target{0.0f};    // m
+  float fov_y_degrees = 45.0f;
+};
+
+// Acoustic CFL numbers (dt c / h) of the two regimes (docs/physics.md, "Longer steps"). The
+// chapter's: r blended per step, FLIP velocity noise grows above about 0.2 on rest_pool_2d. The
+// splat-adjoint pressure with the PIC blend per second (pic_ratio_reference_step): its pressure is
+// smoothed twice by the kernel, so the shortest waves it carries are about 2 r h long, and
+// dam_break_2d (r = 3 cells) runs stable at 2.4 and explodes at 3.6; the shipped scenes stay at
+// about half of 2.4, scaled by r / 3 for another kernel radius.
+inline constexpr double k_acoustic_cfl_chapter = 0.16;
+inline constexpr double k_acoustic_cfl_smoothed = 1.3;
+inline constexpr double k_acoustic_cfl_smoothed_stable = 2.4;  // the largest measured stable
+// The largest acoustic_cfl adaptive_time_step accepts: in the chapter's regime, and with the
+// splat-adjoint pressure and pic_ratio_reference_step.
+inline constexpr double k_max_acoustic_cfl_chapter = 1.0;
+inline constexpr double k_max_acoustic_cfl = 2.0;
+
+// CFL numbers of the adaptive step: dt = min(time_step, acoustic_cfl h / (c + |u|max),
+// velocity_cfl h / |u|max), with c the Tait form's speed of sound at the densest cell.
+struct AdaptiveTimeStep {
+  float acoustic_cfl = float(k_acoustic_cfl_chapter);
+  float velocity_cfl = 0.4f;
+};
+
+struct Scene {
+  std::string name;                 // file stem unless "name" is given
+  // Where it was read from (the file, or parse_scene's source_name): the prefix of every error
+  // found later (by make_setup). Empty for a scene built in code, whose errors start with `name`.
+  std::string source;
+  int dimension = 2;                // 2 or 3
+  SimulationMode mode = SimulationMode::Liquid;
+  glm::vec3 domain{1.0f};           // m, box [0, domain]; z ignored in 2D
+  std::optional<int> grid_resolution;  // cells along the longest axis; default round(N^(1/d))
+  glm::vec3 gravity{0.0f, -9.81f, 0.0f};  // m/s^2
+  float particle_spacing = 0.01f;   // m, lattice spacing of fluid blocks (sets particle mass)
+  float density = 1000.0f;          // kg/m^3, the liquid's density (particle mass = density * spacing^d)
+  std::optional<float> rest_density;  // kg/m^3 rho0; empty = computed from the initial uniform lattice
+  float stiffness = 50.0f;          // k, m^2/s^2 (specific pressure; speed of sound c = sqrt(k gamma))
+  float gamma = 5.0f;               // pressure exponent
+  float kernel_radius_cells = 3.0f; // splat radius r, in grid cells
+  float pic_ratio = 0.05f;          // r in the PIC/FLIP blend
+  // s; when set, pic_ratio is the blend over a step of this length and steps of other lengths
+  // blend at the same rate per second (liquid/physics/pic_blend.h); empty: r per step, as the chapter.
+  std::optional<float> pic_ratio_reference_step;
+  float time_step = 0.002f;         // s, one simulation step (with adaptive_time_step, the largest)
+  int substeps = 8;                 // steps per rendered frame
+  float wall_margin_cells = 0.5f;   // particles are clamped this many cells inside the walls (or where they started)
+  SplatFormat splat_format = SplatFormat::Auto;
+  PressureForce pressure_force = PressureForce::Chapter;
+  float rest_depth = 0.1f;          // m, shallow water: water height where rho = rho0
+  std::vector<FluidBlock> fluid_blocks;
+  std::vector<Emitter> emitters;
+  std::vector<Obstacle> obstacles;
+  std::vector<GroundHill> ground;   // shallow water only
+  std::optional<Camera> camera;     // 3D rendering; a default looks at the domain
+  // Steps sized from the state by CFL conditions (liquid/physics/time_step.h); empty: every step is
+  // time_step (the chapter's fixed step).
+  std::optional<AdaptiveTimeStep> adaptive_time_step;
+};
+
+// The long-step regime: the splat-adjoint pressure with the PIC blend per second
+// (pic_ratio_reference_step), the one where steps past the chapter's acoustic CFL stay stable and
+// accurate (docs/physics.md, "Longer steps").
+bool long_step_regime(const Scene& scene);
+
+// Parses and validates a scene. `source_name` prefixes every error message.
+Scene parse_scene(const std::string& json_text, const std::string& source_name);
+
+// Reads and parses a file; a missing, unreadable or oversized file, or a folder, is a SceneError
+// naming the path.
+Scene load_scene(const std::filesystem::path& path);
+
+}  // namespace liquid

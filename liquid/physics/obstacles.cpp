@@ -1,0 +1,44 @@
+#include "liquid/physics/obstacles.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace liquid {
+
+ObstaclePose scripted_pose(const Obstacle& obstacle, double time) {
+  const double omega = 2.0 * M_PI * obstacle.oscillation_frequency;
+  const glm::vec3 wave = obstacle.oscillation_amplitude * float(std::sin(omega * time));
+  const glm::vec3 wave_velocity = obstacle.oscillation_amplitude * float(omega * std::cos(omega * time));
+  return {obstacle.center + obstacle.velocity * float(time) + wave, obstacle.velocity + wave_velocity};
+}
+
+float obstacle_distance(const Obstacle& obstacle, glm::vec3 center, glm::vec3 p, int dimension) {
+  glm::vec3 local = p - center;
+  if (dimension == 2) local.z = 0.0f;
+  switch (obstacle.shape) {
+    case ObstacleShape::Sphere:
+      return glm::length(local) - obstacle.radius;
+    case ObstacleShape::Box: {
+      const glm::vec3 q = glm::abs(local) - obstacle.half_extent;
+      return glm::length(glm::max(q, glm::vec3(0.0f))) + std::min(std::max(q.x, std::max(q.y, q.z)), 0.0f);
+    }
+    case ObstacleShape::Metaballs: {
+      float field = 0.0f, reach = 0.0f;
+      glm::vec3 gradient(0.0f);
+      for (const Metaball& ball : obstacle.balls) {
+        const glm::vec3 d = local - ball.center;
+        const float q = glm::dot(d, d) / (ball.radius * ball.radius);
+        reach = std::max(reach, glm::length(ball.center) + ball.radius);
+        if (q < 1.0f) {
+          field += (1.0f - q) * (1.0f - q);
+          gradient += -4.0f * (1.0f - q) * d / (ball.radius * ball.radius);
+        }
+      }
+      if (field <= 0.0f) return std::max(glm::length(local) - reach, 1e-3f) + 1e-3f;
+      return (obstacle.threshold - field) / std::max(glm::length(gradient), 1e-4f);
+    }
+  }
+  return 1e30f;
+}
+
+}  // namespace liquid

@@ -1,0 +1,75 @@
+// Everything the solver derives from a scene before the first step: grid size and cell size,
+// particle mass, rest density, the kernel normalisation, the particle texture size and the
+// initial particles. Pure CPU code, so it is unit-tested without a device.
+#pragma once
+
+#include "liquid/scene.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace liquid {
+
+// What the device allows; checked here so a scene past the limits fails with a clear message.
+struct DeviceLimits {
+  int max_image_dimension_2d = 16384;
+  int max_image_dimension_3d = 2048;
+  int max_framebuffer_layers = 2048;
+};
+
+// The solver's parameters, derived from a scene once. The solver reads its scalars from here, never
+// from the Scene (which keeps what the user wrote: shallow water, for one, replaces the scene's
+// stiffness, gamma and gravity); only the scene's lists (obstacles, emitters, hills) are read there.
+struct SimulationSetup {
+  int dimension = 2;
+  bool shallow_water = false;   // section 6's height-field mode
+  glm::ivec3 grid_cells{1};     // cells per axis (z = 1 in 2D)
+  float cell_size = 0.0f;       // m, h: cells are square/cubic
+  glm::vec3 domain{0.0f};       // m, grid_cells * cell_size (the scene's box, snapped to whole cells)
+  float time_step = 0.0f;       // s
+  float particle_spacing = 0.0f;  // m
+  float particle_mass = 0.0f;   // kg, density * spacing^d
+  float rest_density = 0.0f;    // kg/m^3, rho0
+  // rho = density_scale * sum_p w(d, r): the chapter's rho = m sum w, divided by the kernel's
+  // integral (in m^d) so that a uniform lattice of the liquid's density reads that density.
+  float density_scale = 0.0f;   // kg/m^3 per unit of summed weight
+  float stiffness = 0.0f;       // k (shallow water: g * rest_depth)
+  float gamma = 0.0f;           // the scene's (shallow water: 1)
+  glm::vec3 gravity{0.0f};      // m/s^2 (shallow water: zero in the plane)
+  float kernel_radius_cells = 0.0f;  // r, the splat radius in cells (the scene's)
+  float pic_ratio = 0.0f;       // section 5.1's blend: 1 = PIC, 0 = FLIP (the scene's)
+  float pic_ratio_reference_step = 0.0f;  // s, the step pic_ratio is given for; 0: per step (the chapter's)
+  bool splat_adjoint_pressure = false;  // the scene's pressure_force is splat_adjoint
+  bool long_steps = false;      // long_step_regime(scene): sets the acoustic CFL (physics/time_step.h)
+  float wall_margin = 0.0f;     // m, particles are kept this far from every wall (or where they started, if closer)
+  std::vector<float> wall_share_beyond;  // the kernel's share beyond a wall k + 0.5 cells away (wall_coverage.h)
+  float obstacle_band = 0.0f;   // m, the obstacle density falls to zero this far outside (one kernel radius)
+  float rest_depth = 0.0f;      // m, shallow water's depth at rest
+  int initial_particles = 0;    // from fluid blocks
+  int capacity = 0;             // initial + all emitters' capacities
+  glm::ivec2 particle_texture{1};  // W x H texels, W * H >= capacity
+  std::vector<glm::vec4> positions;   // initial particles: xyz in m, w = 1 (active)
+  std::vector<glm::vec4> velocities;  // initial particles: xyz in m/s, w = 0
+};
+
+// Integral of w(d, r) = (1 - d^2/r^2)^3 over the plane (d = 2) or space (d = 3), r in cells:
+// pi r^2 / 4 in 2D, 64 pi r^3 / 315 in 3D.
+double kernel_integral_cells(int dimension, double radius_cells);
+
+// Derives the setup; throws SceneError naming the scene and the problem (a grid or particle count
+// past the device's limits, a fluid block with no particle, ...).
+SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits);
+
+// Particles per second an emitter adds: nozzle flux (pi R^2 |v| in 3D, 2 R |v| in 2D) divided by
+// the volume of one particle (spacing^d).
+double emitter_rate(const Emitter& emitter, int dimension, float particle_spacing);
+
+// How many particles an emitter has added by simulated time t (s), never above its capacity.
+int emitted_by(const Emitter& emitter, int dimension, float particle_spacing, double time);
+
+// Height of the shallow-water ground at (x, y), m.
+float ground_height(const Scene& scene, glm::vec2 xy);
+
+}  // namespace liquid

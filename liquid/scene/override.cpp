@@ -1,0 +1,86 @@
+#include "liquid/scene/override.h"
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace liquid {
+namespace {
+
+using Json = nlohmann::json;
+
+// "fluid_blocks[0].max" -> {"fluid_blocks", "0", "max"}.
+std::vector<std::string> path_parts(const std::string& path) {
+  std::string dotted = path;
+  for (char& c : dotted)
+    if (c == '[') c = '.';
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream in(dotted);
+  while (std::getline(in, part, '.')) {
+    if (!part.empty() && part.back() == ']') part.pop_back();
+    if (part.empty() || part.find(']') != std::string::npos) return {};
+    parts.push_back(part);
+  }
+  if (!dotted.empty() && dotted.back() == '.') return {};
+  return parts;
+}
+
+bool is_index(const std::string& part) {
+  return !part.empty() && part.find_first_not_of("0123456789") == std::string::npos && part.size() < 10;
+}
+
+void apply(Json& doc, const SceneOverride& o) {
+  const std::string where = "--set " + o.path;
+  const std::vector<std::string> parts = path_parts(o.path);
+  if (parts.empty()) throw SceneError(where + ": not a field path (use name, camera.position, fluid_blocks.0.max)");
+  Json* node = &doc;
+  std::string walked;
+  for (const std::string& part : parts) {
+    if (node->is_array()) {
+      if (!is_index(part)) throw SceneError(where + ": " + walked + " is a list; expected an index, got '" + part + "'");
+      const size_t index = std::stoul(part);
+      if (index >= node->size())
+        throw SceneError(where + ": " + walked + " has " + std::to_string(node->size()) + " element(s), no [" + part + "]");
+      node = &(*node)[index];
+      walked += "[" + part + "]";
+    } else if (node->is_object()) {
+      node = &(*node)[part];  // a new key is added; the reader refuses it if it is unknown
+      walked += (walked.empty() ? "" : ".") + part;
+    } else if (node->is_null()) {
+      *node = Json::object();  // a missing parent object (camera.position without a camera)
+      node = &(*node)[part];
+      walked += (walked.empty() ? "" : ".") + part;
+    } else {
+      throw SceneError(where + ": " + walked + " is a " + node->type_name() + ", it has no field '" + part + "'");
+    }
+  }
+  Json value = Json::parse(o.value, nullptr, /*allow_exceptions=*/false);
+  *node = value.is_discarded() ? Json(o.value) : std::move(value);
+}
+
+}  // namespace
+
+SceneOverride parse_scene_override(const std::string& text) {
+  const size_t equals = text.find('=');
+  if (equals == std::string::npos || equals == 0)
+    throw std::invalid_argument("--set " + text + ": expected key=value (e.g. --set stiffness=20)");
+  return {text.substr(0, equals), text.substr(equals + 1)};
+}
+
+std::string scene_document(const std::filesystem::path& path, const std::vector<SceneOverride>& overrides) {
+  load_scene(path);  // the file on its own: its errors name the file and field
+  std::ifstream file(path, std::ios::binary);
+  std::ostringstream text;
+  text << file.rdbuf();
+  if (overrides.empty()) return text.str();
+  Json doc = Json::parse(text.str());  // cannot fail: load_scene() parsed the same text
+  // The default name comes from the file name, which the document is read without.
+  if (doc.is_object() && !doc.contains("name")) doc["name"] = path.stem().string();
+  for (const SceneOverride& o : overrides) apply(doc, o);
+  return doc.dump(2);
+}
+
+}  // namespace liquid

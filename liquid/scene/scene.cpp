@@ -1,0 +1,295 @@
+// The scene's keys: which exist, their units, defaults and allowed ranges (see the README's scene
+// table). JSON syntax and duplicate keys are handled in json.cpp.
+#include "liquid/scene.h"
+#include "liquid/scene/reader.h"
+#include "shaders/liquid/shared.h"
+
+#include <array>
+#include <filesystem>
+
+namespace liquid::scene_reader {
+namespace {
+
+constexpr double k_max_domain_extent = 100.0;  // m
+constexpr int k_min_grid_resolution = 8;
+constexpr int k_max_grid_resolution = 2048;
+constexpr double k_max_gravity = 1000.0;        // m/s^2 per component
+constexpr double k_max_speed = 1000.0;          // m/s per component
+constexpr double k_max_frequency = 1000.0;      // Hz
+constexpr int k_max_emitter_capacity = 1 << 24;  // 16M particles
+
+// ---- Nested objects --------------------------------------------------------------------------
+
+FluidBlock read_fluid_block(const Reader& r, const Json& value, const std::string& path) {
+  r.check_keys(value, path, {"min", "max", "velocity"});
+  FluidBlock block;
+  block.min = r.point_in_domain(r.require(value, path, "min"), child(path, "min"));
+  block.max = r.point_in_domain(r.require(value, path, "max"), child(path, "max"));
+  for (int a = 0; a < r.dimension(); ++a)
+    if (!(block.min[a] < block.max[a]))
+      r.fail(child(path, "max"), "must be greater than min on every axis (axis " + std::to_string(a) + ": min " +
+                                        format_number(block.min[a]) + ", max " + format_number(block.max[a]) + ")");
+  if (const Json* v = Reader::find(value, "velocity"))
+    block.velocity = r.scene_vector(*v, child(path, "velocity"), k_max_speed);
+  return block;
+}
+
+Emitter read_emitter(const Reader& r, const Json& value, const std::string& path) {
+  r.check_keys(value, path, {"position", "velocity", "radius", "start_time", "stop_time", "capacity"});
+  Emitter emitter;
+  emitter.position = r.point_in_domain(r.require(value, path, "position"), child(path, "position"));
+  emitter.velocity = r.scene_vector(r.require(value, path, "velocity"), child(path, "velocity"), k_max_speed);
+  if (glm::dot(emitter.velocity, emitter.velocity) == 0.0f)
+    r.fail(child(path, "velocity"), "must be nonzero (it sets the jet's direction and flow rate)");
+  emitter.radius = float(r.number_in(r.require(value, path, "radius"), child(path, "radius"), 0.0, k_max_length, true));
+  if (const Json* v = Reader::find(value, "start_time"))
+    emitter.start_time = float(r.number_in(*v, child(path, "start_time"), 0.0, double(FLT_MAX)));
+  if (const Json* v = Reader::find(value, "stop_time")) {
+    emitter.stop_time = float(r.number(*v, child(path, "stop_time")));
+    if (!(emitter.stop_time > emitter.start_time))
+      r.fail(child(path, "stop_time"), "must be greater than start_time (" + format_number(emitter.start_time) +
+                                           "), got " + format_number(emitter.stop_time));
+  }
+  emitter.capacity =
+      r.integer_in(r.require(value, path, "capacity"), child(path, "capacity"), 1, k_max_emitter_capacity);
+  return emitter;
+}
+
+Metaball read_metaball(const Reader& r, const Json& value, const std::string& path) {
+  r.check_keys(value, path, {"center", "radius"});
+  Metaball ball;
+  ball.center = r.scene_vector(r.require(value, path, "center"), child(path, "center"));
+  ball.radius = float(r.number_in(r.require(value, path, "radius"), child(path, "radius"), 0.0, k_max_length, true));
+  return ball;
+}
+
+void read_oscillation(const Reader& r, const Json& value, const std::string& path, Obstacle& obstacle) {
+  r.check_keys(value, path, {"amplitude", "frequency"});
+  obstacle.oscillation_amplitude = r.scene_vector(r.require(value, path, "amplitude"), child(path, "amplitude"));
+  obstacle.oscillation_frequency =
+      float(r.number_in(r.require(value, path, "frequency"), child(path, "frequency"), 0.0, k_max_frequency));
+}
+
+Obstacle read_obstacle(const Reader& r, const Json& value, const std::string& path) {
+  if (!value.is_object()) r.fail(path, std::string("must be an object, got ") + value.type_name());
+  Obstacle obstacle;
+  obstacle.shape = ObstacleShape(r.choice(r.require(value, path, "shape"), child(path, "shape"),
+                                          {"sphere", "box", "metaballs"}));
+  switch (obstacle.shape) {
+    case ObstacleShape::Sphere:
+      r.check_keys(value, path, {"shape", "center", "radius", "velocity", "oscillation"});
+      obstacle.center = r.scene_vector(r.require(value, path, "center"), child(path, "center"));
+      obstacle.radius =
+          float(r.number_in(r.require(value, path, "radius"), child(path, "radius"), 0.0, k_max_length, true));
+      break;
+    case ObstacleShape::Box: {
+      r.check_keys(value, path, {"shape", "center", "half_extent", "velocity", "oscillation"});
+      obstacle.center = r.scene_vector(r.require(value, path, "center"), child(path, "center"));
+      const std::string extent_path = child(path, "half_extent");
+      obstacle.half_extent = r.scene_vector(r.require(value, path, "half_extent"), extent_path);
+      for (int a = 0; a < r.dimension(); ++a)
+        if (!(obstacle.half_extent[a] > 0.0f))
+          r.fail(element(extent_path, size_t(a)), "must be > 0, got " + format_number(obstacle.half_extent[a]));
+      break;
+    }
+    case ObstacleShape::Metaballs: {
+      r.check_keys(value, path, {"shape", "balls", "threshold", "velocity", "oscillation"});
+      const std::string balls_path = child(path, "balls");
+      const Json& balls = r.require(value, path, "balls");
+      if (!balls.is_array() || balls.empty()) r.fail(balls_path, "must be a non-empty array of {center, radius}");
+      glm::vec3 centroid(0.0f);
+      for (size_t i = 0; i < balls.size(); ++i) {
+        obstacle.balls.push_back(read_metaball(r, balls[i], element(balls_path, i)));
+        centroid += obstacle.balls.back().center;
+      }
+      // Ball centres are written in domain coordinates; the obstacle is placed at their centroid
+      // and the balls are stored relative to it, as the shaders and obstacles.cpp expect.
+      obstacle.center = centroid / float(obstacle.balls.size());
+      for (Metaball& ball : obstacle.balls) ball.center -= obstacle.center;
+      if (const Json* v = Reader::find(value, "threshold"))
+        obstacle.threshold = float(r.number_in(*v, child(path, "threshold"), 0.0, 1.0, true, true));
+      break;
+    }
+  }
+  if (const Json* v = Reader::find(value, "velocity"))
+    obstacle.velocity = r.scene_vector(*v, child(path, "velocity"), k_max_speed);
+  if (const Json* v = Reader::find(value, "oscillation")) read_oscillation(r, *v, child(path, "oscillation"), obstacle);
+  return obstacle;
+}
+
+GroundHill read_ground_hill(const Reader& r, const Json& value, const std::string& path) {
+  r.check_keys(value, path, {"center", "height", "width"});
+  GroundHill hill;
+  const glm::vec3 center = r.vector(r.require(value, path, "center"), child(path, "center"), 2);
+  hill.center = glm::vec2(center);
+  hill.height =
+      float(r.number_in(r.require(value, path, "height"), child(path, "height"), -k_max_length, k_max_length));
+  hill.width = float(r.number_in(r.require(value, path, "width"), child(path, "width"), 0.0, k_max_length, true));
+  return hill;
+}
+
+Camera read_camera(const Reader& r, const Json& value, const std::string& path) {
+  r.check_keys(value, path, {"position", "target", "fov_y_degrees"});
+  Camera camera;
+  camera.position = r.vector(r.require(value, path, "position"), child(path, "position"), 3, 10.0 * k_max_length);
+  camera.target = r.vector(r.require(value, path, "target"), child(path, "target"), 3, 10.0 * k_max_length);
+  if (camera.position == camera.target) r.fail(child(path, "target"), "must differ from position");
+  if (const Json* v = Reader::find(value, "fov_y_degrees"))
+    camera.fov_y_degrees = float(r.number_in(*v, child(path, "fov_y_degrees"), 1.0, 170.0));
+  return camera;
+}
+
+AdaptiveTimeStep read_adaptive_time_step(const Reader& r, const Json& value, const std::string& path) {
+  r.check_keys(value, path, {"acoustic_cfl", "velocity_cfl"});
+  AdaptiveTimeStep a;
+  if (const Json* v = Reader::find(value, "acoustic_cfl"))
+    a.acoustic_cfl = float(r.number_in(*v, child(path, "acoustic_cfl"), 0.0, k_max_acoustic_cfl, true));
+  if (const Json* v = Reader::find(value, "velocity_cfl"))
+    a.velocity_cfl = float(r.number_in(*v, child(path, "velocity_cfl"), 0.0, 2.0, true));
+  return a;
+}
+
+// Reads an optional array member, each element with `read_one`; at most `max_count` elements.
+template <typename T, typename ReadOne>
+std::vector<T> read_array(const Reader& r, const Json& object, const char* key, ReadOne read_one) {
+  std::vector<T> items;
+  const Json* value = Reader::find(object, key);
+  if (!value) return items;
+  if (!value->is_array()) r.fail(key, std::string("must be an array, got ") + value->type_name());
+  for (size_t i = 0; i < value->size(); ++i) items.push_back(read_one(r, (*value)[i], element(key, i)));
+  return items;
+}
+
+// ---- Top level ---------------------------------------------------------------------------------
+
+void read_space(Reader& r, const Json& doc, Scene& scene) {
+  scene.dimension = r.integer_in(r.require(doc, "", "dimension"), "dimension", 2, 3);
+  if (const Json* v = Reader::find(doc, "mode"))
+    scene.mode = r.choice(*v, "mode", {"liquid", "shallow_water"}) == 0 ? SimulationMode::Liquid
+                                                                          : SimulationMode::ShallowWater;
+  if (scene.mode == SimulationMode::ShallowWater && scene.dimension != 2)
+    r.fail("mode", "shallow_water requires dimension 2, got " + std::to_string(scene.dimension));
+  const Json& domain = r.require(doc, "", "domain");
+  const glm::vec3 extent = r.vector(domain, "domain", scene.dimension, double(FLT_MAX));
+  for (int a = 0; a < scene.dimension; ++a)
+    if (!(extent[a] > 0.0f && extent[a] <= k_max_domain_extent))
+      r.fail(element("domain", size_t(a)), "must be in (0, " + format_number(k_max_domain_extent) + "], got " +
+                                               format_number(extent[a]));
+  scene.domain = extent;
+  r.set_space(scene.dimension, extent);
+}
+
+void read_physics(const Reader& r, const Json& doc, Scene& scene) {
+  const bool shallow = scene.mode == SimulationMode::ShallowWater;
+  if (const Json* v = Reader::find(doc, "grid_resolution"))
+    scene.grid_resolution = r.integer_in(*v, "grid_resolution", k_min_grid_resolution, k_max_grid_resolution);
+  if (const Json* v = Reader::find(doc, "gravity")) scene.gravity = r.scene_vector(*v, "gravity", k_max_gravity);
+  if (shallow && glm::dot(scene.gravity, scene.gravity) == 0.0f)
+    r.fail("gravity", "must be nonzero in shallow_water mode (|g| sets the wave speed)");
+
+  float smallest = scene.domain.x;
+  for (int a = 1; a < scene.dimension; ++a) smallest = std::min(smallest, scene.domain[a]);
+  const double spacing = r.number(r.require(doc, "", "particle_spacing"), "particle_spacing");
+  if (!(spacing > 0.0) || spacing > 0.5 * smallest)
+    r.fail("particle_spacing", "must be in (0, " + format_number(0.5 * smallest) +
+                                   "] (at most half the smallest domain extent), got " + format_number(spacing));
+  scene.particle_spacing = float(spacing);
+
+  if (const Json* v = Reader::find(doc, "density")) scene.density = float(r.number_in(*v, "density", 1.0, 1e5));
+  if (const Json* v = Reader::find(doc, "rest_density")) {
+    if (v->is_string()) {
+      const std::string text = v->get<std::string>();
+      if (text != "auto") r.fail("rest_density", "must be a number or \"auto\", got \"" + text + "\"");
+    } else {
+      scene.rest_density = float(r.number_in(*v, "rest_density", 1.0, 1e5));
+    }
+  }
+  // Shallow water derives k and gamma (P = g h), so giving them would be silently ignored.
+  for (const char* key : {"stiffness", "gamma"})
+    if (shallow && Reader::find(doc, key))
+      r.fail(key, "not used in shallow_water mode (k = |gravity| * rest_depth, gamma = 1)");
+  if (const Json* v = Reader::find(doc, "stiffness"))
+    scene.stiffness = float(r.number_in(*v, "stiffness", 0.0, 1e6, true));
+  if (const Json* v = Reader::find(doc, "gamma")) scene.gamma = float(r.number_in(*v, "gamma", 1.0, 10.0));
+  if (const Json* v = Reader::find(doc, "kernel_radius_cells"))
+    scene.kernel_radius_cells = float(r.number_in(*v, "kernel_radius_cells", 1.0, gpu::k_max_kernel_radius_cells));
+  if (const Json* v = Reader::find(doc, "pic_ratio")) scene.pic_ratio = float(r.number_in(*v, "pic_ratio", 0.0, 1.0));
+  if (const Json* v = Reader::find(doc, "pic_ratio_reference_step"))
+    scene.pic_ratio_reference_step = float(r.number_in(*v, "pic_ratio_reference_step", 1e-6, 0.1));
+  if (const Json* v = Reader::find(doc, "time_step")) scene.time_step = float(r.number_in(*v, "time_step", 1e-6, 0.1));
+  if (const Json* v = Reader::find(doc, "substeps")) scene.substeps = r.integer_in(*v, "substeps", 1, 1000);
+  if (const Json* v = Reader::find(doc, "adaptive_time_step"))
+    scene.adaptive_time_step = read_adaptive_time_step(r, *v, "adaptive_time_step");
+  if (const Json* v = Reader::find(doc, "wall_margin_cells"))
+    scene.wall_margin_cells = float(r.number_in(*v, "wall_margin_cells", 0.0, 4.0));
+  if (const Json* v = Reader::find(doc, "splat_format"))
+    scene.splat_format = std::array{SplatFormat::Auto, SplatFormat::Rgba32f, SplatFormat::Rgba16f}
+        [r.choice(*v, "splat_format", {"auto", "rgba32f", "rgba16f"})];
+  if (const Json* v = Reader::find(doc, "pressure_force")) {
+    if (shallow) r.fail("pressure_force", "not used in shallow_water mode");
+    scene.pressure_force = r.choice(*v, "pressure_force", {"chapter", "splat_adjoint"}) == 0
+                               ? PressureForce::Chapter
+                               : PressureForce::SplatAdjoint;
+  }
+  if (const Json* v = Reader::find(doc, "rest_depth")) {
+    if (!shallow) r.fail("rest_depth", "only allowed in shallow_water mode");
+    scene.rest_depth = float(r.number_in(*v, "rest_depth", 0.0, k_max_length, true));
+  }
+  // Steps past the chapter's regime are stable only for the twice-smoothed pressure, and only
+  // accurate with the PIC blend per second (docs/physics.md, "Longer steps").
+  if (scene.adaptive_time_step && scene.adaptive_time_step->acoustic_cfl > k_max_acoustic_cfl_chapter &&
+      !liquid::long_step_regime(scene))
+    r.fail("adaptive_time_step.acoustic_cfl",
+           "above " + format_number(k_max_acoustic_cfl_chapter) +
+               " needs \"pressure_force\": \"splat_adjoint\" and pic_ratio_reference_step, got " +
+               format_number(scene.adaptive_time_step->acoustic_cfl));
+}
+
+void read_contents(const Reader& r, const Json& doc, Scene& scene) {
+  const bool shallow = scene.mode == SimulationMode::ShallowWater;
+  scene.fluid_blocks = read_array<FluidBlock>(r, doc, "fluid_blocks", read_fluid_block);
+  scene.emitters = read_array<Emitter>(r, doc, "emitters", read_emitter);
+  scene.obstacles = read_array<Obstacle>(r, doc, "obstacles", read_obstacle);
+  if (!shallow && Reader::find(doc, "ground")) r.fail("ground", "only allowed in shallow_water mode");
+  scene.ground = read_array<GroundHill>(r, doc, "ground", read_ground_hill);
+  if (const Json* v = Reader::find(doc, "camera")) {
+    if (scene.dimension != 3) r.fail("camera", "only allowed in 3D scenes (dimension 3)");
+    scene.camera = read_camera(r, *v, "camera");
+  }
+  if (scene.fluid_blocks.empty() && scene.emitters.empty())
+    r.fail("fluid_blocks", "the scene needs at least one fluid block or one emitter");
+}
+
+}  // namespace
+
+Scene read_scene(const Json& doc, const std::string& source_name) {
+  Reader r(source_name);
+  if (!doc.is_object()) r.fail("(document)", std::string("must be a JSON object, got ") + doc.type_name());
+  r.check_keys(doc, "",
+               {"name", "dimension", "mode", "domain", "grid_resolution", "gravity", "particle_spacing", "density",
+                "rest_density", "stiffness", "gamma", "kernel_radius_cells", "pic_ratio", "pic_ratio_reference_step", "time_step", "substeps",
+                "adaptive_time_step",
+                "wall_margin_cells", "splat_format", "pressure_force", "rest_depth", "fluid_blocks", "emitters", "obstacles", "ground",
+                "camera"});
+  Scene scene;
+  scene.name = std::filesystem::path(source_name).stem().string();
+  if (const Json* v = Reader::find(doc, "name")) {
+    scene.name = r.string(*v, "name");
+    if (scene.name.empty()) r.fail("name", "must not be empty");
+  }
+  read_space(r, doc, scene);
+  read_physics(r, doc, scene);
+  read_contents(r, doc, scene);
+  return scene;
+}
+
+}  // namespace liquid::scene_reader
+
+namespace liquid {
+
+bool long_step_regime(const Scene& scene) {
+  return scene.pressure_force == PressureForce::SplatAdjoint && scene.pic_ratio_reference_step &&
+         *scene.pic_ratio_reference_step > 0.0f;
+}
+
+}  // namespace liquid

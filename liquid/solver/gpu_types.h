@@ -1,0 +1,22 @@
+// The solver's view of shaders/liquid/shared.h: the uniform block as C++ reads it. The layout is
+// written once (in shared.h, which also gives the limits their C++ names); the static_asserts pin
+// the std140 offsets, and tests/cpu/test_shaders.cpp compares them with glslang's.
+#pragma once
+
+#include "shaders/liquid/shared.h"
+
+#include <cstddef>
+
+namespace liquid::gpu {
+
+static_assert(k_wall_table_size % 4 == 0, "the wall table is packed into vec4s");
+static_assert(sizeof(Obstacle) == 64 && offsetof(Obstacle, velocity) == 32 && offsetof(Obstacle, ball_count) == 48);
+static_assert(sizeof(Brush) == 32 && offsetof(Brush, acceleration) == 16);
+static_assert(sizeof(EmitterRange) == 48 && offsetof(EmitterRange, end) == 32);
+static_assert(offsetof(SolverUniforms, rest_depth) == 96);
+static_assert(offsetof(SolverUniforms, wall_kernel_beyond) == 112);
+static_assert(offsetof(SolverUniforms, obstacles) == 144);
+static_assert(offsetof(SolverUniforms, balls) == 144 + 64 * k_max_obstacles);
+static_assert(sizeof(SolverUniforms) == 144 + 64 * 8 + 16 * 32 + 16 * 16 + 32 * 4 + 48 * 4);
+
+}  // namespace liquid::gpu

@@ -1,0 +1,120 @@
+// Simulation: what a LiquidNode (include/liquid/node.h, the public API) is made of. It owns the
+// state textures, the solver's passes and the host-side clock, and adds one step's splat -> grid ->
+// particle update to a render graph; the node forwards its public calls here. The library's own
+// renderer, tools and tests reach it through LiquidNode::simulation() for what a host never sees:
+// the derived setup, the grid layout, the state textures and the solver's uniform block.
+#pragma once
+
+#include "engine/graph/render_graph.h"
+#include "engine/vk/uniform_arena.h"
+#include "liquid/analysis/diagnostics.h"
+#include "liquid/physics/setup.h"
+#include "liquid/scene.h"
+#include "liquid/solver/grid.h"
+#include "liquid/solver/particle_update.h"
+#include "liquid/solver/pressure.h"
+#include "liquid/solver/splat.h"
+#include "liquid/solver/state.h"
+#include "liquid/solver/uniforms.h"
+#include "liquid/types.h"
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace engine::vk {
+class Context;
+}
+
+namespace liquid {
+
+class Simulation {
+ public:
+  // The calls LiquidNode forwards, documented once, in include/liquid/node.h.
+  Simulation(engine::vk::Context& context, const Scene& scene, const LiquidOptions& options = {});
+  ~Simulation();
+  const Scene& scene() const { return scene_; }
+  int dimension() const { return setup_.dimension; }
+  engine::vk::Context& context() const { return context_; }
+  uint32_t frames_in_flight() const { return frames_in_flight_; }
+  LiquidImages add_to(engine::graph::RenderGraph& graph, int steps);
+  int substeps() const { return scene_.substeps; }
+  int max_steps_per_frame() const { return max_steps_per_frame_; }
+  double time_step() const { return time_step_; }
+  double adapt_time_step(const Diagnostics& d);  // by liquid/physics/time_step.h's CFL conditions
+  void set_time_step(double dt);
+  void set_brushes(std::vector<ForceBrush> brushes) { brushes_ = std::move(brushes); }
+  RuntimeParameters runtime_parameters() const { return {setup_.gravity, setup_.pic_ratio, setup_.stiffness}; }
+  void set_runtime_parameters(const RuntimeParameters& parameters);
+  void set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity);
+  std::vector<ObstaclePose> obstacle_poses(double time) const;
+  int active_particles() const { return active_; }
+  int step_count() const { return step_; }
+  double time() const { return time_; }
+  ParticleSnapshot read_particles();
+  std::vector<float> read_density_ratio();
+  std::vector<glm::vec4> read_splat();
+  std::vector<glm::vec4> read_grid_velocity();
+  Diagnostics diagnose();
+  Diagnostics diagnose(const ParticleSnapshot& particles);
+  double energy_bound() const { return energy_bound_; }
+  LiquidImages add_grids_to(engine::graph::RenderGraph& graph, const LiquidImages& images);
+  Checkpoint save_checkpoint();
+  void restore_checkpoint(const Checkpoint& checkpoint);
+
+  // What only the library's own code sees. The solver parameters derived from the scene:
+  const SimulationSetup& setup() const { return setup_; }
+  // How the grids are stored (3D: images or atlases, liquid/solver/grid_layout.h) and the splat's format.
+  const GridLayout& grid_layout() const { return layout_; }
+  VkFormat splat_format() const { return splat_format_; }
+  // The solver's uniform block for the current state with no step in progress: what the views
+  // read (obstacle poses at the node's time).
+  gpu::SolverUniforms current_uniforms() const;
+  // The state textures (particles, splat, grids).
+  LiquidState& state() { return *state_; }
+
+ private:
+  // The splat-adjoint pressure's two grid images for one graph (invalid handles without it).
+  struct PressureImages {
+    ImageHandle pressure, potential;
+  };
+  PressureImages create_pressure_images(engine::graph::RenderGraph& graph) const;
+  // One step's grid pass, after the splat-adjoint pressure passes when the scene uses them.
+  GridImages add_grid(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice, ImageHandle splat,
+                      const GridImages& grids, PressureImages& pressure) const;
+  // make_uniforms() with the grid layout's atlas tiles.
+  gpu::SolverUniforms uniforms_for(const StepInputs& step) const;
+  // This step's emission ranges, advancing the emitters' counts.
+  std::vector<EmissionRange> emit(double end_time, int& next_index);
+
+  engine::vk::Context& context_;
+  Scene scene_;
+  SimulationSetup setup_;
+  GridLayout layout_;
+  VkFormat splat_format_ = VK_FORMAT_UNDEFINED;
+  uint32_t frames_in_flight_ = 2;
+  std::unique_ptr<SplatPass> splat_;
+  std::unique_ptr<GridPass> grid_;
+  std::unique_ptr<PressurePass> pressure_;  // only with the splat-adjoint pressure
+  std::unique_ptr<ParticleUpdatePass> particle_update_;
+  std::unique_ptr<LiquidState> state_;
+  std::unique_ptr<engine::vk::UniformArena> uniforms_;
+  std::unique_ptr<engine::vk::UniformArena> grid_uniforms_;  // add_grids_to()'s block, one per frame
+  int max_steps_per_frame_ = 0;
+  double energy_bound_ = 0.0;
+
+  int active_ = 0;
+  int step_ = 0;
+  double time_ = 0.0;
+  double time_step_ = 0.0;  // s, the next step's
+  std::vector<int> emitted_;  // per emitter
+  std::vector<ForceBrush> brushes_;
+  struct PoseOverride {
+    glm::vec3 center;
+    glm::vec3 velocity;
+    double since;
+  };
+  std::vector<std::optional<PoseOverride>> pose_overrides_;
+};
+
+}  // namespace liquid

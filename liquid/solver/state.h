@@ -1,0 +1,47 @@
+// The solver's persistent GPU state: particle positions and velocities (RGBA32F, ping-ponged; a
+// W x H texture holds up to W * H particles, texels past the active count are inactive) and the
+// grids of the last step (splat, updated velocity, density). The graph imports these every frame.
+#pragma once
+
+#include "engine/vk/image.h"
+#include "liquid/physics/setup.h"
+#include "liquid/scene.h"
+#include "liquid/solver/grid_layout.h"
+
+#include <vulkan/vulkan.h>
+
+#include <array>
+
+namespace engine::vk {
+class Context;
+}
+
+namespace liquid {
+
+constexpr VkFormat k_particle_format = VK_FORMAT_R32G32B32A32_SFLOAT;  // positions and velocities
+constexpr VkFormat k_grid_velocity_format = VK_FORMAT_R32G32B32A32_SFLOAT;
+constexpr VkFormat k_density_format = VK_FORMAT_R16_SFLOAT;  // rho / rho0, for rendering
+
+// The splat's format for a scene's `requested` one and what the device can blend into. Auto takes
+// RGBA32F where it is blendable and falls back to RGBA16F (`fell_back`) where it is not. Throws
+// std::runtime_error naming the format when the device cannot blend into the one needed.
+struct SplatFormatChoice {
+  VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT;
+  bool fell_back = false;  // auto, and RGBA32F is not blendable here
+};
+SplatFormatChoice choose_splat_format(SplatFormat requested, bool rgba32f_blendable, bool rgba16f_blendable);
+
+struct LiquidState {
+  // The grids are stored as `layout` says (3D images or atlases in 3D).
+  LiquidState(engine::vk::Context& context, const SimulationSetup& setup, const GridLayout& layout,
+              VkFormat splat_format);
+
+  std::array<engine::vk::Image, 2> positions;   // xyz (m), w = 1 active
+  std::array<engine::vk::Image, 2> velocities;  // xyz (m/s)
+  engine::vk::Image splat;                      // (sum w u, sum w)
+  engine::vk::Image grid_velocity;              // (u', fluid flag)
+  engine::vk::Image density;                    // rho / rho0
+  int current = 0;                              // which of the pair holds the latest particles
+};
+
+}  // namespace liquid

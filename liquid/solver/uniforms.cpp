@@ -1,0 +1,102 @@
+#include "liquid/solver/uniforms.h"
+
+#include "liquid/physics/pic_blend.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <stdexcept>
+#include <string>
+
+namespace liquid {
+
+void require_at_most(size_t count, int limit, const char* what) {
+  if (count > size_t(limit))
+    throw std::invalid_argument(std::string("liquid: ") + std::to_string(count) + " " + what + " (at most " +
+                                std::to_string(limit) + ")");
+}
+
+int obstacle_kind_code(ObstacleShape shape) {
+  switch (shape) {
+    case ObstacleShape::Sphere: return gpu::k_obstacle_sphere;
+    case ObstacleShape::Box: return gpu::k_obstacle_box;
+    case ObstacleShape::Metaballs: return gpu::k_obstacle_metaballs;
+  }
+  return gpu::k_obstacle_sphere;
+}
+
+gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& setup, const StepInputs& step) {
+  // The scene's lists were checked when it entered the library (liquid/scene/limits.h); the
+  // step's inputs come from the host each step.
+  require_at_most(step.brushes.size(), gpu::k_max_brushes, "force brushes");
+  require_at_most(step.emissions.size(), gpu::k_max_emitters, "emitters active in one step");
+
+  gpu::SolverUniforms u{};
+  u.domain = setup.domain;
+  u.cell_size = setup.cell_size;
+  u.grid_cells = setup.grid_cells;
+  u.particle_texture_width = setup.particle_texture.x;
+  u.gravity = setup.gravity;
+  u.dt = step.dt;
+  u.stiffness = setup.stiffness;
+  u.gamma = setup.gamma;
+  u.rest_density = setup.rest_density;
+  u.density_scale = setup.density_scale;
+  u.kernel_radius = setup.kernel_radius_cells;
+  u.pic_ratio = float(pic_blend_for_step(setup.pic_ratio, setup.pic_ratio_reference_step, step.dt));
+  u.wall_margin = setup.wall_margin;
+  u.obstacle_band = setup.obstacle_band;
+  u.active_before = step.active_before;
+  u.active_after = step.active_after;
+  u.brush_count = int(step.brushes.size());
+  u.emission_count = int(step.emissions.size());
+  u.rest_depth = setup.rest_depth;
+  u.atlas_columns = u.atlas_rows = 1;  // one tile; the node sets an atlas's (Simulation::uniforms_for)
+  if (setup.wall_share_beyond.size() != size_t(gpu::k_wall_table_size))
+    throw std::invalid_argument("liquid: the setup's wall table has " + std::to_string(setup.wall_share_beyond.size()) +
+                                " entries, not " + std::to_string(gpu::k_wall_table_size) + " (make it with make_setup)");
+  for (size_t k = 0; k < setup.wall_share_beyond.size(); ++k)
+    u.wall_kernel_beyond[k / 4][k % 4] = setup.wall_share_beyond[k];
+
+  int ball = 0;
+  for (size_t i = 0; i < scene.obstacles.size(); ++i) {
+    const Obstacle& o = scene.obstacles[i];
+    const ObstaclePose pose = i < step.obstacle_poses.size() ? step.obstacle_poses[i] : ObstaclePose{o.center, {}};
+    gpu::Obstacle& g = u.obstacles[i];
+    g.center = pose.center;
+    g.velocity = pose.velocity;
+    switch (o.shape) {
+      case ObstacleShape::Sphere: g.sphere_radius = o.radius; break;
+      case ObstacleShape::Box: g.box_half_extent = o.half_extent; break;
+      case ObstacleShape::Metaballs:
+        g.metaball_threshold = o.threshold;
+        g.first_ball = ball;
+        g.ball_count = int(o.balls.size());
+        for (const Metaball& m : o.balls) u.balls[ball++] = glm::vec4(m.center, m.radius);
+        break;
+    }
+  }
+  for (size_t i = 0; i < scene.ground.size(); ++i) {
+    const GroundHill& hill = scene.ground[i];
+    u.ground[i] = glm::vec4(hill.center, hill.height, hill.width);
+  }
+  for (size_t i = 0; i < step.brushes.size(); ++i) {
+    const ForceBrush& b = step.brushes[i];
+    u.brushes[i].position = b.position;
+    u.brushes[i].radius = b.radius;
+    u.brushes[i].acceleration = b.acceleration;
+  }
+  for (size_t i = 0; i < step.emissions.size(); ++i) {
+    const EmissionRange& e = step.emissions[i];
+    const Emitter& emitter = scene.emitters.at(size_t(e.emitter));
+    gpu::EmitterRange& g = u.emitters[i];
+    g.position = emitter.position;
+    g.radius = emitter.radius;
+    g.velocity = emitter.velocity;
+    g.first = e.begin;
+    g.end = e.end;
+  }
+  return u;
+}
+
+}  // namespace liquid

@@ -1,0 +1,89 @@
+#include "tools/liquid_capture/dry_run.h"
+
+#include "engine/vk/context.h"
+#include "liquid/solver/simulation.h"
+#include "tools/liquid_capture/frame_writer.h"
+#include "tools/liquid_capture/session.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <system_error>
+
+namespace capture {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string clock_text(double seconds) {
+  const long s = long(seconds + 0.5);
+  char text[32];
+  std::snprintf(text, sizeof text, "%ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
+  return text;
+}
+
+// Wall time of one frame as the run does it: GPU work, readbacks, diagnostics and, for a written
+// frame, its files (into a scratch folder that is removed again).
+double timed_frame(const RunSettings& settings, engine::vk::Context& context, liquid::LiquidNode& node,
+                   liquid::LiquidRenderer* renderer, const liquid::CameraView& camera, tools::FrameLoop& loop,
+                   const fs::path& scratch) {
+  const auto begin = std::chrono::steady_clock::now();
+  const FrameResult result =
+      run_frame(loop, node, renderer, camera, settings.plan.steps_per_frame, settings.particles || settings.volumes);
+  const liquid::ParticleSnapshot particles = node.read_particles();
+  node.diagnose(particles);
+  if (renderer) FrameWriter(settings, context, scratch, node.scene().name).write(1, node, particles, *result.image);
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+}
+
+}  // namespace
+
+void dry_run(const RunSettings& settings, engine::vk::Context& context, liquid::LiquidNode& node,
+             liquid::LiquidRenderer& renderer, const liquid::CameraView& camera, tools::FrameLoop& loop) {
+  const FramePlan& plan = settings.plan;
+  const liquid::SimulationSetup& s = node.simulation().setup();
+  std::printf("scene %s (from %s%s):\n%s\n", node.scene().name.c_str(), settings.scene_source.c_str(),
+              settings.overrides.empty() ? "" : ", with --set", settings.scene_document.c_str());
+  std::printf("setup: %dD, %d particles (capacity %d), grid %dx%dx%d, cell %.4g m, dt %.4g s\n", s.dimension,
+              s.initial_particles, s.capacity, s.grid_cells.x, s.grid_cells.y, s.grid_cells.z, s.cell_size,
+              plan.time_step);
+  std::printf("frames: %d to %d written (%d), %d steps each = %.6g s (%.4g frames/s); frame f is the state at "
+              "t = f * %.6g s; simulated from t = 0: %d steps\n",
+              plan.start, plan.end, plan.written(), plan.steps_per_frame, plan.frame_seconds(),
+              plan.frames_per_second(), plan.frame_seconds(), plan.end * plan.steps_per_frame);
+  const fs::path& out = settings.folder;
+  std::printf("files: %s .. %s", (out / settings.frames.name(plan.start)).c_str(),
+              settings.frames.name(plan.end).c_str());
+  if (settings.particles)
+    std::printf(", %s .. %s", settings.particles->name(plan.start).c_str(), settings.particles->name(plan.end).c_str());
+  if (settings.volumes)
+    std::printf(", %s .. %s", settings.volumes->name(plan.start).c_str(), settings.volumes->name(plan.end).c_str());
+  std::printf(", stats.csv, summary.json, capture.json");
+  if (settings.checkpoint_every > 0) std::printf(", checkpoint.bin every %d frames", settings.checkpoint_every);
+  if (!settings.video.empty()) std::printf("; video %s", settings.video.c_str());
+  std::printf("\n");
+
+  // The probe: one warm-up frame (first use of each pipeline), then one frame of each kind.
+  std::error_code error;
+  const fs::path scratch = fs::temp_directory_path() / ("liquid_capture_probe_" + std::to_string(::getpid()));
+  fs::create_directories(scratch, error);
+  double simulated = 0.0, written = 0.0;
+  try {
+    timed_frame(settings, context, node, &renderer, camera, loop, scratch);
+    simulated = timed_frame(settings, context, node, nullptr, camera, loop, scratch);
+    written = timed_frame(settings, context, node, &renderer, camera, loop, scratch);
+  } catch (...) {
+    fs::remove_all(scratch, error);
+    throw;
+  }
+  fs::remove_all(scratch, error);
+  const int skipped = plan.start > 0 ? plan.start - 1 : 0;  // frame 0 has no steps
+  const double total = skipped * simulated + plan.written() * written;
+  std::printf("estimate: about %s (probe on %s: a simulated frame %.0f ms, a written frame %.0f ms)\n",
+              clock_text(total).c_str(), context.device_name().c_str(), simulated * 1e3, written * 1e3);
+}
+
+}  // namespace capture

@@ -1,0 +1,55 @@
+#include "tools/liquid_capture/frame_plan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace capture {
+
+NamePattern NamePattern::parse(const std::string& text, const std::string& flag, const std::string& extension) {
+  const auto fail = [&](const std::string& why) { return std::invalid_argument(flag + " " + text + ": " + why); };
+  if (text.find('/') != std::string::npos) throw fail("a file name inside the output folder, not a path");
+  const size_t first = text.find('#');
+  if (first == std::string::npos) throw fail("needs a run of '#' for the frame number (e.g. liquid_####" + extension + ")");
+  const size_t last = text.find_last_of('#');
+  if (text.find_first_not_of('#', first) < last) throw fail("only one run of '#' is allowed");
+  const bool ends = text.size() > extension.size() &&
+                    text.compare(text.size() - extension.size(), extension.size(), extension) == 0;
+  if (!ends || last >= text.size() - extension.size()) throw fail("must end in " + extension + " after the '#'s");
+  NamePattern p;
+  p.text_ = text;
+  p.prefix_ = text.substr(0, first);
+  p.suffix_ = text.substr(last + 1);
+  p.width_ = int(last - first + 1);
+  return p;
+}
+
+std::string NamePattern::name(int frame) const {
+  std::string digits = std::to_string(frame);
+  if (int(digits.size()) < width_) digits.insert(0, size_t(width_) - digits.size(), '0');
+  return prefix_ + digits + suffix_;
+}
+
+bool NamePattern::matches(const std::string& file_name, bool or_partial) const {
+  std::string name = file_name;
+  const std::string partial = ".partial";
+  if (or_partial && name.size() > partial.size() && name.compare(name.size() - partial.size(), partial.size(), partial) == 0)
+    name.resize(name.size() - partial.size());
+  if (name.size() < prefix_.size() + suffix_.size() + size_t(width_)) return false;
+  if (name.compare(0, prefix_.size(), prefix_) != 0) return false;
+  if (name.compare(name.size() - suffix_.size(), suffix_.size(), suffix_) != 0) return false;
+  const std::string digits = name.substr(prefix_.size(), name.size() - prefix_.size() - suffix_.size());
+  return digits.find_first_not_of("0123456789") == std::string::npos;
+}
+
+int steps_per_frame(int steps_flag, double fps, double time_step, int substeps, int max_steps) {
+  if (steps_flag > 0) return steps_flag;
+  if (fps <= 0.0) return substeps;
+  const double steps = std::round(1.0 / (fps * time_step));
+  if (steps > max_steps)
+    throw std::invalid_argument("--fps " + std::to_string(fps) + " needs " + std::to_string(steps) + " steps of " +
+                                std::to_string(time_step) + " s per frame, more than " + std::to_string(max_steps));
+  return std::max(1, int(steps));
+}
+
+}  // namespace capture

@@ -1,0 +1,291 @@
+// liquid_capture: the offline frame-capture tool. Runs a scene and writes numbered PNG frames, a
+// statistics table (stats.csv: the solver's diagnostics and each pass's GPU time per frame), a
+// summary, and on request particles (PLY), grids (OpenVDB), a video and checkpoints to resume
+// from. It is a host like any engine: it builds its render graph through the liquid module's
+// public API (LiquidNode, LiquidRenderer); only its dry run and summary read the derived setup
+// (LiquidNode::simulation()). The pieces live in tools/liquid_capture/.
+#include "engine/io/atomic_file.h"
+#include "engine/vk/context.h"
+#include "liquid/node.h"
+#include "liquid/renderer.h"
+#include "liquid/scene.h"
+#include "liquid/solver/simulation.h"
+#include "tools/common/cli.h"
+#include "tools/common/frame_loop.h"
+#include "tools/common/grid_path_flag.h"
+#include "tools/common/progress.h"
+#include "tools/liquid_capture/checkpoint.h"
+#include "tools/liquid_capture/dry_run.h"
+#include "tools/liquid_capture/frame_writer.h"
+#include "tools/liquid_capture/options.h"
+#include "tools/liquid_capture/outputs.h"
+#include "tools/liquid_capture/session.h"
+#include "tools/liquid_capture/video.h"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+using capture::RunSettings;
+using nlohmann::json;
+
+constexpr int k_max_steps_per_frame = 100000;
+constexpr int k_interrupted_exit = 130;  // 128 + SIGINT, what shells report for Ctrl-C
+
+// Ctrl-C or SIGTERM: the frame in progress finishes, then the run stops as if it had ended there.
+// The handler only records the signal; a second one kills at once (SA_RESETHAND).
+volatile std::sig_atomic_t g_stop_signal = 0;
+void on_stop_signal(int signal) { g_stop_signal = signal; }
+
+void install_stop_handlers() {
+  struct sigaction action {};
+  action.sa_handler = on_stop_signal;
+  action.sa_flags = SA_RESETHAND | SA_RESTART;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+  std::signal(SIGPIPE, SIG_IGN);  // a dead ffmpeg is a write error, not a silent exit
+}
+
+// One row of stats.csv.
+struct FrameStats {
+  int frame = 0;
+  liquid::Diagnostics diagnostics;
+  double wall_ms = 0.0;
+  std::map<std::string, double> pass_ms;  // summed over the frame's passes of that name
+};
+
+// stats.csv's header names the passes of the first written frame (every frame declares the same).
+std::string stats_header(const FrameStats& first) {
+  std::string header =
+      "frame,step,time_s,active_particles,outside_domain,inside_obstacles,non_finite,max_density_ratio,mass_kg,"
+      "kinetic_energy_J,potential_energy_J,mechanical_energy_J,time_step_s,max_speed_m_s,wall_ms";
+  for (const auto& [name, ms] : first.pass_ms) header += ",gpu_ms." + name;
+  return header + "\n";
+}
+
+std::string stats_row(const FrameStats& row, const std::string& header) {
+  const liquid::Diagnostics& d = row.diagnostics;
+  std::ostringstream out;
+  out.precision(9);
+  out << row.frame << ',' << d.step << ',' << d.time << ',' << d.active_particles << ',' << d.outside_domain << ','
+      << d.inside_obstacles << ',' << d.non_finite << ',' << d.max_density_ratio << ',' << d.mass << ','
+      << d.kinetic_energy << ',' << d.potential_energy << ',' << d.mechanical_energy << ',' << d.time_step << ','
+      << d.max_speed << ',' << row.wall_ms;
+  std::istringstream columns(header);
+  std::string column;
+  while (std::getline(columns, column, ','))
+    if (column.rfind("gpu_ms.", 0) == 0) {
+      if (!column.empty() && column.back() == '\n') column.pop_back();
+      const auto it = row.pass_ms.find(column.substr(7));
+      out << ',' << (it == row.pass_ms.end() ? 0.0 : it->second);
+    }
+  out << "\n";
+  return out.str();
+}
+
+liquid::CameraView camera_from(const RunSettings& s, const liquid::LiquidNode& node) {
+  liquid::CameraView camera = liquid::default_camera(node);
+  if (!s.camera_position.empty()) camera.position = {s.camera_position[0], s.camera_position[1], s.camera_position[2]};
+  if (!s.camera_target.empty()) camera.target = {s.camera_target[0], s.camera_target[1], s.camera_target[2]};
+  if (s.fov_y_degrees > 0.0f) camera.fov_y_degrees = s.fov_y_degrees;
+  if (glm::length(camera.position - camera.target) < 1e-6f)
+    throw capture::UsageError("--camera-position and --camera-target must differ");
+  return camera;
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw std::runtime_error(path.parent_path().string() + ": not a capture folder (no " + path.filename().string() + ")");
+  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+}
+
+// Before --video, the checks that need no device: ffmpeg installed, the file free, its folder there.
+void check_video(const RunSettings& s, bool overwrite) {
+  if (s.video.empty()) return;
+  const fs::path path(s.video);
+  const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  // /proc and the like pass access() for root: a probe file is the test that holds everywhere.
+  const fs::path probe = folder / (".liquid_capture_probe_" + std::to_string(::getpid()));
+  if (!fs::is_directory(folder) || !std::ofstream(probe))
+    throw std::runtime_error("--video " + s.video + ": " + folder.string() + " is not a writable folder");
+  fs::remove(probe);
+  if (fs::exists(path) && !overwrite) throw std::runtime_error(s.video + ": exists; --overwrite replaces it");
+  if (!capture::find_on_path("ffmpeg"))
+    throw std::runtime_error("--video needs ffmpeg, which is not installed (Debian: apt-get install ffmpeg)");
+}
+
+int run(const capture::CaptureOptions& options, const CLI::App& app) {
+  const auto started = std::chrono::steady_clock::now();
+  install_stop_handlers();
+  const bool resuming = !options.resume.empty();
+  RunSettings settings;
+  std::string record_text;
+  capture::CaptureCheckpoint checkpoint;
+  if (resuming) {
+    capture::check_resume_flags(app);
+    const fs::path folder(options.resume);
+    record_text = read_text(folder / capture::k_record_name);
+    settings = capture::run_settings_from_json(json::parse(record_text), folder, (folder / capture::k_record_name).string());
+    checkpoint = capture::load_checkpoint(folder / capture::k_checkpoint_name);
+    if (checkpoint.settings_hash != capture::fingerprint(record_text))
+      throw std::runtime_error((folder / capture::k_checkpoint_name).string() + ": belongs to another run than " +
+                               (folder / capture::k_record_name).string());
+  } else {
+    settings = capture::settle(options, k_max_steps_per_frame);
+    record_text = capture::to_json(settings).dump(2) + "\n";
+  }
+  const liquid::Scene scene = liquid::parse_scene(settings.scene_document, settings.scene_label());
+  if (settings.volumes && !capture::volume_export_available())
+    throw std::runtime_error("--export-volume: this build has no OpenVDB (install libopenvdb-dev and "
+                             "libboost-iostreams-dev, then configure again)");
+  check_video(settings, options.overwrite || resuming);
+  capture::RunFolder folder(settings, options.overwrite || resuming, options.dry_run);
+
+  engine::vk::Context context(engine::vk::ContextOptions{.validation = options.validation});
+  const capture::FramePlan& plan = settings.plan;
+  liquid::LiquidNode node(context, scene,
+                          liquid::LiquidOptions{.frames_in_flight = 1,
+                                                .max_steps_per_frame = plan.steps_per_frame,
+                                                .grid_path = tools::grid_path_from_flag(options.grid_path),
+                                                .log = tools::stdout_log()});
+  liquid::LiquidRenderer renderer(
+      context, node,
+      liquid::RenderSettings{.width = settings.width, .height = settings.height, .fxaa = settings.fxaa,
+                             .draw_particles = settings.draw_particles});
+  const liquid::CameraView camera = camera_from(settings, node);
+  tools::FrameLoop loop(context);
+  if (options.dry_run) {
+    capture::dry_run(settings, context, node, renderer, camera, loop);
+    tools::fail_on_validation_messages(context.validation_message_count());
+    return 0;
+  }
+
+  // Everything that can reject the input has run: only now are files touched.
+  capture::StatsTable stats(settings.folder / capture::k_stats_name);
+  int first_frame = plan.start == 0 ? 0 : 1;  // frame 0, the initial state, has nothing to run unless written
+  if (resuming) {
+    node.restore_checkpoint(checkpoint.node);
+    folder.wrote_output();
+    for (const fs::path& file : capture::run_files(settings))
+      if (file.extension() == ".partial") fs::remove(file);  // what the interrupted run was writing
+    stats.restore(checkpoint.stats_csv);
+    first_frame = checkpoint.frame + 1;
+  } else {
+    folder.remove_old_files();
+    engine::io::write_file_atomically(settings.folder / capture::k_record_name, record_text);
+  }
+  const capture::FrameWriter writer(settings, context, settings.folder, scene.name);
+  std::unique_ptr<capture::VideoEncoder> video;
+  if (!settings.video.empty()) {
+    video = std::make_unique<capture::VideoEncoder>(settings.video, settings.width, settings.height,
+                                                    plan.frames_per_second());
+    for (int f = plan.start; f < first_frame && f <= plan.end; ++f)  // a resumed run re-encodes the frames kept
+      video->add(engine::vk::read_png(settings.folder / settings.frames.name(f)));
+  }
+
+  const liquid::SimulationSetup& s = node.simulation().setup();
+  std::printf("liquid_capture: %s, %dD, %d particles (capacity %d), grid %dx%dx%d, dt %.3g s, %d steps per frame "
+              "(%.1f simulated frames/s), frames %d to %d, %ux%u, device %s%s\n",
+              scene.name.c_str(), s.dimension, s.initial_particles, s.capacity, s.grid_cells.x, s.grid_cells.y,
+              s.grid_cells.z, scene.time_step, plan.steps_per_frame, plan.frames_per_second(), plan.start, plan.end,
+              settings.width, settings.height, context.device_name().c_str(),
+              resuming ? (", resumed after frame " + std::to_string(checkpoint.frame)).c_str() : "");
+  std::fflush(stdout);
+
+  std::string header = stats.text().substr(0, stats.text().find('\n') + 1);
+  int last_done = first_frame - 1;
+  // Ends the run where it stands: stats.csv and summary.json for the frames written, the video closed.
+  const auto conclude = [&](const std::string& status) {
+    stats.finish();
+    if (video) video->finish();
+    const json facts = {{"status", status},
+                        {"scene", scene.name},
+                        {"scene_source", settings.scene_source},
+                        {"device", context.device_name()},
+                        {"frames_planned", {plan.start, plan.end}},
+                        {"last_frame_simulated", last_done},
+                        {"steps_per_frame", plan.steps_per_frame},
+                        {"frame_seconds", plan.frame_seconds()},
+                        {"resumed_after_frame", resuming ? json(checkpoint.frame) : json(nullptr)},
+                        {"run_wall_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()}};
+    engine::io::write_file_atomically(settings.folder / capture::k_summary_name, capture::summary_json(stats.text(), facts));
+  };
+
+  tools::Progress progress(plan.end - first_frame + 1);
+  try {
+    for (int frame = first_frame; frame <= plan.end && !g_stop_signal; ++frame) {
+      const bool written = frame >= plan.start;
+      // Frame f is the state after f frames of steps: frame 0 takes none.
+      const int steps = frame == 0 ? 0 : capture::steps_for_frame(node, plan.steps_per_frame, plan.frame_seconds());
+      const capture::FrameResult result = capture::run_frame(loop, node, written ? &renderer : nullptr, camera, steps,
+                                                             frame == 0 || settings.particles || settings.volumes);
+      const liquid::ParticleSnapshot particles = node.read_particles();
+      FrameStats row{frame, node.diagnose(particles), result.time.wall_ms, {}};  // throws on an unstable state
+      node.adapt_time_step(row.diagnostics);
+      if (written) {
+        for (const auto& t : result.time.passes) row.pass_ms[t.name] += t.milliseconds;
+        writer.write(frame, node, particles, *result.image);
+        if (video) video->add(*result.image);
+        if (header.empty()) header = stats_header(row);
+        stats.append(header, stats_row(row, header));
+        folder.wrote_output();
+      }
+      last_done = frame;
+      if (settings.checkpoint_every > 0 && frame > 0 && frame % settings.checkpoint_every == 0) {
+        capture::save_checkpoint(settings.folder / capture::k_checkpoint_name,
+                                 {frame, capture::fingerprint(record_text), node.save_checkpoint(), stats.text()});
+        folder.wrote_output();
+      }
+      progress.update(frame - first_frame + 1, steps / std::max(row.wall_ms * 1e-3, 1e-9), "steps");
+    }
+  } catch (const std::exception& error) {
+    progress.interrupt();  // the error message starts on its own line
+    try {
+      if (last_done >= plan.start) conclude(std::string("failed: ") + error.what());
+    } catch (...) {
+    }
+    throw;
+  }
+  if (g_stop_signal) {
+    progress.interrupt();
+    if (last_done >= plan.start || resuming) conclude("interrupted");
+    const char* name = g_stop_signal == SIGTERM ? "SIGTERM" : "SIGINT";
+    std::fprintf(stderr, "liquid_capture: interrupted (%s) after frame %d; %s\n", name, last_done,
+                 last_done >= plan.start ? ("files, stats.csv and summary.json cover frames " + std::to_string(plan.start) +
+                                            " to " + std::to_string(last_done)).c_str()
+                                         : "no frame was written");
+    return k_interrupted_exit;
+  }
+  conclude("finished");
+  std::printf("liquid_capture: wrote frames %d to %d to %s\n", plan.start, plan.end, settings.folder.string().c_str());
+  tools::fail_on_validation_messages(context.validation_message_count());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Runs a liquid scene and writes numbered PNG frames, per-frame statistics and, optionally, particles, "
+               "volumes, a video and checkpoints"};
+  capture::CaptureOptions options;
+  capture::add_options(app, options);
+  return tools::run_main(app, argc, argv, "liquid_capture", [&] {
+    try {
+      return run(options, app);
+    } catch (const capture::UsageError& error) {
+      std::fprintf(stderr, "liquid_capture: error: %s\n", error.what());
+      return 2;
+    }
+  });
+}

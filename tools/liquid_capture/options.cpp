@@ -1,0 +1,208 @@
+#include "tools/liquid_capture/options.h"
+
+#include "tools/common/grid_path_flag.h"
+
+#include "liquid/scene.h"
+#include "liquid/scene/override.h"
+#include "tools/common/cli.h"
+
+#include <algorithm>
+#include <set>
+
+#ifndef LIQUID_SOURCE_DIR
+#define LIQUID_SOURCE_DIR "."
+#endif
+
+namespace capture {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+void add_options(CLI::App& app, CaptureOptions& o) {
+  using tools::finite_range;
+  using tools::integer_range;
+  app.add_option("scene", o.scene, "scene JSON file, or the name of one in assets/scenes/ (dam_break_2d)");
+  app.add_option("-o,--out", o.out, "output folder, or a frame name pattern in it (out/liquid_####.png)")->take_last();
+  app.add_option("-s,--start", o.start, "first frame written (0: the initial state)")->check(integer_range(0, 1000000));
+  app.add_option("-e,--end", o.end, "last frame written")->check(integer_range(0, 1000000));
+  app.add_option("-n,--frames", o.frames, "frames written (default 60): sets --end to start + N - 1")
+      ->check(integer_range(1, 1000000));
+  app.add_option("--fps", o.fps, "simulated frames per second (steps per frame = 1 / (fps dt)); "
+                                 "default: the scene's substeps per frame")
+      ->check(finite_range(0.001, 10000.0));
+  app.add_option("--steps-per-frame", o.steps_per_frame, "simulation steps per frame (overrides --fps)")
+      ->check(integer_range(1, 100000));
+  app.add_option("--width", o.width, "frame width in pixels")->check(integer_range(1, 65536));
+  app.add_option("--height", o.height, "frame height in pixels")->check(integer_range(1, 65536));
+  app.add_option("--camera-position", o.camera_position, "camera position x,y,z (m); default: the scene's")
+      ->expected(3)
+      ->delimiter(',')
+      ->check(finite_range(-1e6, 1e6));
+  app.add_option("--camera-target", o.camera_target, "point the camera looks at x,y,z (m)")
+      ->expected(3)
+      ->delimiter(',')
+      ->check(finite_range(-1e6, 1e6));
+  app.add_option("--fov", o.fov_y_degrees, "vertical field of view (degrees)")->check(finite_range(1.0, 170.0));
+  app.add_flag("!--no-fxaa", o.fxaa, "skip the FXAA pass");
+  app.add_flag("--draw-particles", o.draw_particles, "2D views: draw the particles as points over the liquid");
+  app.add_flag("--export-particles", o.export_particles,
+               "write each frame's particles as binary PLY (x y z vx vy vz id density)");
+  app.add_option("--particles-name", o.particles_name, "PLY name pattern (default particles_#####.ply); "
+                                                       "implies --export-particles");
+  app.add_flag("--export-volume", o.export_volume, "write each frame's density and velocity grids as OpenVDB");
+  app.add_option("--volume-name", o.volume_name, "VDB name pattern (default volume_#####.vdb); implies --export-volume");
+  app.add_option("--set", o.set, "override a scene field: key=value, dotted paths (fluid_blocks.0.max=[0.1,0.2,0.2])")
+      ->take_all();
+  app.add_option("--checkpoint-every", o.checkpoint_every, "save a checkpoint every N frames (for --resume)")
+      ->check(integer_range(1, 1000000));
+  app.add_option("--resume", o.resume, "continue the run in FOLDER from its last checkpoint");
+  app.add_option("--video", o.video, "also encode the frames with ffmpeg (.mp4, .mkv or .mov)");
+  app.add_flag("--overwrite", o.overwrite, "replace another capture's files in the output folder");
+  app.add_flag("--dry-run", o.dry_run, "print the resolved scene, the frame plan and a time estimate; write nothing");
+  app.add_flag("--validation", o.validation, "enable the Vulkan validation layer; any message fails the run");
+  tools::add_grid_path_option(app, o.grid_path);
+}
+
+fs::path resolve_scene(const std::string& name) {
+  const fs::path given(name);
+  if (fs::exists(given) || given.has_parent_path()) return given;  // load_scene() reports a missing path
+  const fs::path file = given.extension() == ".json" ? given : fs::path(name + ".json");
+  const fs::path dirs[] = {"assets/scenes", fs::path(LIQUID_SOURCE_DIR) / "assets" / "scenes"};
+  for (const fs::path& dir : dirs)
+    if (fs::is_regular_file(dir / file)) return dir / file;
+  std::set<std::string> shipped;
+  for (const fs::path& dir : dirs)
+    if (fs::is_directory(dir))
+      for (const auto& entry : fs::directory_iterator(dir))
+        if (entry.path().extension() == ".json") shipped.insert(entry.path().stem().string());
+  std::string list;
+  for (const std::string& s : shipped) list += (list.empty() ? "" : ", ") + s;
+  throw liquid::SceneError(name + ": no such scene file, nor a scene of that name in assets/scenes/" +
+                           (list.empty() ? "" : " (" + list + ")"));
+}
+
+RunSettings settle(const CaptureOptions& o, int max_steps_per_frame) {
+  if (o.scene.empty()) throw UsageError("a scene is required: a JSON file, or a name in assets/scenes/");
+  RunSettings r;
+  const fs::path scene_path = resolve_scene(o.scene);
+  std::vector<liquid::SceneOverride> overrides;
+  for (const std::string& text : o.set) {
+    try {
+      overrides.push_back(liquid::parse_scene_override(text));
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(e.what());
+    }
+  }
+  r.scene_source = scene_path.string();
+  r.scene_document = liquid::scene_document(scene_path, overrides);
+  r.overrides = o.set;
+  const liquid::Scene scene = liquid::parse_scene(r.scene_document, r.scene_label());
+
+  try {
+    if (o.end && o.frames) throw UsageError("--end and --frames both set the last frame: give one");
+    r.plan.start = o.start;
+    r.plan.end = o.end ? *o.end : o.start + o.frames.value_or(60) - 1;
+    if (r.plan.end < r.plan.start)
+      throw UsageError("--end " + std::to_string(r.plan.end) + " is before --start " + std::to_string(r.plan.start));
+    r.plan.time_step = scene.time_step;
+    r.plan.steps_per_frame =
+        steps_per_frame(o.steps_per_frame, o.fps, scene.time_step, scene.substeps, max_steps_per_frame);
+
+    const fs::path out(o.out);
+    if (out.filename().string().find('#') != std::string::npos) {
+      r.folder = out.has_parent_path() ? out.parent_path() : fs::path(".");
+      r.frames = NamePattern::parse(out.filename().string(), "-o", ".png");
+    } else {
+      r.folder = out;
+      r.frames = NamePattern::parse("frame_#####.png", "-o", ".png");
+    }
+    if (o.export_particles || !o.particles_name.empty())
+      r.particles = NamePattern::parse(o.particles_name.empty() ? "particles_#####.ply" : o.particles_name,
+                                       "--particles-name", ".ply");
+    if (o.export_volume || !o.volume_name.empty())
+      r.volumes = NamePattern::parse(o.volume_name.empty() ? "volume_#####.vdb" : o.volume_name, "--volume-name", ".vdb");
+    std::set<std::string> names{r.frames.text()};
+    if ((r.particles && !names.insert(r.particles->text()).second) || (r.volumes && !names.insert(r.volumes->text()).second))
+      throw UsageError("two outputs have the same name pattern");
+  } catch (const UsageError&) {
+    throw;
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  r.width = o.width;
+  r.height = o.height;
+  r.fxaa = o.fxaa;
+  r.draw_particles = o.draw_particles;
+  r.camera_position = o.camera_position;
+  r.camera_target = o.camera_target;
+  r.fov_y_degrees = o.fov_y_degrees;
+  r.checkpoint_every = o.checkpoint_every;
+  r.video = o.video;
+  if (!r.video.empty()) {
+    const std::string ext = fs::path(r.video).extension().string();
+    if (ext != ".mp4" && ext != ".mkv" && ext != ".mov")
+      throw UsageError("--video " + r.video + ": the name must end in .mp4, .mkv or .mov");
+  }
+  return r;
+}
+
+void check_resume_flags(const CLI::App& app) {
+  for (const CLI::Option* option : app.get_options()) {
+    const std::string name = option->get_name();
+    if (option->count() == 0 || name == "--resume" || name == "--validation" || name == "--3d-path") continue;
+    throw UsageError("--resume continues the run recorded in its folder with the same settings; " +
+                     (name == "scene" ? std::string("a scene") : name) + " cannot be given with it");
+  }
+}
+
+json to_json(const RunSettings& r) {
+  const auto optional_name = [](const std::optional<NamePattern>& p) { return p ? json(p->text()) : json(nullptr); };
+  return {{"tool", "liquid_capture"},
+          {"record_version", 1},
+          {"scene_source", r.scene_source},
+          {"overrides", r.overrides},
+          {"scene", json::parse(r.scene_document)},
+          {"frames", {{"start", r.plan.start}, {"end", r.plan.end}, {"steps_per_frame", r.plan.steps_per_frame},
+                      {"time_step_s", r.plan.time_step}, {"frame_seconds", r.plan.frame_seconds()}}},
+          {"names", {{"frames", r.frames.text()}, {"particles", optional_name(r.particles)},
+                     {"volumes", optional_name(r.volumes)}}},
+          {"view", {{"width", r.width}, {"height", r.height}, {"fxaa", r.fxaa}, {"draw_particles", r.draw_particles},
+                    {"camera_position", r.camera_position}, {"camera_target", r.camera_target},
+                    {"fov_y_degrees", r.fov_y_degrees}}},
+          {"checkpoint_every", r.checkpoint_every},
+          {"video", r.video}};
+}
+
+RunSettings run_settings_from_json(const json& j, const fs::path& folder, const std::string& source) {
+  try {
+    if (j.at("tool") != "liquid_capture" || j.at("record_version") != 1)
+      throw std::runtime_error("not a record of this version of liquid_capture");
+    RunSettings r;
+    r.scene_source = j.at("scene_source").get<std::string>();
+    r.overrides = j.at("overrides").get<std::vector<std::string>>();
+    r.scene_document = j.at("scene").dump(2);
+    const json& f = j.at("frames");
+    r.plan = {f.at("start").get<int>(), f.at("end").get<int>(), f.at("steps_per_frame").get<int>(),
+              f.at("time_step_s").get<double>()};
+    r.folder = folder;
+    const json& n = j.at("names");
+    r.frames = NamePattern::parse(n.at("frames").get<std::string>(), "frames", ".png");
+    if (!n.at("particles").is_null()) r.particles = NamePattern::parse(n.at("particles"), "particles", ".ply");
+    if (!n.at("volumes").is_null()) r.volumes = NamePattern::parse(n.at("volumes"), "volumes", ".vdb");
+    const json& v = j.at("view");
+    r.width = v.at("width");
+    r.height = v.at("height");
+    r.fxaa = v.at("fxaa");
+    r.draw_particles = v.at("draw_particles");
+    r.camera_position = v.at("camera_position").get<std::vector<float>>();
+    r.camera_target = v.at("camera_target").get<std::vector<float>>();
+    r.fov_y_degrees = v.at("fov_y_degrees");
+    r.checkpoint_every = j.at("checkpoint_every");
+    r.video = j.at("video");
+    return r;
+  } catch (const std::exception& e) {
+    throw std::runtime_error(source + ": " + e.what());
+  }
+}
+
+}  // namespace capture

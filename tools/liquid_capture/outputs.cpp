@@ -1,0 +1,198 @@
+#include "tools/liquid_capture/outputs.h"
+
+#include "engine/io/atomic_file.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <system_error>
+
+namespace capture {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+bool is_fixed_name(const std::string& name) {
+  for (const char* fixed : {k_record_name, k_stats_name, k_summary_name, k_checkpoint_name})
+    if (name == fixed || name == std::string(fixed) + ".partial") return true;
+  return false;
+}
+
+// The name patterns of the run recorded in the folder, if any (an unreadable record adds none).
+std::vector<NamePattern> recorded_patterns(const fs::path& folder) {
+  std::vector<NamePattern> patterns;
+  std::ifstream file(folder / k_record_name);
+  const json record = json::parse(file, nullptr, /*allow_exceptions=*/false);
+  if (!record.is_object() || !record.contains("names") || !record["names"].is_object()) return patterns;
+  for (const auto& [kind, extension] : {std::pair{"frames", ".png"}, {"particles", ".ply"}, {"volumes", ".vdb"}}) {
+    const json& name = record["names"].value(kind, json());
+    if (!name.is_string()) continue;
+    try {
+      patterns.push_back(NamePattern::parse(name.get<std::string>(), kind, extension));
+    } catch (const std::invalid_argument&) {
+    }
+  }
+  return patterns;
+}
+
+}  // namespace
+
+std::vector<fs::path> run_files(const RunSettings& settings) {
+  std::vector<fs::path> files;
+  std::error_code error;
+  if (!fs::is_directory(settings.folder, error)) return files;
+  std::vector<NamePattern> patterns = recorded_patterns(settings.folder);
+  patterns.push_back(settings.frames);
+  if (settings.particles) patterns.push_back(*settings.particles);
+  if (settings.volumes) patterns.push_back(*settings.volumes);
+  for (const auto& entry : fs::directory_iterator(settings.folder, error)) {
+    if (!entry.is_regular_file(error)) continue;
+    const std::string name = entry.path().filename().string();
+    if (is_fixed_name(name) ||
+        std::any_of(patterns.begin(), patterns.end(), [&](const NamePattern& p) { return p.matches(name, true); }))
+      files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+RunFolder::RunFolder(const RunSettings& settings, bool overwrite, bool dry_run)
+    : folder_(settings.folder), dry_run_(dry_run) {
+  const std::vector<fs::path> existing = run_files(settings);
+  if (!existing.empty() && !overwrite) {
+    std::string names = existing.front().filename().string();
+    if (existing.size() > 1) names += " and " + std::to_string(existing.size() - 1) + " more";
+    throw std::runtime_error(folder_.string() + ": holds another capture's files (" + names +
+                             "); --overwrite replaces them, or choose another folder");
+  }
+  old_files_ = existing;
+
+  // The folders that do not exist yet, outermost first: the ones this run creates.
+  std::vector<fs::path> missing;
+  std::error_code error;
+  for (fs::path p = fs::absolute(folder_, error); !p.empty() && !fs::exists(p, error); p = p.parent_path()) {
+    missing.insert(missing.begin(), p);
+    if (p == p.parent_path()) break;
+  }
+  if (dry_run) {
+    const fs::path ancestor = missing.empty() ? fs::absolute(folder_, error) : missing.front().parent_path();
+    if (!fs::is_directory(ancestor, error))
+      throw std::runtime_error(folder_.string() + ": cannot create the output folder (" + ancestor.string() +
+                               " is not a folder)");
+    if (::access(ancestor.c_str(), W_OK | X_OK) != 0)
+      throw std::runtime_error(folder_.string() + ": the output folder is not writable");
+    return;
+  }
+  try {
+    engine::io::ensure_writable_folder(folder_);
+  } catch (...) {
+    for (auto it = missing.rbegin(); it != missing.rend(); ++it) fs::remove(*it, error);
+    throw;
+  }
+  created_ = missing;
+}
+
+void RunFolder::remove_old_files() {
+  std::error_code error;
+  for (const fs::path& file : old_files_) fs::remove(file, error);
+  old_files_.clear();
+}
+
+RunFolder::~RunFolder() {
+  if (kept_ || dry_run_) return;
+  std::error_code error;
+  for (const char* name : {k_record_name, k_stats_name, k_summary_name})
+    for (const std::string suffix : {"", ".partial"}) fs::remove(folder_ / (std::string(name) + suffix), error);
+  for (auto it = created_.rbegin(); it != created_.rend(); ++it) fs::remove(*it, error);  // only if empty
+}
+
+void StatsTable::open(std::ios::openmode mode) {
+  file_.open(partial(), mode);
+  if (!file_) throw std::runtime_error(partial().string() + ": cannot write");
+}
+
+void StatsTable::restore(const std::string& text) {
+  text_ = text;
+  open(std::ios::trunc);
+  file_ << text_;
+  file_.flush();
+  if (!file_) throw std::runtime_error(partial().string() + ": write failed (disk full?)");
+}
+
+void StatsTable::append(const std::string& header, const std::string& row) {
+  if (!file_.is_open()) open(std::ios::trunc);
+  if (text_.empty()) {
+    text_ = header;
+    file_ << header;
+  }
+  text_ += row;
+  file_ << row;
+  file_.flush();
+  if (!file_) throw std::runtime_error(partial().string() + ": write failed (disk full?)");
+}
+
+void StatsTable::finish() {
+  if (!file_.is_open()) return;  // no frame written: no table
+  file_.close();
+  std::error_code error;
+  fs::rename(partial(), path_, error);
+  if (error) throw std::runtime_error(path_.string() + ": cannot rename into place (" + error.message() + ")");
+}
+
+std::string summary_json(const std::string& stats_csv, const json& facts) {
+  std::istringstream in(stats_csv);
+  std::string line, cell;
+  std::vector<std::string> columns;
+  if (std::getline(in, line)) {
+    std::istringstream header(line);
+    while (std::getline(header, cell, ',')) columns.push_back(cell);
+  }
+  std::map<std::string, std::vector<double>> values;
+  while (std::getline(in, line)) {
+    std::istringstream row(line);
+    for (size_t c = 0; c < columns.size() && std::getline(row, cell, ','); ++c) values[columns[c]].push_back(std::stod(cell));
+  }
+  const auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+  };
+  // Counts and frame numbers read back as doubles are written as the integers they are.
+  const auto number = [](double v) { return v == std::floor(v) && std::abs(v) < 1e15 ? json(int64_t(v)) : json(v); };
+  const auto most = [&](const std::string& c) {
+    return values[c].empty() ? json(nullptr) : number(*std::max_element(values[c].begin(), values[c].end()));
+  };
+  const auto least = [&](const std::string& c) {
+    return values[c].empty() ? json(nullptr) : number(*std::min_element(values[c].begin(), values[c].end()));
+  };
+  json summary = facts;
+  const std::vector<double>& frames = values["frame"];
+  summary["frames_written"] = frames.size();
+  summary["first_frame"] = least("frame");
+  summary["last_frame"] = most("frame");
+  double wall = 0.0;
+  for (double ms : values["wall_ms"]) wall += ms;
+  summary["frame_wall_ms"] = {{"total", wall}, {"median", median(values["wall_ms"])}, {"max", most("wall_ms")}};
+  json passes = json::object();
+  for (const std::string& c : columns)
+    if (c.rfind("gpu_ms.", 0) == 0) passes[c.substr(7)] = median(values[c]);
+  summary["gpu_ms_median_per_frame"] = passes;
+  summary["extremes"] = {{"max_density_ratio", most("max_density_ratio")},
+                         {"max_speed_m_s", most("max_speed_m_s")},
+                         {"max_kinetic_energy_J", most("kinetic_energy_J")},
+                         {"min_active_particles", least("active_particles")},
+                         {"max_active_particles", most("active_particles")},
+                         {"min_mass_kg", least("mass_kg")},
+                         {"max_mass_kg", most("mass_kg")},
+                         {"max_outside_domain", most("outside_domain")},
+                         {"max_inside_obstacles", most("inside_obstacles")},
+                         {"max_non_finite", most("non_finite")}};
+  return summary.dump(2) + "\n";
+}
+
+}  // namespace capture

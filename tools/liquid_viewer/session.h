@@ -1,0 +1,73 @@
+// One scene running in the viewer: its file, the liquid node and renderer, the 3D camera, and
+// reloading (by key, or when the file changes on disk) that keeps the old scene running when the
+// new one fails to load, with the error kept for the window.
+#pragma once
+
+#include "liquid/node.h"
+#include "liquid/renderer.h"
+#include "liquid/scene.h"
+#include "tools/liquid_viewer/input.h"
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace engine::vk {
+class Context;
+}
+
+namespace viewer {
+
+class Session {
+ public:
+  // Throws (liquid::SceneError and others) when the scene cannot be loaded or run.
+  // `grid_path`: the 3D path to force (--3d-path), or empty for LIQUID_3D_PATH or the device's best.
+  Session(engine::vk::Context& context, const std::filesystem::path& path, uint32_t frames_in_flight,
+          int max_steps_per_frame, std::optional<liquid::GridPath> grid_path = std::nullopt);
+
+  const std::filesystem::path& path() const { return path_; }
+  liquid::LiquidNode& node() { return *node_; }
+  liquid::LiquidRenderer& renderer() { return *renderer_; }
+  OrbitCamera& camera() { return camera_; }
+  int dimension() const { return node_->dimension(); }
+
+  // Whether set_view() with these values would create a new renderer.
+  bool needs_view(uint32_t width, uint32_t height, bool fxaa, bool particles) const;
+  // (Re)creates the renderer for this size and these switches (the device must be idle).
+  void set_view(uint32_t width, uint32_t height, bool fxaa, bool particles);
+  // Back to the scene's first step (the device must be idle); keeps the live parameters.
+  void reset();
+  // Reloads the file (the device must be idle). On failure the running scene stays and the
+  // error is returned (also kept in error()).
+  std::optional<std::string> reload();
+  // Whether the file changed on disk since it was last loaded (or tried).
+  bool file_changed();
+  const std::string& error() const { return error_; }
+
+  // The view's pixel mapping at the renderer's size.
+  ViewMapping mapping() const;
+  liquid::CameraView camera_view() const { return camera_.view(); }
+  // 3D: where a view ray first meets the liquid (rho/rho0 >= 0.5 in the density read back now;
+  // no frame of the node may be in flight), or nothing.
+  std::optional<glm::vec3> surface_hit(glm::vec3 origin, glm::vec3 direction);
+
+ private:
+  void create(const liquid::Scene& scene);
+  std::filesystem::file_time_type stamp() const;
+
+  engine::vk::Context& context_;
+  std::filesystem::path path_;
+  uint32_t frames_in_flight_;
+  int max_steps_;
+  std::optional<liquid::GridPath> grid_path_;
+  liquid::Scene scene_;
+  std::unique_ptr<liquid::LiquidNode> node_;
+  std::unique_ptr<liquid::LiquidRenderer> renderer_;
+  liquid::RenderSettings view_{};
+  OrbitCamera camera_;
+  std::filesystem::file_time_type stamp_{};
+  std::string error_;
+};
+
+}  // namespace viewer
