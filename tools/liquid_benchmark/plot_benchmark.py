@@ -11,20 +11,15 @@ Writes, where the JSON holds the data for them:
 """
 
 import argparse
-import json
 import os
 import sys
 
-try:
-    import matplotlib
-except ImportError:
-    sys.exit("plot_benchmark: error: matplotlib is missing: install python3-matplotlib (Debian)")
-matplotlib.use("Agg")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+import plot_files  # noqa: E402 (tools/common/, found through the line above)
+
+plot_files.matplotlib_or_exit("plot_benchmark")
 from matplotlib.figure import Figure  # noqa: E402 (after the backend is chosen)
 from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter, NullLocator  # noqa: E402
-
-# Every label is literal text (scene and configuration names come from the user), never TeX math.
-matplotlib.rcParams["text.parse_math"] = False
 
 PASS_COLORS = {
     "liquid.splat": "#1f77b4",
@@ -41,17 +36,6 @@ EXTRA_COLORS = ["#bcbd22", "#17becf", "#aec7e8", "#ffbb78", "#98df8a"]
 
 def format_count(v):
     return f"{v / 1000:.0f}k" if v >= 1000 else f"{v:g}"
-
-
-def save(fig, path):
-    """Writes the SVG through a temporary file in the same folder, so a failed run leaves no half-written chart."""
-    temporary = path + ".partial"
-    try:
-        fig.savefig(temporary, format="svg")
-        os.replace(temporary, path)
-    finally:
-        if os.path.exists(temporary):
-            os.remove(temporary)
 
 
 def footer(fig, data, extra=None):
@@ -120,7 +104,7 @@ def paper_2d_chart(data, path):
            [(r["particles"], r["paper"]["sph_frame_ms"]) for r in render], "#555", "D", (0, (1, 1.5)))
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1), fontsize="small", handlelength=3)
     footer(fig, data, "paper figures: ms = 1000 / fps, one step + rendering per frame (Guay, GPU Pro 5, section 7)")
-    save(fig, path)
+    plot_files.save_svg(fig, path)
     return True
 
 
@@ -175,7 +159,7 @@ def gpu_passes_chart(data, path):
         ax.tick_params(axis="y", length=0)
     axes[0].legend(title="pass", loc="upper left", bbox_to_anchor=(1.02, 1), frameon=False, fontsize="small")
     footer(fig, data)
-    save(fig, path)
+    plot_files.save_svg(fig, path)
     return True
 
 
@@ -211,13 +195,8 @@ def scaling_chart(data, path):
     panel(grid_axes, fixed_count, lambda r: r["grid"][0], f"grid size at {format_count(sixty_four)} particles",
           "grid cells per side (N x N grid)", lambda v: f"{v:g}")
     footer(fig, data)
-    save(fig, path)
+    plot_files.save_svg(fig, path)
     return True
-
-
-def fail(message):
-    print(f"plot_benchmark: error: {message}", file=sys.stderr)
-    return 1
 
 
 def main():
@@ -225,29 +204,17 @@ def main():
     parser.add_argument("json", nargs="?", default="out/benchmark/benchmark.json", help="liquid_benchmark output")
     parser.add_argument("-o", "--out", help="folder for the SVG files (default: the JSON's folder)")
     args = parser.parse_args()
-    try:
-        with open(args.json, encoding="utf-8") as f:
-            data = json.load(f)
-    except OSError as error:
-        return fail(f"{args.json}: {error.strerror}")
-    except ValueError as error:
-        return fail(f"{args.json}: not valid JSON: {error}")
-    if not isinstance(data, dict) or not isinstance(data.get("results"), list):
-        return fail(f"{args.json}: no 'results' array: not a liquid_benchmark file")
-    out = args.out or os.path.dirname(os.path.abspath(args.json))
-    try:
+
+    def plot_all():
+        data = plot_files.read_report(args.json, "results", "liquid_benchmark")
+        out = args.out or os.path.dirname(os.path.abspath(args.json))
         os.makedirs(out, exist_ok=True)
         for name, chart in (("paper_2d.svg", paper_2d_chart), ("gpu_passes.svg", gpu_passes_chart),
                             ("scaling.svg", scaling_chart)):
             path = os.path.join(out, name)
             print(f"wrote {path}" if chart(data, path) else f"skipped {name} (no data for it in the JSON)")
-    except KeyError as error:
-        return fail(f"{args.json}: missing field {error}")
-    except (IndexError, TypeError, ValueError) as error:
-        return fail(f"{args.json}: unexpected data: {error}")
-    except OSError as error:  # writing the charts
-        return fail(f"{error.filename}: {error.strerror}" if error.filename else error)
-    return 0
+
+    return plot_files.run("plot_benchmark", args.json, plot_all)
 
 
 if __name__ == "__main__":

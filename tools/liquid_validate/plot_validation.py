@@ -14,21 +14,16 @@ Writes, where the JSON holds the runs for them:
 """
 
 import argparse
-import json
 import math
 import os
 import sys
 
-try:
-    import matplotlib
-except ImportError:
-    sys.exit("plot_validation: error: matplotlib is missing: install python3-matplotlib (Debian)")
-matplotlib.use("Agg")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+import plot_files  # noqa: E402 (tools/common/, found through the line above)
+
+plot_files.matplotlib_or_exit("plot_validation")
 from matplotlib.figure import Figure  # noqa: E402 (after the backend is chosen)
 from matplotlib.ticker import FuncFormatter, NullFormatter  # noqa: E402
-
-# Every label is literal text (run names come from the scenes, which come from the user), never TeX math.
-matplotlib.rcParams["text.parse_math"] = False
 
 COLORS = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b"]
 # Martin and Moyce (1952), n^2 = 2, a = 2.25 in (the table in liquid/analysis/validation.cpp).
@@ -55,13 +50,7 @@ def new_plot(title, xlabel, ylabel, xlim, ylim, log_y=False):
 def save(fig, ax, path):
     """Adds the legend right of the axes and writes the SVG through a temporary file in the same folder."""
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1), frameon=False, fontsize="small")
-    temporary = path + ".partial"
-    try:
-        fig.savefig(temporary, format="svg")
-        os.replace(temporary, path)
-    finally:
-        if os.path.exists(temporary):
-            os.remove(temporary)
+    plot_files.save_svg(fig, path)
     print(path)
 
 
@@ -121,36 +110,19 @@ def plot(data, out):
         save(fig, ax, os.path.join(out, "rest_pool.svg"))
 
 
-def fail(message):
-    print(f"plot_validation: error: {message}", file=sys.stderr)
-    return 1
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("json")
     parser.add_argument("-o", "--out", help="output folder (default: the JSON's folder)")
     args = parser.parse_args()
-    try:
-        with open(args.json, encoding="utf-8") as f:
-            data = json.load(f)
-    except OSError as error:
-        return fail(f"{args.json}: {error.strerror}")
-    except ValueError as error:
-        return fail(f"{args.json}: not valid JSON: {error}")
-    if not isinstance(data, dict) or not isinstance(data.get("runs"), list):
-        return fail(f"{args.json}: no 'runs' array: not a liquid_validate file")
-    out = args.out or os.path.dirname(os.path.abspath(args.json))
-    try:
+
+    def plot_all():
+        data = plot_files.read_report(args.json, "runs", "liquid_validate")
+        out = args.out or os.path.dirname(os.path.abspath(args.json))
         os.makedirs(out, exist_ok=True)
         plot(data, out)
-    except KeyError as error:
-        return fail(f"{args.json}: missing field {error}")
-    except (IndexError, TypeError, ValueError) as error:
-        return fail(f"{args.json}: unexpected data: {error}")
-    except OSError as error:  # writing the plots
-        return fail(f"{error.filename}: {error.strerror}" if error.filename else error)
-    return 0
+
+    return plot_files.run("plot_validation", args.json, plot_all)
 
 
 if __name__ == "__main__":
