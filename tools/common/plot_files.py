@@ -47,10 +47,20 @@ def save_svg(fig, path):
             os.remove(temporary)
 
 
-def run(tool, json_path, plot):
-    """Calls plot() and turns what can go wrong into one line on stderr and exit status 1."""
+def main(tool, description, default_json, key, producer, plot):
+    """The scripts' command line (JSON [-o OUT]): reads the JSON, makes OUT (default: the JSON's
+    folder) and calls plot(data, out); what can go wrong is one line on stderr and exit status 1."""
+    import argparse
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("json", nargs="?" if default_json else None, default=default_json, help=f"{producer} output")
+    parser.add_argument("-o", "--out", help="folder for the SVG files (default: the JSON's folder)")
+    args = parser.parse_args()
+    json_path = args.json
     try:
-        plot()
+        data = read_report(json_path, key, producer)
+        out = args.out or os.path.dirname(os.path.abspath(json_path))
+        os.makedirs(out, exist_ok=True)
+        plot(data, out)
     except PlotError as error:
         message = str(error)
     except KeyError as error:

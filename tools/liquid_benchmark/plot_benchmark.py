@@ -10,7 +10,6 @@ Writes, where the JSON holds the data for them:
   scaling.svg     time per step against particle count (256^2 grid) and against grid size (64k)
 """
 
-import argparse
 import os
 import sys
 
@@ -199,23 +198,13 @@ def scaling_chart(data, path):
     return True
 
 
-def main():
-    parser = argparse.ArgumentParser(description="Plots liquid_benchmark JSON as SVG charts.")
-    parser.add_argument("json", nargs="?", default="out/benchmark/benchmark.json", help="liquid_benchmark output")
-    parser.add_argument("-o", "--out", help="folder for the SVG files (default: the JSON's folder)")
-    args = parser.parse_args()
-
-    def plot_all():
-        data = plot_files.read_report(args.json, "results", "liquid_benchmark")
-        out = args.out or os.path.dirname(os.path.abspath(args.json))
-        os.makedirs(out, exist_ok=True)
-        for name, chart in (("paper_2d.svg", paper_2d_chart), ("gpu_passes.svg", gpu_passes_chart),
-                            ("scaling.svg", scaling_chart)):
-            path = os.path.join(out, name)
-            print(f"wrote {path}" if chart(data, path) else f"skipped {name} (no data for it in the JSON)")
-
-    return plot_files.run("plot_benchmark", args.json, plot_all)
+def plot(data, out):
+    for name, chart in (("paper_2d.svg", paper_2d_chart), ("gpu_passes.svg", gpu_passes_chart),
+                        ("scaling.svg", scaling_chart)):
+        path = os.path.join(out, name)
+        print(f"wrote {path}" if chart(data, path) else f"skipped {name} (no data for it in the JSON)")
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(plot_files.main("plot_benchmark", "Plots liquid_benchmark JSON as SVG charts.",
+                             "out/benchmark/benchmark.json", "results", "liquid_benchmark", plot))

@@ -13,7 +13,6 @@ Writes, where the JSON holds the runs for them:
   volume.svg       occupied volume against time, relative to the first frame
 """
 
-import argparse
 import math
 import os
 import sys
@@ -110,20 +109,5 @@ def plot(data, out):
         save(fig, ax, os.path.join(out, "rest_pool.svg"))
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("json")
-    parser.add_argument("-o", "--out", help="output folder (default: the JSON's folder)")
-    args = parser.parse_args()
-
-    def plot_all():
-        data = plot_files.read_report(args.json, "runs", "liquid_validate")
-        out = args.out or os.path.dirname(os.path.abspath(args.json))
-        os.makedirs(out, exist_ok=True)
-        plot(data, out)
-
-    return plot_files.run("plot_validation", args.json, plot_all)
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(plot_files.main("plot_validation", __doc__.split("\n")[0], None, "runs", "liquid_validate", plot))
