@@ -179,6 +179,47 @@ def check_folders():
         fail("a run that failed before its first frame left a new folder behind")
 
 
+def contents(folder):
+    """Every file's bytes by name (no folders)."""
+    return {n: open(os.path.join(folder, n), "rb").read() for n in files(folder)
+            if os.path.isfile(os.path.join(folder, n))}
+
+
+def check_failsafe():
+    """A failed run never destroys earlier good output: a resume that fails (here: no such device)
+    leaves the run's record, table and summary as they were, and can be resumed once the cause is
+    gone; an --overwrite run that fails before its first frame
+    leaves the old run's files in place, and one that succeeds replaces them."""
+    out = os.path.join(ARGS.work, "failsafe")
+    shutil.rmtree(out, ignore_errors=True)
+    code, err = start_and_interrupt([ARGS.scene, "-s", "0", "-e", "30", "--checkpoint-every", "2", "-o", out] + SMALL,
+                                    4, signal.SIGINT)
+    if code != 130:
+        fail(f"the run to resume exited {code}, expected 130: {err}")
+    before = contents(out)
+    env = dict(os.environ, RASTERLIQUIDS_DEVICE="nosuchgpu")
+    result = subprocess.run([ARGS.tool, "--resume", out], capture_output=True, text=True, timeout=600, env=env)
+    if result.returncode == 0 or result.stderr.count("\n") != 1:
+        fail(f"a resume on a missing device should fail in one line: exit {result.returncode}, {result.stderr!r}")
+    if contents(out) != before:
+        fail(f"the failed resume changed the folder: {sorted(before)} -> {files(out)}")
+    run(["--resume", out, "--validation"])
+    if not {"capture.json", "stats.csv", "summary.json"} <= set(files(out)):
+        fail(f"the resumed run's record is missing: {files(out)}")
+
+    old = contents(out)
+    unstable = os.path.join(os.path.dirname(ARGS.scene), "unstable_2d.json")
+    failed = run([unstable, "-e", "2", "--steps-per-frame", "20", "-o", out, "--overwrite"] + SMALL, expect=1)
+    if "unstable" not in failed.stderr:
+        fail(f"the overwriting run should fail as unstable: {failed.stderr!r}")
+    if contents(out) != old:
+        fail(f"an --overwrite run that failed before its first frame changed the old run's files: {files(out)}")
+    run([ARGS.scene, "-e", "2", "-o", out, "--overwrite"] + SMALL)
+    if files(out) != ["capture.json", "frame_00001.png", "frame_00002.png", "stats.csv", "summary.json"]:
+        fail(f"after a successful --overwrite the folder holds {files(out)}")
+    print(f"a failed resume and a failed --overwrite left {len(old)} files as they were")
+
+
 def check_dry_run():
     out = os.path.join(ARGS.work, "dry_run")
     shutil.rmtree(out, ignore_errors=True)
@@ -307,6 +348,7 @@ if __name__ == "__main__":
     os.makedirs(ARGS.work, exist_ok=True)
     checks = {"sigint": lambda: check_interrupt(signal.SIGINT), "sigterm": lambda: check_interrupt(signal.SIGTERM),
               "resume": check_resume, "dryrun": check_dry_run, "folders": check_folders, "range": check_range, "volume": check_volume,
-              "video": check_video, "adaptive": check_adaptive}
+              "video": check_video, "adaptive": check_adaptive,
+              "failsafe": check_failsafe}
     checks[ARGS.check]()
     print("ok")

@@ -4,7 +4,7 @@ checks what the node read back at exit (--report) against the same run without t
 
   viewer_test.py MODE --viewer PATH --with-xvfb PATH --scenes DIR --scripts DIR --out DIR [--compare PATH]
                 [--viewer-arg ARG ...]
-MODE: drag | obstacle | hit3d | resize | golden | bad_reload. Every run has --validation: any validation
+MODE: drag | obstacle | hit3d | resize | golden | bad_reload | no_panel. Every run has --validation: any validation
 message makes the viewer exit non-zero and the test fail.
 """
 import argparse
@@ -149,9 +149,31 @@ def bad_reload(args):
     check(r["diagnostics"]["active_particles"] > 0 and r["steps"] > 0, "the old scene kept running")
 
 
+def no_panel(args):
+    # The simulation does not depend on what the window shows: an adaptive scene reaches the same
+    # step and time with the panel open or hidden, and an exploding one is caught and paused
+    # with the panel hidden too.
+    scene = json.load(open(os.path.join(args.scenes, "dam_break_2d.json")))
+    scene["adaptive_time_step"] = {}
+    adaptive = os.path.join(args.out, "adaptive_2d.json")
+    with open(adaptive, "w") as f:
+        json.dump(scene, f)
+    common = [adaptive, "--frames", "70", "--steps-per-frame", "2", *SIZE]
+    shown, hidden = run(args, "adaptive_panel", common), run(args, "adaptive_no_panel", [*common, "--no-panel"])
+    check(shown["steps"] == hidden["steps"] and shown["time"] == hidden["time"],
+          f"the same steps and time with and without the panel: {shown['time']} s after {shown['steps']} steps, "
+          f"{hidden['time']} s after {hidden['steps']} steps")
+    check(shown["time"] < 70 * 2 * scene["time_step"], "the steps adapted (shorter than the scene's)")
+    unstable = os.path.join(args.scripts, "..", "tools", "unstable_2d.json")
+    exploded = run(args, "unstable_no_panel", [unstable, "--frames", "40", "--steps-per-frame", "2", *SIZE, "--no-panel"])
+    check(exploded["paused"] and "unstable" in exploded["stability_error"],
+          f"an exploding run is paused with the panel hidden: {exploded['stability_error']!r}")
+    check(exploded["steps"] < 80, f"it stopped stepping ({exploded['steps']} of 80 steps)")
+
+
 def main():
     p = argparse.ArgumentParser()
-    p.add_argument("mode", choices=["drag", "obstacle", "hit3d", "resize", "golden", "bad_reload"])
+    p.add_argument("mode", choices=["drag", "obstacle", "hit3d", "resize", "golden", "bad_reload", "no_panel"])
     p.add_argument("--viewer", required=True)
     p.add_argument("--with-xvfb", required=True)
     p.add_argument("--scenes", required=True)

@@ -150,7 +150,11 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
     throw std::runtime_error("--export-volume: this build has no OpenVDB (install libopenvdb-dev and "
                              "libboost-iostreams-dev, then configure again)");
   check_video(settings, options.overwrite || resuming);
-  capture::RunFolder folder(settings, options.overwrite || resuming, options.dry_run);
+  using Mode = capture::RunFolder::Mode;
+  capture::RunFolder folder(settings, options.dry_run ? Mode::DryRun
+                                      : resuming      ? Mode::Resume
+                                      : options.overwrite ? Mode::Overwrite
+                                                          : Mode::New);
 
   engine::vk::Context context(engine::vk::ContextOptions{.validation = options.validation});
   const capture::FramePlan& plan = settings.plan;
@@ -176,13 +180,12 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
   int first_frame = plan.start == 0 ? 0 : 1;  // frame 0, the initial state, has nothing to run unless written
   if (resuming) {
     node.restore_checkpoint(checkpoint.node);
-    folder.wrote_output();
     for (const fs::path& file : capture::run_files(settings))
       if (file.extension() == ".partial") fs::remove(file);  // what the interrupted run was writing
     stats.restore(checkpoint.stats_csv);
     first_frame = checkpoint.frame + 1;
   } else {
-    folder.remove_old_files();
+    folder.set_old_files_aside();
     engine::io::write_file_atomically(settings.folder / capture::k_record_name, record_text);
   }
   const capture::FrameWriter writer(settings, context, settings.folder, scene.name);

@@ -62,16 +62,17 @@ std::vector<fs::path> run_files(const RunSettings& settings) {
   return files;
 }
 
-RunFolder::RunFolder(const RunSettings& settings, bool overwrite, bool dry_run)
-    : folder_(settings.folder), dry_run_(dry_run) {
+RunFolder::RunFolder(const RunSettings& settings, Mode mode)
+    : folder_(settings.folder), mode_(mode), kept_(mode == Mode::Resume) {
+  const bool dry_run = mode == Mode::DryRun;
   const std::vector<fs::path> existing = run_files(settings);
-  if (!existing.empty() && !overwrite) {
+  if (!existing.empty() && mode == Mode::New) {
     std::string names = existing.front().filename().string();
     if (existing.size() > 1) names += " and " + std::to_string(existing.size() - 1) + " more";
     throw std::runtime_error(folder_.string() + ": holds another capture's files (" + names +
                              "); --overwrite replaces them, or choose another folder");
   }
-  old_files_ = existing;
+  if (mode == Mode::Overwrite) old_files_ = existing;
 
   // The folders that do not exist yet, outermost first: the ones this run creates.
   std::vector<fs::path> missing;
@@ -98,17 +99,31 @@ RunFolder::RunFolder(const RunSettings& settings, bool overwrite, bool dry_run)
   created_ = missing;
 }
 
-void RunFolder::remove_old_files() {
+void RunFolder::set_old_files_aside() {
+  if (old_files_.empty()) return;
+  set_aside_ = folder_ / (k_set_aside_prefix + std::to_string(::getpid()));
+  fs::create_directory(set_aside_);
+  // Renames within one folder: nothing is copied, and a crash leaves the old run whole in set_aside_.
+  for (const fs::path& file : old_files_) fs::rename(file, set_aside_ / file.filename());
+}
+
+void RunFolder::wrote_output() {
+  kept_ = true;
+  if (set_aside_.empty()) return;
   std::error_code error;
-  for (const fs::path& file : old_files_) fs::remove(file, error);
-  old_files_.clear();
+  fs::remove_all(set_aside_, error);
+  set_aside_.clear();
 }
 
 RunFolder::~RunFolder() {
-  if (kept_ || dry_run_) return;
+  if (kept_ || mode_ == Mode::DryRun) return;
   std::error_code error;
   for (const char* name : {k_record_name, k_stats_name, k_summary_name})
     for (const std::string suffix : {"", ".partial"}) fs::remove(folder_ / (std::string(name) + suffix), error);
+  if (!set_aside_.empty()) {
+    for (const fs::path& file : old_files_) fs::rename(set_aside_ / file.filename(), file, error);
+    fs::remove(set_aside_, error);  // only if every file went back
+  }
   for (auto it = created_.rbegin(); it != created_.rend(); ++it) fs::remove(*it, error);  // only if empty
 }
 

@@ -1,7 +1,9 @@
 // What a capture leaves in its folder, and the rules that keep a folder to one run: capture.json
 // (the run's settings), the numbered frames, PLY and VDB files, stats.csv, summary.json and
 // checkpoint.bin. A folder holding another run's files is refused unless --overwrite, and a run
-// that stops before its first output removes what it created.
+// that stops before its first output removes what it created and leaves the folder as it found it:
+// a resumed run's record is never removed, and the files --overwrite replaces are set aside, not
+// deleted, until the new run has written its first output.
 #pragma once
 
 #include "tools/liquid_capture/options.h"
@@ -17,6 +19,8 @@ inline const char* k_record_name = "capture.json";
 inline const char* k_stats_name = "stats.csv";
 inline const char* k_summary_name = "summary.json";
 inline const char* k_checkpoint_name = "checkpoint.bin";
+// The folder --overwrite moves the replaced run into until the new run has written an output.
+inline const char* k_set_aside_prefix = ".replaced-run-";
 
 // Files of a capture run in `settings.folder`: its fixed names, anything matching its name
 // patterns or those of the run recorded there (capture.json), and their .partial temporaries.
@@ -25,15 +29,26 @@ std::vector<std::filesystem::path> run_files(const RunSettings& settings);
 // The output folder for the length of a run.
 class RunFolder {
  public:
+  // What the run does to the files already in the folder.
+  enum class Mode {
+    New,        // refuse a folder holding another run's files
+    Overwrite,  // replace them (--overwrite)
+    Resume,     // continue the run recorded there: its files are the run's own
+    DryRun,     // check only; create and touch nothing
+  };
   // Checks the folder before the run: throws std::runtime_error with one line when it holds
-  // another run's files (unless `overwrite`) or cannot be written; creates it (and its missing
-  // parents) unless `dry_run`, remembering what it created.
-  RunFolder(const RunSettings& settings, bool overwrite, bool dry_run);
-  // Removes what the checks found (with --overwrite); called once nothing else can refuse the run.
-  void remove_old_files();
-  // Marks the run as having written an output: from then on the folder stays.
-  void wrote_output() { kept_ = true; }
-  // Before the first output, a failed or interrupted run takes back what it made.
+  // another run's files (Mode::New) or cannot be written; creates it (and its missing parents)
+  // unless a dry run, remembering what it created.
+  RunFolder(const RunSettings& settings, Mode mode);
+  // With Mode::Overwrite: moves the old run's files into a folder of their own inside this one
+  // (k_set_aside_prefix + the process id), so the new run's files cannot mix with them; called once
+  // nothing else can refuse the run. They are deleted at the first output, put back otherwise.
+  void set_old_files_aside();
+  // Marks the run as having written an output: from then on the folder stays, and the files set
+  // aside are deleted.
+  void wrote_output();
+  // Before the first output, a failed or interrupted run takes back what it made and puts the old
+  // run's files back. A resumed run's folder is never taken back.
   ~RunFolder();
 
   const std::filesystem::path& path() const { return folder_; }
@@ -41,7 +56,9 @@ class RunFolder {
  private:
   std::filesystem::path folder_;
   std::vector<std::filesystem::path> created_, old_files_;
-  bool kept_ = false, dry_run_ = false;
+  std::filesystem::path set_aside_;  // where set_old_files_aside() put them, while they are there
+  Mode mode_;
+  bool kept_ = false;
 };
 
 // stats.csv: rows are appended to stats.csv.partial, flushed after each frame so a long run can be

@@ -36,6 +36,8 @@ void Viewer::write_report(const std::filesystem::path& path) {
   if (drawn_frames_ > 1 && last_frame_time_ > first_frame_time_)
     r["average_fps"] = (drawn_frames_ - 1) / (last_frame_time_ - first_frame_time_);
   r["scene_error"] = stats_.scene_error;
+  r["paused"] = settings_.paused;
+  r["stability_error"] = stats_.simulation_error;  // what paused the run, if the check did
   if (last_brush_) r["last_brush"] = vec(*last_brush_);
   nlohmann::json passes = nlohmann::json::object();  // GPU ms of the last timed frame, by pass
   for (const auto& p : stats_.passes) passes[p.name] = p.milliseconds;

@@ -8,6 +8,10 @@
 #include <stdexcept>
 
 namespace viewer {
+
+// How often the viewer reads the state back to check it and size the next steps (a readback waits
+// for the frames in flight, so not every frame).
+constexpr int k_diagnose_every_frames = 30;
 namespace {
 
 engine::vk::ContextOptions context_options(bool validation) {
@@ -221,7 +225,9 @@ int Viewer::run() {
       fps_time_ = now;
       fps_frames_ = 0;
     }
-    if (settings_.panel && drawn_frames_ % 30 == 1) refresh_diagnostics();
+    // On the simulation's own schedule, whatever the window shows: the stability check (which
+    // pauses an exploded run) and the adaptive step must not depend on whether the panel is open.
+    if (drawn_frames_ % k_diagnose_every_frames == 1) refresh_diagnostics();
     if (++frame_ >= options_.frames && options_.frames > 0) break;
   }
   wait_all();
