@@ -203,6 +203,20 @@ def check_failsafe():
         fail(f"a resume on a missing device should fail in one line: exit {result.returncode}, {result.stderr!r}")
     if contents(out) != before:
         fail(f"the failed resume changed the folder: {sorted(before)} -> {files(out)}")
+    # A checkpoint damaged on disk (one byte of a particle's position) is refused in one line,
+    # and the folder is left as it was.
+    checkpoint = os.path.join(out, "checkpoint.bin")
+    intact = open(checkpoint, "rb").read()
+    damaged = bytearray(intact)
+    damaged[len(damaged) // 2] ^= 0x10
+    open(checkpoint, "wb").write(damaged)
+    before = contents(out)
+    refused = run(["--resume", out], expect=1)
+    if refused.stderr.count("\n") != 1 or "damaged checkpoint" not in refused.stderr:
+        fail(f"a damaged checkpoint should be refused in one line: {refused.stderr!r}")
+    if contents(out) != before:
+        fail("the refused resume changed the folder")
+    open(checkpoint, "wb").write(intact)
     run(["--resume", out, "--validation"])
     if not {"capture.json", "stats.csv", "summary.json"} <= set(files(out)):
         fail(f"the resumed run's record is missing: {files(out)}")
@@ -324,6 +338,19 @@ def check_video():
                             "-of", "csv=p=0", video], capture_output=True, text=True)
     if probe.stdout.strip() != "48,6":
         fail(f"ffprobe says {probe.stdout.strip()!r}: expected 6 frames 48 pixels wide (padded to even)")
+    # A relative name that ffmpeg would read as an option ("-lead.mp4"), given from another
+    # directory: encoded where it was asked for, and recorded absolute for a resume from elsewhere.
+    lead, out2 = os.path.join(ARGS.work, "-lead.mp4"), os.path.join(ARGS.work, "video_lead")
+    shutil.rmtree(out2, ignore_errors=True)
+    if os.path.exists(lead):
+        os.remove(lead)
+    result = subprocess.run([ARGS.tool, ARGS.scene, "-e", "2", "--width", "48", "--height", "36", "-o", out2,
+                             "--video=-lead.mp4"], capture_output=True, text=True, timeout=600, cwd=ARGS.work)
+    if result.returncode != 0 or not os.path.isfile(lead):
+        fail(f"--video=-lead.mp4: exit {result.returncode}, file made: {os.path.isfile(lead)}: {result.stderr}")
+    recorded = json.load(open(os.path.join(out2, "capture.json")))["video"]
+    if recorded != os.path.abspath(lead):
+        fail(f"capture.json records the video as {recorded!r}, not the absolute {os.path.abspath(lead)!r}")
 
 
 def doc_reader(path):

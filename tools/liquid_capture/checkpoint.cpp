@@ -2,6 +2,8 @@
 
 #include "engine/io/atomic_file.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -11,8 +13,9 @@
 namespace capture {
 namespace {
 
-// 02: the node's next time step follows its clock (adaptive steps).
-constexpr char k_magic[8] = {'L', 'Q', 'C', 'K', 'P', 'T', '0', '2'};
+// 02: the node's next time step follows its clock (adaptive steps). 03: a checksum of the content
+// closes the file.
+constexpr char k_magic[8] = {'L', 'Q', 'C', 'K', 'P', 'T', '0', '3'};
 
 class Writer {
  public:
@@ -62,7 +65,7 @@ class Reader {
 
 }  // namespace
 
-uint64_t fingerprint(const std::string& text) {
+uint64_t fingerprint(std::string_view text) {
   uint64_t hash = 14695981039346656037ull;
   for (const unsigned char c : text) hash = (hash ^ c) * 1099511628211ull;
   return hash;
@@ -88,19 +91,36 @@ void save_checkpoint(const std::filesystem::path& path, const CaptureCheckpoint&
   w.put_vector(c.node.positions);
   w.put_vector(c.node.velocities);
   w.put_vector(std::vector<char>(c.stats_csv.begin(), c.stats_csv.end()));
+  w.put(fingerprint(w.bytes_));  // over everything before it
   engine::io::write_file_atomically(path, w.bytes_);
 }
 
 CaptureCheckpoint load_checkpoint(const std::filesystem::path& path) {
+  std::error_code error;
+  if (!std::filesystem::exists(path, error))
+    throw std::runtime_error(path.string() + ": no checkpoint to resume from (was --checkpoint-every given?)");
+  // Sized before it is read: a checkpoint is a regular file no larger than its particle textures
+  // at the largest the solver takes, plus the table.
+  const auto size = std::filesystem::is_regular_file(path, error) ? std::filesystem::file_size(path, error) : 0;
+  if (!std::filesystem::is_regular_file(path, error) || size > k_max_checkpoint_bytes)
+    throw std::runtime_error(path.string() + ": not a checkpoint (not a regular file of at most " +
+                             std::to_string(k_max_checkpoint_bytes >> 20) + " MiB)");
   std::ifstream file(path, std::ios::binary);
-  if (!file) throw std::runtime_error(path.string() + ": no checkpoint to resume from (was --checkpoint-every given?)");
-  Reader r(std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()), path.string());
+  std::string bytes(std::istreambuf_iterator<char>(file), {});
+  if (!file.eof() && !file) throw std::runtime_error(path.string() + ": cannot read the checkpoint");
+  Reader r(bytes, path.string());
   char magic[8];
   for (char& m : magic) m = r.get<char>();
   if (std::memcmp(magic, k_magic, sizeof magic - 2) == 0 && std::memcmp(magic, k_magic, sizeof magic) != 0)
     throw std::runtime_error(path.string() + ": a checkpoint of another format version (" + std::string(magic + 6, 2) +
                              ", this build reads " + std::string(k_magic + 6, 2) + "); start the capture afresh");
   if (std::memcmp(magic, k_magic, sizeof magic) != 0) throw std::runtime_error(path.string() + ": not a checkpoint");
+  uint64_t stored = 0;
+  if (bytes.size() < sizeof magic + sizeof stored) r.fail();
+  std::memcpy(&stored, bytes.data() + bytes.size() - sizeof stored, sizeof stored);
+  if (stored != fingerprint(std::string_view(bytes).substr(0, bytes.size() - sizeof stored)))
+    throw std::runtime_error(path.string() + ": damaged checkpoint (its checksum does not match its content); " +
+                             "resume from an intact copy or start the capture afresh");
   CaptureCheckpoint c;
   c.settings_hash = r.get<uint64_t>();
   c.frame = r.get<int32_t>();
@@ -123,8 +143,28 @@ CaptureCheckpoint load_checkpoint(const std::filesystem::path& path) {
   c.node.velocities = r.get_vector<glm::vec4>();
   const std::vector<char> stats = r.get_vector<char>();
   c.stats_csv.assign(stats.begin(), stats.end());
+  r.get<uint64_t>();  // the checksum, checked above
   if (!r.at_end()) r.fail();
   return c;
+}
+
+void check_against_plan(const CaptureCheckpoint& c, const FramePlan& plan, const std::string& source) {
+  const auto refuse = [&](const std::string& what) {
+    throw std::runtime_error(source + ": " + what + "; it does not belong to the run in capture.json");
+  };
+  if (c.frame < 0 || c.frame > plan.end)
+    refuse("frame " + std::to_string(c.frame) + " is outside the run's frames 0 to " + std::to_string(plan.end));
+  // Every frame ends on its time (frame * frame_seconds), with adaptive steps too.
+  const double expected = c.frame * plan.frame_seconds();
+  if (!(std::abs(c.node.time - expected) <= 1e-6 * std::max(1.0, expected)))
+    refuse("its clock reads " + std::to_string(c.node.time) + " s, not frame " + std::to_string(c.frame) + "'s " +
+           std::to_string(expected) + " s");
+  if (c.node.step < 0 || (c.frame > 0 && c.node.step < c.frame)) refuse("its step count is " + std::to_string(c.node.step));
+  const int written = std::max(0, c.frame - plan.start + 1);
+  const auto lines = std::count(c.stats_csv.begin(), c.stats_csv.end(), '\n');
+  if (lines != (written > 0 ? written + 1 : 0) && !(written == 0 && lines <= 1))
+    refuse("its table has " + std::to_string(std::max<long>(0, long(lines) - 1)) + " rows for " + std::to_string(written) +
+           " frames written");
 }
 
 }  // namespace capture

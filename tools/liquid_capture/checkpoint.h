@@ -4,10 +4,12 @@
 #pragma once
 
 #include "liquid/node.h"
+#include "tools/liquid_capture/frame_plan.h"
 
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 namespace capture {
 
@@ -22,7 +24,15 @@ void save_checkpoint(const std::filesystem::path& path, const CaptureCheckpoint&
 // Throws std::runtime_error naming the path when the file is missing, truncated or not a checkpoint.
 CaptureCheckpoint load_checkpoint(const std::filesystem::path& path);
 
-// FNV-1a, 64 bits: a fingerprint, not a security measure.
-uint64_t fingerprint(const std::string& text);
+// FNV-1a, 64 bits: a fingerprint against damage and mix-ups, not a security measure.
+uint64_t fingerprint(std::string_view text);
+
+// The largest checkpoint.bin read back: 2^26 particles of two vec4 textures, and the table.
+inline constexpr std::uintmax_t k_max_checkpoint_bytes = (std::uintmax_t(1) << 26) * 32 + (std::uintmax_t(256) << 20);
+
+// Throws std::runtime_error naming `source` when the checkpoint disagrees with the run recorded in
+// capture.json: its frame outside the plan, its clock not at that frame's time, or its table not
+// holding one row per frame written up to it.
+void check_against_plan(const CaptureCheckpoint& checkpoint, const FramePlan& plan, const std::string& source);
 
 }  // namespace capture

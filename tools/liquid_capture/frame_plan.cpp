@@ -1,16 +1,51 @@
 #include "tools/liquid_capture/frame_plan.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <stdexcept>
 
 namespace capture {
 
-NamePattern NamePattern::parse(const std::string& text, const std::string& flag, const std::string& extension) {
-  const auto fail = [&](const std::string& why) { return std::invalid_argument(flag + " " + text + ": " + why); };
-  if (text.find('/') != std::string::npos) throw fail("a file name inside the output folder, not a path");
+bool has_frame_field(const std::string& name) { return hash_form(name).find('#') != std::string::npos; }
+
+std::string hash_form(const std::string& name) {
+  std::string out;
+  for (size_t i = 0; i < name.size();) {
+    size_t digits = 0;
+    if (name[i] == '%') {  // printf: %d, %4d, %04d
+      size_t j = i + 1;
+      while (j < name.size() && std::isdigit(static_cast<unsigned char>(name[j]))) ++j;
+      if (j < name.size() && name[j] == 'd') {
+        digits = j > i + 1 ? size_t(std::stoi(name.substr(i + 1, j - i - 1))) : 1;
+        if (digits >= 1 && digits <= 16) {
+          out.append(digits, '#');
+          i = j + 1;
+          continue;
+        }
+      }
+    } else if (name.compare(i, 2, "$F") == 0) {  // Houdini: $F, $F4
+      size_t j = i + 2;
+      while (j < name.size() && std::isdigit(static_cast<unsigned char>(name[j]))) ++j;
+      digits = j > i + 2 ? size_t(std::stoi(name.substr(i + 2, j - i - 2))) : 1;
+      if (digits >= 1 && digits <= 16) {
+        out.append(digits, '#');
+        i = j;
+        continue;
+      }
+    }
+    out += name[i++];
+  }
+  return out;
+}
+
+NamePattern NamePattern::parse(const std::string& given, const std::string& flag, const std::string& extension) {
+  const auto fail = [&](const std::string& why) { return std::invalid_argument(flag + " " + given + ": " + why); };
+  if (given.find('/') != std::string::npos) throw fail("a file name inside the output folder, not a path");
+  const std::string text = hash_form(given);
   const size_t first = text.find('#');
-  if (first == std::string::npos) throw fail("needs a run of '#' for the frame number (e.g. liquid_####" + extension + ")");
+  if (first == std::string::npos)
+    throw fail("needs a frame number field: a run of '#', %04d or $F4 (e.g. liquid_####" + extension + ")");
   const size_t last = text.find_last_of('#');
   if (text.find_first_not_of('#', first) < last) throw fail("only one run of '#' is allowed");
   const bool ends = text.size() > extension.size() &&

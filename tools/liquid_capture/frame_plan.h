@@ -7,13 +7,21 @@
 
 namespace capture {
 
+// The name with its frame number field in the '#' form: printf's %04d (or %d) and Houdini's $F4
+// (or $F) become a run of that many '#', so "liquid_%04d.png" and "liquid_$F4.png" are
+// "liquid_####.png". Other text is kept as it is.
+std::string hash_form(const std::string& name);
+// Whether the name has a frame number field in any of those forms.
+bool has_frame_field(const std::string& name);
+
 // A file name with one run of '#' for the frame number, zero-padded to that many digits (wider
-// numbers keep all their digits): "liquid_####.png" -> liquid_0007.png.
+// numbers keep all their digits): "liquid_####.png" -> liquid_0007.png. Given as %04d or $F4, it
+// is kept in the '#' form (capture.json records that).
 class NamePattern {
  public:
   NamePattern() = default;
   // Throws std::invalid_argument naming `flag` when the text is not a plain file name with exactly
-  // one run of '#' ending in `extension` (".png").
+  // one run of '#' (or %04d, $F4) ending in `extension` (".png").
   static NamePattern parse(const std::string& text, const std::string& flag, const std::string& extension);
 
   std::string name(int frame) const;

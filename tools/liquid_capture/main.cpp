@@ -141,6 +141,7 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
     if (checkpoint.settings_hash != capture::fingerprint(record_text))
       throw std::runtime_error((folder / capture::k_checkpoint_name).string() + ": belongs to another run than " +
                                (folder / capture::k_record_name).string());
+    capture::check_against_plan(checkpoint, settings.plan, (folder / capture::k_checkpoint_name).string());
   } else {
     settings = capture::settle(options, k_max_steps_per_frame);
     record_text = capture::to_json(settings).dump(2) + "\n";

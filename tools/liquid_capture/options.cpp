@@ -109,9 +109,12 @@ RunSettings settle(const CaptureOptions& o, int max_steps_per_frame) {
         steps_per_frame(o.steps_per_frame, o.fps, scene.time_step, scene.substeps, max_steps_per_frame);
 
     const fs::path out(o.out);
-    if (out.filename().string().find('#') != std::string::npos) {
+    if (has_frame_field(out.filename().string())) {
       r.folder = out.has_parent_path() ? out.parent_path() : fs::path(".");
       r.frames = NamePattern::parse(out.filename().string(), "-o", ".png");
+    } else if (out.extension() == ".png") {  // a frame name without its number: every frame would overwrite it
+      throw UsageError("-o " + o.out + ": a frame name needs a frame number field: a run of '#', %04d or $F4 " +
+                       "(e.g. " + (out.parent_path() / (out.stem().string() + "_####.png")).string() + ")");
     } else {
       r.folder = out;
       r.frames = NamePattern::parse("frame_#####.png", "-o", ".png");
@@ -137,7 +140,8 @@ RunSettings settle(const CaptureOptions& o, int max_steps_per_frame) {
   r.camera_target = o.camera_target;
   r.fov_y_degrees = o.fov_y_degrees;
   r.checkpoint_every = o.checkpoint_every;
-  r.video = o.video;
+  // Recorded absolute, so a --resume from another directory writes the video where the run did.
+  r.video = o.video.empty() ? std::string() : fs::absolute(o.video).lexically_normal().string();
   if (!r.video.empty()) {
     const std::string ext = fs::path(r.video).extension().string();
     if (ext != ".mp4" && ext != ".mkv" && ext != ".mov")

@@ -64,7 +64,9 @@ VideoEncoder::VideoEncoder(fs::path path, uint32_t width, uint32_t height, doubl
   std::vector<std::string> args = {ffmpeg->string(), "-hide_banner", "-loglevel", "error", "-y", "-f", "rawvideo",
                                    "-pix_fmt", "rgba", "-s", size, "-framerate", rate, "-i", "pipe:0",
                                    "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-pix_fmt", "yuv420p",
-                                   "-f", muxer_for(path_), partial_.string()};
+                                   // "file:" and an absolute path: a name like "-x.mp4" or "rel:b.mp4" cannot
+                                   // be read as an option or a protocol.
+                                   "-f", muxer_for(path_), "file:" + fs::absolute(partial_).string()};
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
