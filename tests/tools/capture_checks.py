@@ -234,6 +234,32 @@ def check_failsafe():
     print(f"a failed resume and a failed --overwrite left {len(old)} files as they were")
 
 
+def check_lock():
+    """A folder is one run's while it runs: a --resume or an --overwrite run into it is refused in
+    one line naming the running one's process id, and the running one finishes unharmed."""
+    out = os.path.join(ARGS.work, "locked")
+    shutil.rmtree(out, ignore_errors=True)
+    process = subprocess.Popen([ARGS.tool, ARGS.scene, "-e", "400", "--checkpoint-every", "1", "-o", out] + SMALL,
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    for line in process.stdout:
+        if line.startswith("frame 3 of "):
+            break
+    for args in (["--resume", out], [ARGS.scene, "-e", "2", "-o", out, "--overwrite"] + SMALL):
+        refused = run(args, expect=1)
+        if refused.stderr.count("\n") != 1 or f"in use by another liquid_capture (pid {process.pid})" not in refused.stderr:
+            process.kill()
+            fail(f"{' '.join(args[:2])} into a running capture's folder should be refused naming pid {process.pid}: "
+                 f"{refused.stderr!r}")
+    process.send_signal(signal.SIGINT)
+    out_text, err = process.communicate(timeout=600)
+    if process.returncode != 130:
+        fail(f"the running capture exited {process.returncode} after the refused runs, expected 130: {err}")
+    if any(n.startswith(".liquid_capture.lock") for n in os.listdir(out)):
+        fail("the lock was left behind")
+    run(["--resume", out])  # the folder is free again
+    print(f"a resume and an --overwrite run were refused while pid {process.pid} ran")
+
+
 def check_dry_run():
     out = os.path.join(ARGS.work, "dry_run")
     shutil.rmtree(out, ignore_errors=True)
@@ -376,6 +402,6 @@ if __name__ == "__main__":
     checks = {"sigint": lambda: check_interrupt(signal.SIGINT), "sigterm": lambda: check_interrupt(signal.SIGTERM),
               "resume": check_resume, "dryrun": check_dry_run, "folders": check_folders, "range": check_range, "volume": check_volume,
               "video": check_video, "adaptive": check_adaptive,
-              "failsafe": check_failsafe}
+              "failsafe": check_failsafe, "lock": check_lock}
     checks[ARGS.check]()
     print("ok")

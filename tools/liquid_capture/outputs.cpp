@@ -2,6 +2,8 @@
 
 #include "engine/io/atomic_file.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -92,11 +94,30 @@ RunFolder::RunFolder(const RunSettings& settings, Mode mode)
   }
   try {
     engine::io::ensure_writable_folder(folder_);
+    lock();
   } catch (...) {
     for (auto it = missing.rbegin(); it != missing.rend(); ++it) fs::remove(*it, error);
     throw;
   }
   created_ = missing;
+}
+
+void RunFolder::lock() {
+  const fs::path path = folder_ / k_lock_name;
+  lock_fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (lock_fd_ < 0) throw std::runtime_error(path.string() + ": cannot create the folder's lock");
+  if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
+    char holder[32] = {};
+    const ssize_t n = ::pread(lock_fd_, holder, sizeof holder - 1, 0);
+    ::close(lock_fd_);
+    lock_fd_ = -1;
+    const std::string pid = n > 0 ? std::string(holder, size_t(n)) : std::string("unknown");
+    throw std::runtime_error(folder_.string() + ": in use by another liquid_capture (pid " + pid +
+                             "); wait for it to end or stop it first");
+  }
+  const std::string pid = std::to_string(::getpid());
+  if (::ftruncate(lock_fd_, 0) != 0 || ::pwrite(lock_fd_, pid.data(), pid.size(), 0) != ssize_t(pid.size()))
+    throw std::runtime_error(path.string() + ": cannot write the folder's lock");
 }
 
 void RunFolder::set_old_files_aside() {
@@ -116,15 +137,21 @@ void RunFolder::wrote_output() {
 }
 
 RunFolder::~RunFolder() {
-  if (kept_ || mode_ == Mode::DryRun) return;
   std::error_code error;
-  for (const char* name : {k_record_name, k_stats_name, k_summary_name})
-    for (const std::string suffix : {"", ".partial"}) fs::remove(folder_ / (std::string(name) + suffix), error);
-  if (!set_aside_.empty()) {
-    for (const fs::path& file : old_files_) fs::rename(set_aside_ / file.filename(), file, error);
-    fs::remove(set_aside_, error);  // only if every file went back
+  if (!kept_ && mode_ != Mode::DryRun) {
+    for (const char* name : {k_record_name, k_stats_name, k_summary_name})
+      for (const std::string suffix : {"", ".partial"}) fs::remove(folder_ / (std::string(name) + suffix), error);
+    if (!set_aside_.empty()) {
+      for (const fs::path& file : old_files_) fs::rename(set_aside_ / file.filename(), file, error);
+      fs::remove(set_aside_, error);  // only if every file went back
+    }
   }
-  for (auto it = created_.rbegin(); it != created_.rend(); ++it) fs::remove(*it, error);  // only if empty
+  if (lock_fd_ >= 0) {  // removed while still held, so no other run takes a lock on a stale file
+    fs::remove(folder_ / k_lock_name, error);
+    ::close(lock_fd_);
+  }
+  if (!kept_ && mode_ != Mode::DryRun)
+    for (auto it = created_.rbegin(); it != created_.rend(); ++it) fs::remove(*it, error);  // only if empty
 }
 
 void StatsTable::open(std::ios::openmode mode) {

@@ -21,6 +21,8 @@ inline const char* k_summary_name = "summary.json";
 inline const char* k_checkpoint_name = "checkpoint.bin";
 // The folder --overwrite moves the replaced run into until the new run has written an output.
 inline const char* k_set_aside_prefix = ".replaced-run-";
+// The advisory lock a run holds on its folder (flock), holding the holder's process id.
+inline const char* k_lock_name = ".liquid_capture.lock";
 
 // Files of a capture run in `settings.folder`: its fixed names, anything matching its name
 // patterns or those of the run recorded there (capture.json), and their .partial temporaries.
@@ -37,8 +39,9 @@ class RunFolder {
     DryRun,     // check only; create and touch nothing
   };
   // Checks the folder before the run: throws std::runtime_error with one line when it holds
-  // another run's files (Mode::New) or cannot be written; creates it (and its missing parents)
-  // unless a dry run, remembering what it created.
+  // another run's files (Mode::New), is in use by another run or resume (its lock, naming the
+  // holder's process id), or cannot be written; creates it (and its missing parents) unless a dry
+  // run, remembering what it created, and locks it for the run's length.
   RunFolder(const RunSettings& settings, Mode mode);
   // With Mode::Overwrite: moves the old run's files into a folder of their own inside this one
   // (k_set_aside_prefix + the process id), so the new run's files cannot mix with them; called once
@@ -48,15 +51,19 @@ class RunFolder {
   // aside are deleted.
   void wrote_output();
   // Before the first output, a failed or interrupted run takes back what it made and puts the old
-  // run's files back. A resumed run's folder is never taken back.
+  // run's files back. A resumed run's folder is never taken back. Releases the lock.
   ~RunFolder();
+  RunFolder(const RunFolder&) = delete;
+  RunFolder& operator=(const RunFolder&) = delete;
 
   const std::filesystem::path& path() const { return folder_; }
 
  private:
+  void lock();
   std::filesystem::path folder_;
   std::vector<std::filesystem::path> created_, old_files_;
   std::filesystem::path set_aside_;  // where set_old_files_aside() put them, while they are there
+  int lock_fd_ = -1;                 // k_lock_name, locked for the run's length
   Mode mode_;
   bool kept_ = false;
 };
