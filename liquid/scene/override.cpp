@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -50,6 +52,8 @@ void apply(Json& doc, const SceneOverride& o) {
       node = &(*node)[part];  // a new key is added; the reader refuses it if it is unknown
       walked += (walked.empty() ? "" : ".") + part;
     } else if (node->is_null()) {
+      if (is_index(part))  // a list the scene does not have: no element to set
+        throw SceneError(where + ": the scene has no " + walked + ", so no [" + part + "]");
       *node = Json::object();  // a missing parent object (camera.position without a camera)
       node = &(*node)[part];
       walked += (walked.empty() ? "" : ".") + part;
@@ -58,7 +62,15 @@ void apply(Json& doc, const SceneOverride& o) {
     }
   }
   Json value = Json::parse(o.value, nullptr, /*allow_exceptions=*/false);
-  *node = value.is_discarded() ? Json(o.value) : std::move(value);
+  if (value.is_discarded()) {
+    // Not JSON, so a string; but a number too large for a double ("1e999") is a number.
+    char* end = nullptr;
+    const double number = std::strtod(o.value.c_str(), &end);
+    if (!o.value.empty() && end == o.value.c_str() + o.value.size() && !std::isfinite(number))
+      throw SceneError(where + ": " + o.value + " is not a finite number");
+    value = Json(o.value);
+  }
+  *node = std::move(value);
 }
 
 }  // namespace

@@ -235,8 +235,11 @@ Checkpoint Simulation::save_checkpoint() {
 
 void Simulation::restore_checkpoint(const Checkpoint& c) {
   const size_t texels = size_t(setup_.particle_texture.x) * setup_.particle_texture.y;
+  if (c.active < 0 || c.active > setup_.capacity)
+    throw std::invalid_argument("liquid: the checkpoint holds " + std::to_string(c.active) +
+                                " active particles, more than the scene's capacity of " + std::to_string(setup_.capacity));
   if (c.positions.size() != texels || c.velocities.size() != texels || c.emitted.size() != emitted_.size() ||
-      c.poses.size() != pose_overrides_.size() || c.active < 0 || c.active > setup_.capacity)
+      c.poses.size() != pose_overrides_.size())
     throw std::invalid_argument("liquid: the checkpoint does not match this scene (" + std::to_string(c.positions.size()) +
                                 " particle texels, " + std::to_string(c.emitted.size()) + " emitters, " +
                                 std::to_string(c.poses.size()) + " obstacles; the scene has " + std::to_string(texels) +

@@ -245,7 +245,7 @@ TEST_CASE("the liquid composites into a host's own images, which the host reads 
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
-TEST_CASE("host geometry in front of the liquid hides it; host geometry behind it is covered", "[host]") {
+TEST_CASE("host geometry in front of the liquid hides it, host geometry behind it is covered", "[host]") {
   engine::vk::Context& context = test::gpu();
   liquid::LiquidNode plain_node(context, test::shipped_scene("small_3d"));
   HostTargets targets(context);

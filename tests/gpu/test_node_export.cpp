@@ -78,6 +78,12 @@ TEST_CASE("a node restored from a checkpoint continues the run bit for bit", "[g
 
   liquid::LiquidNode other(test::gpu(), test::shipped_scene("dam_break_2d"));
   CHECK_THROWS_WITH(other.restore_checkpoint(saved), Catch::Contains("does not match this scene"));
+  // More active particles than the scene holds: said as such, not as a size mismatch.
+  liquid::LiquidNode::Checkpoint crowded = saved;
+  crowded.active = int(saved.positions.size()) + 1;
+  CHECK_THROWS_WITH(second.restore_checkpoint(crowded),
+                    Catch::Contains("holds " + std::to_string(crowded.active) + " active particles, more than the") &&
+                        Catch::Contains("capacity"));
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 

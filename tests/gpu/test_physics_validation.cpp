@@ -158,7 +158,7 @@ TEST_CASE("the collapsing column's front follows Martin and Moyce and converges"
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
-TEST_CASE("with the PIC blend per second the column's front keeps its place at 8 times the step; blended per step "
+TEST_CASE("with the PIC blend per second the column's front keeps its place at 8 times the step, blended per step "
           "it runs ahead",
           "[gpu][liquid][physics][energy]") {
   // column_2d at 4 mm: at the chapter's step (its reference step), at the shipped 8 times that step,

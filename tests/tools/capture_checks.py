@@ -217,6 +217,29 @@ def check_failsafe():
     if contents(out) != before:
         fail("the refused resume changed the folder")
     open(checkpoint, "wb").write(intact)
+    record = os.path.join(out, "capture.json")
+    kept = open(record, "rb").read()
+    open(record, "wb").write(kept[: len(kept) // 2])
+    refused = run(["--resume", out], expect=1)
+    if refused.stderr.count("\n") != 1 or "capture.json: not valid JSON" not in refused.stderr:
+        fail(f"a damaged capture.json should be refused in one line naming it: {refused.stderr!r}")
+    # A record's values are held to their flags' ranges: an edited one is refused naming the field.
+    for field, value, message in (("steps_per_frame", 0, "frames.steps_per_frame: must be an integer in [1, 100000], got 0"),
+                                  ("end", -3, "frames.end: must be an integer in ["),
+                                  ("start", 2 ** 31 - 1, "frames.start: must be an integer in [0, 1000000]")):
+        edited = json.loads(kept)
+        edited["frames"][field] = value
+        open(record, "w").write(json.dumps(edited))
+        refused = run(["--resume", out], expect=1)
+        if refused.stderr.count("\n") != 1 or message not in refused.stderr:
+            fail(f"frames.{field} = {value} in capture.json should be refused in one line naming it: {refused.stderr!r}")
+    edited = json.loads(kept)
+    edited["view"]["camera_position"] = [1]
+    open(record, "w").write(json.dumps(edited))
+    refused = run(["--resume", out], expect=1)
+    if "view.camera_position: must be empty or 3 numbers" not in refused.stderr:
+        fail(f"a camera position of one number should be refused: {refused.stderr!r}")
+    open(record, "wb").write(kept)
     run(["--resume", out, "--validation"])
     if not {"capture.json", "stats.csv", "summary.json"} <= set(files(out)):
         fail(f"the resumed run's record is missing: {files(out)}")

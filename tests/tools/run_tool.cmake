@@ -1,5 +1,5 @@
 # Runs a command-line tool as a user would and checks what it leaves behind. Used by ctest:
-#   cmake -DTOOL=... -DARGS="a;b" [-DENV="K=V;..."] -DEXPECT=success|failure [-DSTDERR_REGEX=...]
+#   cmake -DTOOL=... -DARGS="a;b" [-DENV="K=V;..."] -DEXPECT=success|failure [-DEXPECT_CODE=N] [-DSTDERR_REGEX=...]
 #         [-DSTDOUT_REGEX=...] [-DOUT_DIR=... -DEXPECT_FILES="f1;f2"] [-DEXPECT_NO_DIR=...] -P run_tool.cmake
 # A failure must print exactly one line on stderr, matching STDERR_REGEX, and must leave no
 # partial file; a success must produce every expected file and no *.partial file.
@@ -31,6 +31,9 @@ else()
   endif()
   if(NOT code MATCHES "^[0-9]+$")
     message(FATAL_ERROR "the tool did not exit cleanly: ${code}")
+  endif()
+  if(EXPECT_CODE AND NOT code EQUAL EXPECT_CODE)
+    message(FATAL_ERROR "expected exit code ${EXPECT_CODE}, got ${code}")
   endif()
   string(STRIP "${err}" stripped)
   string(FIND "${stripped}" "\n" newline)

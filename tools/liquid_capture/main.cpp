@@ -39,7 +39,7 @@ namespace fs = std::filesystem;
 using capture::RunSettings;
 using nlohmann::json;
 
-constexpr int k_max_steps_per_frame = 100000;
+using capture::k_max_steps_per_frame;
 constexpr int k_interrupted_exit = 130;  // 128 + SIGINT, what shells report for Ctrl-C
 
 // Ctrl-C or SIGTERM: the frame in progress finishes, then the run stops as if it had ended there.
@@ -136,7 +136,10 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
     capture::check_resume_flags(app);
     const fs::path folder(options.resume);
     record_text = read_text(folder / capture::k_record_name);
-    settings = capture::run_settings_from_json(json::parse(record_text), folder, (folder / capture::k_record_name).string());
+    const std::string record_name = (folder / capture::k_record_name).string();
+    const json record = json::parse(record_text, nullptr, /*allow_exceptions=*/false);
+    if (record.is_discarded()) throw std::runtime_error(record_name + ": not valid JSON (not a capture's record)");
+    settings = capture::run_settings_from_json(record, folder, record_name);
     checkpoint = capture::load_checkpoint(folder / capture::k_checkpoint_name);
     if (checkpoint.settings_hash != capture::fingerprint(record_text))
       throw std::runtime_error((folder / capture::k_checkpoint_name).string() + ": belongs to another run than " +

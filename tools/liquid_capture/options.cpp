@@ -7,6 +7,7 @@
 #include "tools/common/cli.h"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #ifndef LIQUID_SOURCE_DIR
@@ -23,26 +24,26 @@ void add_options(CLI::App& app, CaptureOptions& o) {
   using tools::integer_range;
   app.add_option("scene", o.scene, "scene JSON file, or the name of one in assets/scenes/ (dam_break_2d)");
   app.add_option("-o,--out", o.out, "output folder, or a frame name pattern in it (out/liquid_####.png)")->take_last();
-  app.add_option("-s,--start", o.start, "first frame written (0: the initial state)")->check(integer_range(0, 1000000));
-  app.add_option("-e,--end", o.end, "last frame written")->check(integer_range(0, 1000000));
+  app.add_option("-s,--start", o.start, "first frame written (0: the initial state)")->check(integer_range(0, k_max_frame));
+  app.add_option("-e,--end", o.end, "last frame written")->check(integer_range(0, k_max_frame));
   app.add_option("-n,--frames", o.frames, "frames written (default 60): sets --end to start + N - 1")
-      ->check(integer_range(1, 1000000));
+      ->check(integer_range(1, k_max_frame));
   app.add_option("--fps", o.fps, "simulated frames per second (steps per frame = 1 / (fps dt)); "
                                  "default: the scene's substeps per frame")
       ->check(finite_range(0.001, 10000.0));
   app.add_option("--steps-per-frame", o.steps_per_frame, "simulation steps per frame (overrides --fps)")
-      ->check(integer_range(1, 100000));
-  app.add_option("--width", o.width, "frame width in pixels")->check(integer_range(1, 65536));
-  app.add_option("--height", o.height, "frame height in pixels")->check(integer_range(1, 65536));
+      ->check(integer_range(1, k_max_steps_per_frame));
+  app.add_option("--width", o.width, "frame width in pixels")->check(integer_range(1, k_max_pixels));
+  app.add_option("--height", o.height, "frame height in pixels")->check(integer_range(1, k_max_pixels));
   app.add_option("--camera-position", o.camera_position, "camera position x,y,z (m); default: the scene's")
       ->expected(3)
       ->delimiter(',')
-      ->check(finite_range(-1e6, 1e6));
+      ->check(finite_range(-k_max_camera_coordinate, k_max_camera_coordinate));
   app.add_option("--camera-target", o.camera_target, "point the camera looks at x,y,z (m)")
       ->expected(3)
       ->delimiter(',')
-      ->check(finite_range(-1e6, 1e6));
-  app.add_option("--fov", o.fov_y_degrees, "vertical field of view (degrees)")->check(finite_range(1.0, 170.0));
+      ->check(finite_range(-k_max_camera_coordinate, k_max_camera_coordinate));
+  app.add_option("--fov", o.fov_y_degrees, "vertical field of view (degrees)")->check(finite_range(k_min_fov_degrees, k_max_fov_degrees));
   app.add_flag("!--no-fxaa", o.fxaa, "skip the FXAA pass");
   app.add_flag("--draw-particles", o.draw_particles, "2D views: draw the particles as points over the liquid");
   app.add_flag("--export-particles", o.export_particles,
@@ -54,7 +55,7 @@ void add_options(CLI::App& app, CaptureOptions& o) {
   app.add_option("--set", o.set, "override a scene field: key=value, dotted paths (fluid_blocks.0.max=[0.1,0.2,0.2])")
       ->take_all();
   app.add_option("--checkpoint-every", o.checkpoint_every, "save a checkpoint every N frames (for --resume)")
-      ->check(integer_range(1, 1000000));
+      ->check(integer_range(1, k_max_frame));
   app.add_option("--resume", o.resume, "continue the run in FOLDER from its last checkpoint");
   app.add_option("--video", o.video, "also encode the frames with ffmpeg (.mp4, .mkv or .mov)");
   app.add_flag("--overwrite", o.overwrite, "replace another capture's files in the output folder");
@@ -178,6 +179,21 @@ json to_json(const RunSettings& r) {
 }
 
 RunSettings run_settings_from_json(const json& j, const fs::path& folder, const std::string& source) {
+  // Each value within the range its flag takes.
+  const auto number = [](const json& value, const char* name, double lo, double hi, bool integer) {
+    if (!value.is_number() || !std::isfinite(value.get<double>()) || value.get<double>() < lo || value.get<double>() > hi ||
+        (integer && !value.is_number_integer()))
+      throw std::runtime_error(std::string(name) + ": must be " + (integer ? "an integer" : "a number") + " in [" +
+                               tools::format_cli_number(lo) + ", " + tools::format_cli_number(hi) + "], got " + value.dump());
+    return value.get<double>();
+  };
+  const auto point = [&](const json& value, const char* name) {
+    std::vector<float> p;
+    if (!value.is_array() || (value.size() != 0 && value.size() != 3))
+      throw std::runtime_error(std::string(name) + ": must be empty or 3 numbers, got " + value.dump());
+    for (const json& x : value) p.push_back(float(number(x, name, -k_max_camera_coordinate, k_max_camera_coordinate, false)));
+    return p;
+  };
   try {
     if (j.at("tool") != "liquid_capture" || j.at("record_version") != 1)
       throw std::runtime_error("not a record of this version of liquid_capture");
@@ -186,23 +202,26 @@ RunSettings run_settings_from_json(const json& j, const fs::path& folder, const 
     r.overrides = j.at("overrides").get<std::vector<std::string>>();
     r.scene_document = j.at("scene").dump(2);
     const json& f = j.at("frames");
-    r.plan = {f.at("start").get<int>(), f.at("end").get<int>(), f.at("steps_per_frame").get<int>(),
-              f.at("time_step_s").get<double>()};
+    r.plan.start = int(number(f.at("start"), "frames.start", 0, k_max_frame, true));
+    r.plan.end = int(number(f.at("end"), "frames.end", r.plan.start, k_max_frame, true));
+    r.plan.steps_per_frame = int(number(f.at("steps_per_frame"), "frames.steps_per_frame", 1, k_max_steps_per_frame, true));
+    r.plan.time_step = number(f.at("time_step_s"), "frames.time_step_s", 1e-9, 1.0, false);
     r.folder = folder;
     const json& n = j.at("names");
     r.frames = NamePattern::parse(n.at("frames").get<std::string>(), "frames", ".png");
     if (!n.at("particles").is_null()) r.particles = NamePattern::parse(n.at("particles"), "particles", ".ply");
     if (!n.at("volumes").is_null()) r.volumes = NamePattern::parse(n.at("volumes"), "volumes", ".vdb");
     const json& v = j.at("view");
-    r.width = v.at("width");
-    r.height = v.at("height");
-    r.fxaa = v.at("fxaa");
-    r.draw_particles = v.at("draw_particles");
-    r.camera_position = v.at("camera_position").get<std::vector<float>>();
-    r.camera_target = v.at("camera_target").get<std::vector<float>>();
-    r.fov_y_degrees = v.at("fov_y_degrees");
-    r.checkpoint_every = j.at("checkpoint_every");
-    r.video = j.at("video");
+    r.width = uint32_t(number(v.at("width"), "view.width", 1, k_max_pixels, true));
+    r.height = uint32_t(number(v.at("height"), "view.height", 1, k_max_pixels, true));
+    r.fxaa = v.at("fxaa").get<bool>();
+    r.draw_particles = v.at("draw_particles").get<bool>();
+    r.camera_position = point(v.at("camera_position"), "view.camera_position");
+    r.camera_target = point(v.at("camera_target"), "view.camera_target");
+    const json& fov = v.at("fov_y_degrees");  // 0: the scene's
+    r.fov_y_degrees = fov == 0 ? 0.0f : float(number(fov, "view.fov_y_degrees", k_min_fov_degrees, k_max_fov_degrees, false));
+    r.checkpoint_every = int(number(j.at("checkpoint_every"), "checkpoint_every", 0, k_max_frame, true));
+    r.video = j.at("video").get<std::string>();
     return r;
   } catch (const std::exception& e) {
     throw std::runtime_error(source + ": " + e.what());

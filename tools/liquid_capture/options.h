@@ -23,6 +23,14 @@ class UsageError : public std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
+// The ranges the flags take, and that a run record read back on --resume is held to (an edited or
+// damaged capture.json is refused like a bad flag, not trusted).
+inline constexpr int k_max_frame = 1000000;
+inline constexpr int k_max_steps_per_frame = 100000;
+inline constexpr int k_max_pixels = 65536;             // per side
+inline constexpr double k_max_camera_coordinate = 1e6;  // m
+inline constexpr double k_min_fov_degrees = 1.0, k_max_fov_degrees = 170.0;
+
 struct CaptureOptions {
   std::string scene;              // a file, or a name in assets/scenes/
   std::vector<std::string> set;   // key=value scene overrides

@@ -326,6 +326,16 @@ bool wanted(const Options& o, const std::string& name) {
 }
 
 int run(const Options& o) {
+  // Everything that can refuse the run does so before the first run: the output folder, and
+  // every scene to be run with the --set overrides applied (a key one scene does not take).
+  engine::io::ensure_writable_folder(o.out);
+  const std::pair<const char*, bool> scenes[] = {
+      {"rest_pool_2d.json", wanted(o, "rest_pool")},
+      {"dam_break_2d.json", wanted(o, "energy")},
+      {"column_2d.json", wanted(o, "column") || wanted(o, "column_2d")},
+      {"column_3d.json", wanted(o, "column") || wanted(o, "column_3d")}};
+  for (const auto& [file, runs] : scenes)
+    if (runs) load(o, file);
   engine::vk::Context context(engine::vk::ContextOptions{.validation = o.validation});
   std::printf("device %s (%s)%s\n", context.device_name().c_str(), context.driver_description().c_str(),
               o.quick ? ", quick" : "");
@@ -375,7 +385,17 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"rest_pool", "energy", "column", "column_2d", "column_3d"}));
   app.add_flag("--validation", o.validation, "enable the Vulkan validation layer");
   std::vector<std::string> sets;
-  app.add_option("--set", sets, "override a field of every scene run, checked like the file (key=value, repeatable)");
+  app.add_option("--set", sets, "override a field of every scene run, checked like the file (key=value, repeatable)")
+      ->check(CLI::Validator(  // a malformed key=value is a bad flag (exit 2), like the other flags'
+          [](std::string& text) -> std::string {
+            try {
+              liquid::parse_scene_override(text);
+              return {};
+            } catch (const std::exception& error) {
+              return error.what();
+            }
+          },
+          "KEY=VALUE"));
   app.add_option("--column-2d-spacings", o.column_2d_spacings, "2D column particle spacings, m (default 0.004 0.002 0.001; --quick 0.002)")
       ->check(tools::finite_range(0.0002, 0.05));
   app.add_option("--column-3d-spacings", o.column_3d_spacings, "3D column particle spacings, m (default 0.004 0.002; --quick 0.004)")
@@ -384,7 +404,7 @@ int main(int argc, char** argv) {
   return tools::run_main(app, argc, argv, "liquid_validate", [&] {
     o.scenes = scenes.empty() ? default_scenes() : fs::path(scenes);
     o.out = out;
-    for (const std::string& s : sets) o.overrides.push_back(liquid::parse_scene_override(s));
+    for (const std::string& s : sets) o.overrides.push_back(liquid::parse_scene_override(s));  // checked below
     return run(o);
   });
 }
