@@ -25,6 +25,23 @@ double speed_of_sound(const SimulationSetup& setup, double density_ratio) {
   return std::sqrt(double(setup.stiffness) * setup.gamma * std::pow(ratio, double(setup.gamma)));
 }
 
+RuntimeParameterRange runtime_parameter_range(const SimulationSetup& setup, double time_step, float stiffness,
+                                              glm::vec3 gravity) {
+  double longest = 0.0;
+  for (int a = 0; a < setup.dimension; ++a) longest = std::max(longest, double(setup.domain[a]));
+  const double k = std::max(double(stiffness), 0.0), g = glm::length(gravity);
+  // The fastest signal the step may carry: sound plus the flow, within the stable acoustic CFL.
+  const double signal = stable_acoustic_cfl(setup) * setup.cell_size / time_step;
+  const double sound = std::sqrt(k * setup.gamma), fall = std::sqrt(2.0 * g * longest);
+  RuntimeParameterRange r;
+  const double left_for_fall = std::max(signal - sound, 0.0);
+  r.max_gravity = float(std::min(k_max_hydrostatic_ratio * k, 0.5 * left_for_fall * left_for_fall) / longest);
+  const double left_for_sound = std::max(signal - fall, 0.0);
+  r.max_stiffness = float(std::clamp(left_for_sound * left_for_sound / setup.gamma, 1.0, 500.0));
+  r.min_stiffness = float(std::min(g * longest / k_max_hydrostatic_ratio, double(r.max_stiffness)));
+  return r;
+}
+
 double cfl_time_step(const SimulationSetup& setup, const AdaptiveTimeStep& cfl, const Diagnostics& d, double largest) {
   const double h = setup.cell_size;
   const double speed = std::isfinite(d.max_speed) ? std::max(double(d.max_speed), 0.0) : 0.0;

@@ -26,6 +26,28 @@ double stable_acoustic_cfl(const SimulationSetup& setup);
 // Speed of sound (m/s) at density ratio rho / rho0.
 double speed_of_sound(const SimulationSetup& setup, double density_ratio);
 
+// The live parameters (LiquidNode::set_runtime_parameters) a host's sliders can offer while the
+// node keeps its step `time_step`, all of which stay stable (the viewer's panel uses them). Two
+// conditions bound gravity g and stiffness k together, with L the domain's longest side:
+//   hydrostatic: |g| L <= k_max_hydrostatic_ratio k: the pressure rho0 |g| L of a column across
+//     the domain, in any direction, stays that fraction of k rho0, so the liquid stays weakly
+//     compressed and its fall speed sqrt(2 |g| L) well below the speed of sound sqrt(k gamma);
+//   step: sqrt(k gamma) + sqrt(2 |g| L) <= stable_acoustic_cfl h / dt: sound and the fastest fall
+//     together within the regime's stable acoustic CFL (with no flow, the stiffest k the step
+//     allows).
+// The range of each is what both allow at the other's present value; the PIC ratio may be all of
+// [0, 1]. The shipped scenes' own |g| L / k lies between 0.29 (column_*) and 0.70
+// (dam_break_3d); 0.7 admits each scene's gravity at its stiffness (dam_break_2d: up to
+// 15.4 m/s^2 at its k = 22.05, half the old slider's end of 30 m/s^2).
+inline constexpr double k_max_hydrostatic_ratio = 0.7;
+struct RuntimeParameterRange {
+  float max_gravity = 0.0f;  // m/s^2, of |g|, at the stiffness passed in
+  float min_stiffness = 0.0f, max_stiffness = 0.0f;  // at the gravity passed in
+  float min_pic_ratio = 0.0f, max_pic_ratio = 1.0f;
+};
+RuntimeParameterRange runtime_parameter_range(const SimulationSetup& setup, double time_step, float stiffness,
+                                              glm::vec3 gravity);
+
 // min(largest, acoustic bound, velocity bound) for the state in `d` (its max_speed and
 // max_density_ratio).
 double cfl_time_step(const SimulationSetup& setup, const AdaptiveTimeStep& cfl, const Diagnostics& d, double largest);

@@ -1,12 +1,18 @@
 // LiquidNode::set_runtime_parameters, what the viewer's sliders call: the new values reach the
 // next steps of a running node (no restart), and bad values are refused by name.
 #include "liquid/node.h"
+#include "liquid/physics/time_step.h"
+#include "liquid/solver/simulation.h"
 #include "tests/gpu/liquid_helpers.h"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 TEST_CASE("runtime parameters change a running node's next steps and refuse bad values", "[gpu][liquid][viewer]") {
   liquid::LiquidNode node(test::gpu(), test::shipped_scene("dam_break_2d"));
@@ -41,5 +47,61 @@ TEST_CASE("runtime parameters change a running node's next steps and refuse bad 
   bad.gravity.x = std::numeric_limits<float>::quiet_NaN();
   CHECK_THROWS_AS(node.set_runtime_parameters(bad), std::invalid_argument);
   CHECK(node.runtime_parameters().gravity.y == 40.0f);  // a refused value changes nothing
+  REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+// The panel's slider ranges (liquid::runtime_parameter_range) at their ends, on dam_break_2d with
+// the liquid moving (the column collapsed for 0.45 s first): every end runs on stable, and the old
+// gravity slider's end, 30 m/s^2, is outside the range.
+TEST_CASE("every end of the viewer's slider ranges runs stable at dam_break_2d's step", "[gpu][liquid][viewer]") {
+  liquid::LiquidNode node(test::gpu(), test::shipped_scene("dam_break_2d"));
+  const liquid::LiquidNode::RuntimeParameters start = node.runtime_parameters();
+  const liquid::SimulationSetup& setup = node.simulation().setup();
+  const liquid::RuntimeParameterRange range =
+      liquid::runtime_parameter_range(setup, node.time_step(), start.stiffness, start.gravity);
+  INFO("|g| <= " << range.max_gravity << " m/s^2, k in [" << range.min_stiffness << ", " << range.max_stiffness << "]");
+  CHECK(range.max_gravity < 30.0f);  // the old slider's end
+  CHECK(range.max_gravity > glm::length(start.gravity));
+  CHECK(range.min_stiffness < start.stiffness);
+  CHECK(range.max_stiffness > start.stiffness);
+
+  test::run_steps(node, 500);
+  const liquid::LiquidNode::Checkpoint moving = node.save_checkpoint();
+  const auto at_stiffness = [&](float k) { return liquid::runtime_parameter_range(setup, node.time_step(), k, start.gravity); };
+  const float middle = 0.5f * (start.stiffness + range.max_stiffness);
+  struct End {
+    const char* name;
+    glm::vec3 gravity;
+    float stiffness, pic_ratio;
+  };
+  const float g = range.max_gravity, diagonal = g / std::sqrt(2.0f);
+  const std::vector<End> ends = {
+      {"gravity up", {0.0f, g, 0.0f}, start.stiffness, start.pic_ratio},
+      {"gravity sideways", {-g, 0.0f, 0.0f}, start.stiffness, start.pic_ratio},
+      {"gravity diagonal", {diagonal, -diagonal, 0.0f}, start.stiffness, start.pic_ratio},
+      {"stiffest", start.gravity, range.max_stiffness, start.pic_ratio},
+      {"stiffer, with the gravity it allows, up", {0.0f, at_stiffness(middle).max_gravity, 0.0f}, middle, start.pic_ratio},
+      {"softest", start.gravity, range.min_stiffness, start.pic_ratio},
+      {"FLIP", start.gravity, start.stiffness, 0.0f},
+      {"PIC", start.gravity, start.stiffness, 1.0f},
+  };
+  for (const End& end : ends) {
+    node.restore_checkpoint(moving);
+    node.set_runtime_parameters({end.gravity, end.pic_ratio, end.stiffness});
+    double most = 0.0;
+    float fastest = 0.0f;
+    for (int i = 0; i < 6; ++i) {
+      liquid::Diagnostics d;
+      REQUIRE_NOTHROW(d = test::run_steps(node, 100));
+      most = std::max(most, d.kinetic_energy);
+      fastest = std::max(fastest, d.max_speed);
+    }
+    std::printf("%s: g (%g, %g), k %g, PIC %g: kinetic energy at most %g J, speed at most %g m/s\n", end.name,
+                end.gravity.x, end.gravity.y, end.stiffness, end.pic_ratio, most, fastest);
+    INFO(end.name << ": kinetic energy at most " << most << " J, speed " << fastest << " m/s");
+    // Bounded: at most what a fall across the whole domain at this gravity gives all the liquid.
+    const double fall = node.diagnose().mass * glm::length(end.gravity) * std::max(setup.domain.x, setup.domain.y);
+    CHECK(most < fall);
+  }
   REQUIRE_NO_VALIDATION_MESSAGES();
 }

@@ -4,7 +4,7 @@ checks what the node read back at exit (--report) against the same run without t
 
   viewer_test.py MODE --viewer PATH --with-xvfb PATH --scenes DIR --scripts DIR --out DIR [--compare PATH]
                 [--viewer-arg ARG ...]
-MODE: drag | obstacle | hit3d | resize | golden | bad_reload | no_panel. Every run has --validation: any validation
+MODE: drag | obstacle | hit3d | resize | golden | bad_reload | no_panel | paused_reset | screenshots. Every run has --validation: any validation
 message makes the viewer exit non-zero and the test fail.
 """
 import argparse
@@ -14,17 +14,18 @@ import shutil
 import subprocess
 import sys
 import time
+import zlib
 
 SIZE = ["--width", "320", "--height", "240"]
 
 
-def run(args, name, viewer_args, expect_success=True, before=None):
+def run(args, name, viewer_args, expect_success=True, cwd=None):
     report = os.path.join(args.out, name + ".json")
     if os.path.exists(report):
         os.remove(report)
     command = [args.with_xvfb, args.viewer, *viewer_args, *args.viewer_arg, "--validation", "--report", report]
     print("$", " ".join(command), flush=True)
-    result = subprocess.run(command, capture_output=True, text=True, timeout=300)
+    result = subprocess.run(command, capture_output=True, text=True, timeout=300, cwd=cwd)
     print(result.stdout, result.stderr, sep="", flush=True)
     if expect_success and result.returncode != 0:
         sys.exit(f"FAIL: {name}: exit code {result.returncode}")
@@ -42,6 +43,47 @@ def check(condition, message):
     print(("ok: " if condition else "FAIL: ") + message, flush=True)
     if not condition:
         sys.exit(1)
+
+
+def read_png(path):
+    """(width, height, rows of RGBA bytes) of an 8-bit RGBA PNG (what the viewer writes)."""
+    with open(path, "rb") as f:
+        data = f.read()
+    width, height = int.from_bytes(data[16:20], "big"), int.from_bytes(data[20:24], "big")
+    check(data[24:26] == bytes([8, 6]), f"{path} is 8-bit RGBA")
+    chunks, i = b"", 8
+    while i < len(data):
+        length = int.from_bytes(data[i:i + 4], "big")
+        if data[i + 4:i + 8] == b"IDAT":
+            chunks += data[i + 8:i + 8 + length]
+        i += 12 + length
+    raw, stride, rows, previous = zlib.decompress(chunks), 4 * width, [], bytearray(4 * width)
+    for y in range(height):
+        kind, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for x in range(stride):
+            a = line[x - 4] if x >= 4 else 0
+            b, c = previous[x], previous[x - 4] if x >= 4 else 0
+            if kind == 1:
+                line[x] = (line[x] + a) & 255
+            elif kind == 2:
+                line[x] = (line[x] + b) & 255
+            elif kind == 3:
+                line[x] = (line[x] + (a + b) // 2) & 255
+            elif kind == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[x] = (line[x] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(bytes(line))
+        previous = line
+    return width, height, rows
+
+
+def liquid_pixels(path):
+    """Pixels of a 2D view that are not the tank's background (its most common colour)."""
+    width, height, rows = read_png(path)
+    pixels = [row[i:i + 3] for row in rows for i in range(0, 4 * width, 4)]
+    background = max(set(pixels), key=pixels.count)
+    return sum(1 for p in pixels if max(abs(a - b) for a, b in zip(p, background)) > 24)
 
 
 def com(r):
@@ -171,9 +213,47 @@ def no_panel(args):
     check(exploded["steps"] < 80, f"it stopped stepping ({exploded['steps']} of 80 steps)")
 
 
+def paused_reset(args):
+    # A reset while paused (tests/viewer/pause_reset.json: Space at frame 3, R at frame 5) shows
+    # the reset scene's first state, not an empty tank, though no step follows it.
+    scene = os.path.join(args.scenes, "dam_break_2d.json")
+    common = [scene, *SIZE, "--no-panel"]
+    first_shot, reset_shot = os.path.join(args.out, "first.png"), os.path.join(args.out, "paused_reset.png")
+    run(args, "first_frame", [*common, "--frames", "1", "--screenshot", first_shot])
+    r = run(args, "paused_reset", [*common, "--frames", "9", "--screenshot", reset_shot,
+                                   "--script", os.path.join(args.scripts, "pause_reset.json")])
+    check(r["paused"] and r["steps"] == 0, f"reset and still paused: {r['steps']} steps since the reset")
+    first, shown = liquid_pixels(first_shot), liquid_pixels(reset_shot)
+    check(first > 1000, f"the first frame shows the column: {first} liquid pixels")
+    check(abs(shown - first) < 0.05 * first, f"after the reset the paused view shows it too: {shown} liquid pixels")
+
+
+def screenshots(args):
+    # The S key's screenshots take the next free viewer_NNNN.png of the working folder: two
+    # sessions into one folder write two files, and an earlier file is never replaced.
+    folder = os.path.join(args.out, "shots")
+    shutil.rmtree(folder, ignore_errors=True)
+    os.makedirs(folder)
+    earlier = b"an earlier session's screenshot"
+    with open(os.path.join(folder, "viewer_0000.png"), "wb") as f:
+        f.write(earlier)
+    common = [os.path.join(args.scenes, "dam_break_2d.json"), "--frames", "4", *SIZE, "--no-panel",
+              "--script", os.path.join(args.scripts, "screenshot.json")]
+    run(args, "screenshot_1", common, cwd=folder)
+    run(args, "screenshot_2", common, cwd=folder)
+    names = sorted(os.listdir(folder))
+    check(names == ["viewer_0000.png", "viewer_0001.png", "viewer_0002.png"], f"one new file per session: {names}")
+    with open(os.path.join(folder, "viewer_0000.png"), "rb") as f:
+        check(f.read() == earlier, "the earlier viewer_0000.png is untouched")
+    for name in names[1:]:
+        width, height, _ = read_png(os.path.join(folder, name))
+        check((width, height) == (320, 240), f"{name} is a 320 x 240 PNG")
+
+
 def main():
     p = argparse.ArgumentParser()
-    p.add_argument("mode", choices=["drag", "obstacle", "hit3d", "resize", "golden", "bad_reload", "no_panel"])
+    p.add_argument("mode", choices=["drag", "obstacle", "hit3d", "resize", "golden", "bad_reload", "no_panel",
+                                   "paused_reset", "screenshots"])
     p.add_argument("--viewer", required=True)
     p.add_argument("--with-xvfb", required=True)
     p.add_argument("--scenes", required=True)

@@ -83,7 +83,10 @@ bool Viewer::draw_frame(FrameSlot& slot, int steps, double) {
   engine::graph::RenderGraph& graph = slot.graph;
   graph.reset();
   const engine::graph::ImageHandle swap = graph.import_image(target.name(), target);
-  const liquid::LiquidImages images = session_->node().add_to(graph, steps);
+  liquid::LiquidImages images = session_->node().add_to(graph, steps);
+  // The node's grids are filled by its steps: a node that has not stepped yet (a reset, reload or
+  // scene opened while paused) would show an empty tank, so its state is splatted without a step.
+  if (steps == 0 && session_->node().step_count() == 0) images = session_->node().add_grids_to(graph, images);
   const liquid::RenderOutputs out = session_->renderer().add_to(graph, images, session_->camera_view());
   present_->add_to(graph, out.final, swap);  // RGBA8 -> the swapchain's format (BGRA8 on lavapipe)
   graph.compile();
@@ -100,13 +103,14 @@ bool Viewer::draw_frame(FrameSlot& slot, int steps, double) {
                                                                   VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
   }
   const bool last = options_.frames > 0 && frame_ + 1 >= options_.frames;
-  if (shot_requested_ || (last && !options_.screenshot.empty())) {
-    const std::filesystem::path path = shot_requested_ ? next_screenshot_path() : options_.screenshot;
+  const std::filesystem::path path =
+      shot_requested_ ? next_screenshot_path() : last ? options_.screenshot : std::filesystem::path();
+  shot_requested_ = false;
+  if (!path.empty()) {
     transition(cmd, target, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
                VK_ACCESS_2_TRANSFER_READ_BIT, false);
     slot.shot = copy_to_buffer(*context_, cmd, target, swapchain_->bgra(), path);
     stats_.status = "screenshot: " + path.string();
-    shot_requested_ = false;
   }
   transition(cmd, target, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_2_NONE, 0, false);
   VK_CHECK(vkEndCommandBuffer(cmd));

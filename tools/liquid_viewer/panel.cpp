@@ -6,7 +6,6 @@
 
 #include <imgui.h>
 
-#include <algorithm>
 #include <exception>
 
 namespace viewer {
@@ -14,23 +13,29 @@ namespace {
 
 void live_parameters(liquid::LiquidNode& node) {
   liquid::LiquidNode::RuntimeParameters p = node.runtime_parameters();
+  const liquid::SimulationSetup& setup = node.simulation().setup();
+  // Every value the sliders offer runs stable at the present step (liquid/physics/time_step.h);
+  // AlwaysClamp holds Ctrl+click typing to the range too.
+  const liquid::RuntimeParameterRange range =
+      liquid::runtime_parameter_range(setup, node.time_step(), p.stiffness, p.gravity);
+  const ImGuiSliderFlags clamp = ImGuiSliderFlags_AlwaysClamp;
+  const float gmax = range.max_gravity;
   bool changed = false;
   if (node.dimension() == 2) {
     float g[2] = {p.gravity.x, p.gravity.y};
-    changed |= ImGui::SliderFloat2("gravity (m/s^2)", g, -30.0f, 30.0f);
+    changed |= ImGui::SliderFloat2("gravity (m/s^2)", g, -gmax, gmax, "%.2f", clamp);
     p.gravity = {g[0], g[1], 0.0f};
   } else {
-    changed |= ImGui::SliderFloat3("gravity (m/s^2)", &p.gravity.x, -30.0f, 30.0f);
+    changed |= ImGui::SliderFloat3("gravity (m/s^2)", &p.gravity.x, -gmax, gmax, "%.2f", clamp);
   }
-  const liquid::SimulationSetup& setup = node.simulation().setup();
+  // The range bounds |g|, not each component: a diagonal past it is shortened to it.
+  if (const float length = glm::length(p.gravity); length > gmax) p.gravity *= gmax / length;
   const bool per_second = setup.pic_ratio_reference_step > 0.0f;
-  changed |= ImGui::SliderFloat(per_second ? "PIC ratio (per reference step)" : "PIC ratio", &p.pic_ratio, 0.0f, 1.0f);
-  // The stiffest k the present step stays stable with: the speed of sound sqrt(k gamma) within the
-  // regime's stable acoustic CFL.
-  const double sound = liquid::stable_acoustic_cfl(setup) * setup.cell_size / node.time_step();
-  const float stiffest = float(std::clamp(sound * sound / setup.gamma, 1.0, 500.0));
-  changed |= ImGui::SliderFloat("stiffness k", &p.stiffness, 0.0f, stiffest, "%.1f", ImGuiSliderFlags_Logarithmic);
-  if (changed) node.set_runtime_parameters(p);  // the sliders' ranges are all valid values
+  changed |= ImGui::SliderFloat(per_second ? "PIC ratio (per reference step)" : "PIC ratio", &p.pic_ratio,
+                                range.min_pic_ratio, range.max_pic_ratio, "%.3f", clamp);
+  changed |= ImGui::SliderFloat("stiffness k", &p.stiffness, range.min_stiffness, range.max_stiffness, "%.1f",
+                                ImGuiSliderFlags_Logarithmic | clamp);
+  if (changed) node.set_runtime_parameters(p);
 }
 
 }  // namespace

@@ -3,8 +3,13 @@
 #include "engine/vk/vk_check.h"
 #include "liquid/analysis/diagnostics.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 
 namespace viewer {
@@ -101,9 +106,32 @@ void Viewer::handle(const InputEvent& e, bool from_window) {
 }
 
 std::filesystem::path Viewer::next_screenshot_path() {
-  char name[32];
-  std::snprintf(name, sizeof name, "viewer_%04d.png", screenshots_++);
-  return name;
+  // After the highest viewer_NNNN.png already in the working folder (earlier sessions' included),
+  // so a new shot never replaces an old one and the numbers follow the order they were taken in.
+  int next = 0;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(".", error)) {
+    int n = 0;
+    char end = 0;
+    if (std::sscanf(entry.path().filename().c_str(), "viewer_%d.pn%c", &n, &end) == 2 && end == 'g' && n >= next)
+      next = n + 1;
+  }
+  // The name is taken by creating the file exclusively (O_EXCL), so another viewer saving into the
+  // same folder at the same time cannot take it too; the PNG replaces this empty file once the
+  // frame is read back.
+  for (;; ++next) {
+    char name[32];
+    std::snprintf(name, sizeof name, "viewer_%04d.png", next);
+    const int fd = ::open(name, O_WRONLY | O_CREAT | O_EXCL, 0644);
+    if (fd >= 0) {
+      ::close(fd);
+      return name;
+    }
+    if (errno != EEXIST) {
+      stats_.status = std::string("screenshot failed: ") + name + ": " + std::strerror(errno);
+      return {};
+    }
+  }
 }
 
 void Viewer::perform(Action action) {

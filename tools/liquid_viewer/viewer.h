@@ -40,6 +40,8 @@ class Viewer {
   void wait_all();
   bool ensure_swapchain();
   void refresh_diagnostics();
+  // The next free viewer_NNNN.png of the working folder, created (empty) so that no one else takes it;
+  // empty (with the reason in the panel's status) when it cannot be created.
   std::filesystem::path next_screenshot_path();
   // frame_recording.cpp
   int steps_for_frame(double wall_seconds);
@@ -70,7 +72,6 @@ class Viewer {
   bool shot_requested_ = false;
   int frame_ = 0;           // frames presented or skipped (minimized), the script's clock
   int drawn_frames_ = 0;    // frames presented
-  int screenshots_ = 0;
   double fps_time_ = 0.0;
   double first_frame_time_ = -1.0;  // glfwGetTime() when the first frame was submitted
   double last_frame_time_ = 0.0;
