@@ -7,6 +7,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -25,14 +26,17 @@ std::string clock_text(double seconds) {
   return text;
 }
 
-// Wall time of one frame as the run does it: GPU work, readbacks, diagnostics and, for a written
-// frame, its files (into a scratch folder that is removed again).
+// The most steps one probed frame takes: a plan of many steps per frame is timed on this many and
+// scaled, so the probe stays a few seconds whatever the plan (and a stop signal is not kept waiting).
+constexpr int k_max_probe_steps = 64;
+
+// Wall time of one frame as the run does it, with `steps` steps: GPU work, readbacks, diagnostics
+// and, for a written frame, its files (into a scratch folder that is removed again).
 double timed_frame(const RunSettings& settings, engine::vk::Context& context, liquid::LiquidNode& node,
                    liquid::LiquidRenderer* renderer, const liquid::CameraView& camera, tools::FrameLoop& loop,
-                   const fs::path& scratch) {
+                   const fs::path& scratch, int steps) {
   const auto begin = std::chrono::steady_clock::now();
-  const FrameResult result =
-      run_frame(loop, node, renderer, camera, settings.plan.steps_per_frame, settings.particles || settings.volumes);
+  const FrameResult result = run_frame(loop, node, renderer, camera, steps, settings.particles || settings.volumes);
   const liquid::ParticleSnapshot particles = node.read_particles();
   node.diagnose(particles);
   if (renderer) FrameWriter(settings, context, scratch, node.scene().name).write(1, node, particles, *result.image);
@@ -51,9 +55,9 @@ void dry_run(const RunSettings& settings, engine::vk::Context& context, liquid::
               s.initial_particles, s.capacity, s.grid_cells.x, s.grid_cells.y, s.grid_cells.z, s.cell_size,
               plan.time_step);
   std::printf("frames: %d to %d written (%d), %d steps each = %.6g s (%.4g frames/s); frame f is the state at "
-              "t = f * %.6g s; simulated from t = 0: %d steps\n",
+              "t = f * %.6g s; simulated from t = 0: %lld steps\n",
               plan.start, plan.end, plan.written(), plan.steps_per_frame, plan.frame_seconds(),
-              plan.frames_per_second(), plan.frame_seconds(), plan.end * plan.steps_per_frame);
+              plan.frames_per_second(), plan.frame_seconds(), (long long)plan.end * plan.steps_per_frame);
   const fs::path& out = settings.folder;
   std::printf("files: %s .. %s", (out / settings.frames.name(plan.start)).c_str(),
               settings.frames.name(plan.end).c_str());
@@ -71,10 +75,14 @@ void dry_run(const RunSettings& settings, engine::vk::Context& context, liquid::
   const fs::path scratch = fs::temp_directory_path() / ("liquid_capture_probe_" + std::to_string(::getpid()));
   fs::create_directories(scratch, error);
   double simulated = 0.0, written = 0.0;
+  const int probe_steps = std::min(plan.steps_per_frame, k_max_probe_steps);
   try {
-    timed_frame(settings, context, node, &renderer, camera, loop, scratch);
-    simulated = timed_frame(settings, context, node, nullptr, camera, loop, scratch);
-    written = timed_frame(settings, context, node, &renderer, camera, loop, scratch);
+    timed_frame(settings, context, node, &renderer, camera, loop, scratch, probe_steps);
+    // A simulated frame is all steps; a written one adds the view and files to the same steps.
+    const double probed = timed_frame(settings, context, node, nullptr, camera, loop, scratch, probe_steps);
+    simulated = probed * plan.steps_per_frame / probe_steps;
+    written = std::max(simulated, timed_frame(settings, context, node, &renderer, camera, loop, scratch, probe_steps) -
+                                      probed + simulated);
   } catch (...) {
     fs::remove_all(scratch, error);
     throw;
