@@ -52,6 +52,7 @@ void write_vdb(const std::filesystem::path& path, const VolumeFrame& volume, con
   meta.insertMeta("frame", openvdb::Int32Metadata(frame.frame));
   meta.insertMeta("cell_size_m", openvdb::DoubleMetadata(volume.cell_size));
   meta.insertMeta("scene", openvdb::StringMetadata(frame.scene));
+  if (frame.fps > 0.0) meta.insertMeta("fps", openvdb::DoubleMetadata(frame.fps));
   for (openvdb::GridBase* grid : {static_cast<openvdb::GridBase*>(density.get()), static_cast<openvdb::GridBase*>(velocity.get())})
     grid->insertMeta("time_s", openvdb::DoubleMetadata(frame.time_s));
 

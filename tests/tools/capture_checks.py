@@ -283,6 +283,28 @@ def check_lock():
     print(f"a resume and an --overwrite run were refused while pid {process.pid} ran")
 
 
+def check_fps():
+    """--fps F gives exactly F frames per simulated second: frame f at t = f / F (the step shortened
+    to fit), and F recorded as given in capture.json and the PLY headers."""
+    out = os.path.join(ARGS.work, "fps")
+    shutil.rmtree(out, ignore_errors=True)
+    run([ARGS.scene, "-e", "3", "--fps", "24", "--export-particles", "-o", out] + SMALL)
+    frames = json.load(open(os.path.join(out, "capture.json")))["frames"]
+    if frames["fps"] != 24 or not frames["fps_exact"] or abs(frames["time_step_s"] * frames["steps_per_frame"] * 24 - 1) > 1e-12:
+        fail(f"capture.json frames {frames}: expected exactly 24 frames/s")
+    for r in stats_rows(out):
+        t, expected = float(r["time_s"]), int(r["frame"]) / 24
+        if abs(t - expected) > 1e-9:
+            fail(f"frame {r['frame']} at t = {t} s, not {expected} s")
+    header = open(os.path.join(out, "particles_00002.ply"), "rb").read().split(b"end_header")[0]
+    if b"comment fps 24\n" not in header:
+        fail(f"the PLY header does not give the rate: {header!r}")
+    probe = run([ARGS.scene, "--fps", "30", "--dry-run"] + SMALL)
+    if "(30 frames/s)" not in probe.stdout:
+        fail(f"the dry run does not say 30 frames/s: {probe.stdout}")
+    print(f"--fps 24: {frames['steps_per_frame']} steps of {frames['time_step_s']} s a frame")
+
+
 def check_dry_run():
     out = os.path.join(ARGS.work, "dry_run")
     shutil.rmtree(out, ignore_errors=True)
@@ -425,6 +447,6 @@ if __name__ == "__main__":
     checks = {"sigint": lambda: check_interrupt(signal.SIGINT), "sigterm": lambda: check_interrupt(signal.SIGTERM),
               "resume": check_resume, "dryrun": check_dry_run, "folders": check_folders, "range": check_range, "volume": check_volume,
               "video": check_video, "adaptive": check_adaptive,
-              "failsafe": check_failsafe, "lock": check_lock}
+              "failsafe": check_failsafe, "lock": check_lock, "fps": check_fps}
     checks[ARGS.check]()
     print("ok")

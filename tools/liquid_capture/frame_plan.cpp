@@ -80,7 +80,7 @@ bool NamePattern::matches(const std::string& file_name, bool or_partial) const {
 int steps_per_frame(int steps_flag, double fps, double time_step, int substeps, int max_steps) {
   if (steps_flag > 0) return steps_flag;
   if (fps <= 0.0) return substeps;
-  const double steps = std::round(1.0 / (fps * time_step));
+  const double steps = std::ceil(1.0 / (fps * time_step) * (1.0 - 1e-9));  // ceil, past rounding noise
   if (steps > max_steps)
     throw std::invalid_argument("--fps " + std::to_string(fps) + " needs " + std::to_string(steps) + " steps of " +
                                 std::to_string(time_step) + " s per frame, more than " + std::to_string(max_steps));

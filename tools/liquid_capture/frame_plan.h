@@ -38,15 +38,18 @@ struct FramePlan {
   int start = 1;            // first frame written
   int end = 60;             // last frame written (inclusive)
   int steps_per_frame = 8;
-  double time_step = 0.0;   // s
+  double time_step = 0.0;   // s: the scene's, or with --fps the step that fits a whole number in a frame
+  double fps = 0.0;         // the --fps asked for, exactly (0: the rate follows from the steps)
 
   int written() const { return end - start + 1; }
-  double frame_seconds() const { return steps_per_frame * time_step; }
-  double frames_per_second() const { return 1.0 / frame_seconds(); }
+  double frame_seconds() const { return fps > 0.0 ? 1.0 / fps : steps_per_frame * time_step; }
+  double frames_per_second() const { return fps > 0.0 ? fps : 1.0 / frame_seconds(); }
 };
 
 // Steps per frame from the flags: --steps-per-frame wins, then --fps (0: not given), then the
-// scene's substeps. Throws std::invalid_argument when --fps needs more than `max_steps` steps.
+// scene's substeps. With --fps, the fewest steps of at most `time_step` that fill 1 / fps, so the
+// step is then shortened to 1 / (fps * steps) and every frame lasts exactly 1 / fps. Throws
+// std::invalid_argument when --fps needs more than `max_steps` steps.
 int steps_per_frame(int steps_flag, double fps, double time_step, int substeps, int max_steps);
 
 }  // namespace capture

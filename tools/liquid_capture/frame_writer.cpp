@@ -25,10 +25,11 @@ void FrameWriter::write(int frame, liquid::LiquidNode& node, const liquid::Parti
   const liquid::VolumeFrame volume = liquid::read_volume(context_, node);
   if (settings_.particles)
     liquid::write_ply(folder_ / settings_.particles->name(frame), particles,
-                      liquid::PlyFrame{frame, node.time(), liquid::sample_density(volume, particles.positions)});
+                      liquid::PlyFrame{frame, node.time(), liquid::sample_density(volume, particles.positions),
+                                       settings_.plan.frames_per_second()});
   if (settings_.volumes) {
 #if RASTERLIQUIDS_HAVE_OPENVDB
-    liquid::write_vdb(folder_ / settings_.volumes->name(frame), volume, liquid::VdbFrame{frame, node.time(), scene_name_});
+    liquid::write_vdb(folder_ / settings_.volumes->name(frame), volume, liquid::VdbFrame{frame, node.time(), scene_name_, settings_.plan.frames_per_second()});
 #else
     throw std::logic_error("volume export requested in a build without OpenVDB");
 #endif

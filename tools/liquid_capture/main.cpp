@@ -172,6 +172,9 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
       liquid::RenderSettings{.width = settings.width, .height = settings.height, .fxaa = settings.fxaa,
                              .draw_particles = settings.draw_particles});
   const liquid::CameraView camera = camera_from(settings, node);
+  // --fps: the step shortened so a whole number of them makes exactly one frame (a checkpoint being
+  // resumed carries it too). Adaptive steps fit each frame themselves (steps_for_frame).
+  if (!scene.adaptive_time_step && plan.time_step < node.time_step()) node.set_time_step(plan.time_step);
   tools::FrameLoop loop(context);
   if (options.dry_run) {
     capture::dry_run(settings, context, node, renderer, camera, loop);
@@ -205,7 +208,7 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
   std::printf("liquid_capture: %s, %dD, %d particles (capacity %d), grid %dx%dx%d, dt %.3g s, %d steps per frame "
               "(%.1f simulated frames/s), frames %d to %d, %ux%u, device %s%s\n",
               scene.name.c_str(), s.dimension, s.initial_particles, s.capacity, s.grid_cells.x, s.grid_cells.y,
-              s.grid_cells.z, scene.time_step, plan.steps_per_frame, plan.frames_per_second(), plan.start, plan.end,
+              s.grid_cells.z, plan.time_step, plan.steps_per_frame, plan.frames_per_second(), plan.start, plan.end,
               settings.width, settings.height, context.device_name().c_str(),
               resuming ? (", resumed after frame " + std::to_string(checkpoint.frame)).c_str() : "");
   std::fflush(stdout);

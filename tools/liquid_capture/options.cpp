@@ -108,6 +108,10 @@ RunSettings settle(const CaptureOptions& o, int max_steps_per_frame) {
     r.plan.time_step = scene.time_step;
     r.plan.steps_per_frame =
         steps_per_frame(o.steps_per_frame, o.fps, scene.time_step, scene.substeps, max_steps_per_frame);
+    if (o.fps > 0.0 && o.steps_per_frame == 0) {  // exactly o.fps frames per simulated second
+      r.plan.fps = o.fps;
+      r.plan.time_step = 1.0 / (o.fps * r.plan.steps_per_frame);
+    }
 
     const fs::path out(o.out);
     if (has_frame_field(out.filename().string())) {
@@ -168,7 +172,8 @@ json to_json(const RunSettings& r) {
           {"overrides", r.overrides},
           {"scene", json::parse(r.scene_document)},
           {"frames", {{"start", r.plan.start}, {"end", r.plan.end}, {"steps_per_frame", r.plan.steps_per_frame},
-                      {"time_step_s", r.plan.time_step}, {"frame_seconds", r.plan.frame_seconds()}}},
+                      {"time_step_s", r.plan.time_step}, {"frame_seconds", r.plan.frame_seconds()},
+                      {"fps", r.plan.frames_per_second()}, {"fps_exact", r.plan.fps > 0.0}}},
           {"names", {{"frames", r.frames.text()}, {"particles", optional_name(r.particles)},
                      {"volumes", optional_name(r.volumes)}}},
           {"view", {{"width", r.width}, {"height", r.height}, {"fxaa", r.fxaa}, {"draw_particles", r.draw_particles},
@@ -206,6 +211,7 @@ RunSettings run_settings_from_json(const json& j, const fs::path& folder, const 
     r.plan.end = int(number(f.at("end"), "frames.end", r.plan.start, k_max_frame, true));
     r.plan.steps_per_frame = int(number(f.at("steps_per_frame"), "frames.steps_per_frame", 1, k_max_steps_per_frame, true));
     r.plan.time_step = number(f.at("time_step_s"), "frames.time_step_s", 1e-9, 1.0, false);
+    if (f.value("fps_exact", false)) r.plan.fps = number(f.at("fps"), "frames.fps", 0.001, 10000.0, false);
     r.folder = folder;
     const json& n = j.at("names");
     r.frames = NamePattern::parse(n.at("frames").get<std::string>(), "frames", ".png");

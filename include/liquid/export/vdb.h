@@ -16,6 +16,7 @@ struct VdbFrame {
   int frame = 0;
   double time_s = 0.0;  // simulated time, stored in the file's metadata as "time_s"
   std::string scene;    // stored as "scene"
+  double fps = 0.0;     // frames per simulated second of the sequence, stored as "fps" (0: not stored)
 };
 
 // Writes the file through a temporary name renamed into place; throws std::runtime_error naming
