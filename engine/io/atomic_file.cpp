@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -42,12 +43,16 @@ void ensure_writable_folder(const std::filesystem::path& folder) {
   std::error_code error;
   std::filesystem::create_directories(folder, error);
   if (error) throw std::runtime_error(folder.string() + ": cannot create the output folder (" + error.message() + ")");
-  const std::filesystem::path probe = folder / ".write_probe";
-  {
-    std::ofstream file(probe, std::ios::trunc);
-    if (!file) throw std::runtime_error(folder.string() + ": the output folder is not writable");
-  }
-  std::filesystem::remove(probe, error);
+  if (!folder_is_writable(folder)) throw std::runtime_error(folder.string() + ": the output folder is not writable");
+}
+
+bool folder_is_writable(const std::filesystem::path& folder) {
+  std::string probe = (folder / ".write_probe_XXXXXX").string();
+  const int fd = ::mkstemp(probe.data());  // a new name, created exclusively
+  if (fd < 0) return false;
+  ::close(fd);
+  ::unlink(probe.c_str());
+  return true;
 }
 
 }  // namespace engine::io

@@ -14,4 +14,9 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view b
 // Throws std::runtime_error with one clear line when `folder` cannot be created or written to.
 void ensure_writable_folder(const std::filesystem::path& folder);
 
+// Whether a file can be created in the existing `folder`: a probe of a name no other file has
+// (created exclusively, then removed), so no file of the user's is touched. access() is not
+// enough: /proc and the like pass it for root.
+bool folder_is_writable(const std::filesystem::path& folder);
+
 }  // namespace engine::io

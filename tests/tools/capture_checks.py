@@ -157,6 +157,17 @@ def check_adaptive():
 
 
 def check_folders():
+    # The folder's writability is probed under a name of its own: a user's file is never touched.
+    mine = os.path.join(ARGS.work, "users_folder")
+    shutil.rmtree(mine, ignore_errors=True)
+    os.makedirs(mine)
+    for name in (".write_probe", ".liquid_capture_probe"):
+        open(os.path.join(mine, name), "w").write("the user's own file\n")
+    run([ARGS.scene, "-e", "1", "-o", mine, "--video", os.path.join(mine, "v.mp4")] + SMALL
+        if shutil.which("ffmpeg") else [ARGS.scene, "-e", "1", "-o", mine] + SMALL)
+    for name in (".write_probe", ".liquid_capture_probe"):
+        if open(os.path.join(mine, name)).read() != "the user's own file\n":
+            fail(f"the run touched the user's {name}")
     out = os.path.join(ARGS.work, "shared_folder")
     shutil.rmtree(out, ignore_errors=True)
     run([ARGS.scene, "-e", "3", "--export-particles", "-o", out] + SMALL)

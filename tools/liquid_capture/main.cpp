@@ -115,11 +115,8 @@ void check_video(const RunSettings& s, bool overwrite) {
   if (s.video.empty()) return;
   const fs::path path(s.video);
   const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
-  // /proc and the like pass access() for root: a probe file is the test that holds everywhere.
-  const fs::path probe = folder / (".liquid_capture_probe_" + std::to_string(::getpid()));
-  if (!fs::is_directory(folder) || !std::ofstream(probe))
+  if (!fs::is_directory(folder) || !engine::io::folder_is_writable(folder))
     throw std::runtime_error("--video " + s.video + ": " + folder.string() + " is not a writable folder");
-  fs::remove(probe);
   if (fs::exists(path) && !overwrite) throw std::runtime_error(s.video + ": exists; --overwrite replaces it");
   if (!capture::find_on_path("ffmpeg"))
     throw std::runtime_error("--video needs ffmpeg, which is not installed (Debian: apt-get install ffmpeg)");
