@@ -6,7 +6,10 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 
 namespace viewer {
@@ -21,19 +24,32 @@ Script::Script(const std::filesystem::path& path) {
     throw std::runtime_error(path.string() + ": not JSON: " + error.what());
   }
   if (!doc.is_array()) throw std::runtime_error(path.string() + ": a script is a list of events");
+  // A whole number in [lo, hi], read as written: nlohmann's get<int>() would narrow 4294967296 to 0
+  // and 2.9 to 2 without a word.
+  const auto integer = [](const nlohmann::json& value, const char* name, std::int64_t lo, std::int64_t hi) {
+    if (!value.is_number_integer() || (value.is_number_unsigned() && value.get<std::uint64_t>() > std::uint64_t(hi)) ||
+        value.get<std::int64_t>() < lo || value.get<std::int64_t>() > hi)
+      throw std::runtime_error(std::string(name) + " must be an integer in [" + std::to_string(lo) + ", " +
+                               std::to_string(hi) + "], got " + value.dump());
+    return int(value.get<std::int64_t>());
+  };
+  const auto finite = [](const nlohmann::json& value, const char* name) {
+    if (!value.is_number() || !std::isfinite(value.get<double>()) || std::abs(value.get<double>()) > 1e6)
+      throw std::runtime_error(std::string(name) + " must be a finite number of at most 1e6, got " + value.dump());
+    return value.get<float>();
+  };
   glm::vec2 cursor{0.0f};
   for (size_t i = 0; i < doc.size(); ++i) {
     const nlohmann::json& e = doc[i];
     const std::string where = path.string() + ": event " + std::to_string(i) + ": ";
     try {
       ScriptEvent s;
-      s.frame = e.at("frame").get<int>();
-      if (s.frame < 0) throw std::runtime_error("frame must be >= 0");
+      s.frame = integer(e.at("frame"), "frame", 0, std::numeric_limits<int>::max() - 1);
       const std::string type = e.at("type").get<std::string>();
       InputEvent& ev = s.event;
       if (type == "move") {
         ev.type = InputEvent::Type::Move;
-        cursor = {e.at("x").get<float>(), e.at("y").get<float>()};
+        cursor = {finite(e.at("x"), "x"), finite(e.at("y"), "y")};
       } else if (type == "press" || type == "release") {
         ev.type = type == "press" ? InputEvent::Type::Press : InputEvent::Type::Release;
         const std::string b = e.value("button", "left");
@@ -44,7 +60,7 @@ Script::Script(const std::filesystem::path& path) {
         if (e.value("shift", false)) ev.mods |= GLFW_MOD_SHIFT;
       } else if (type == "scroll") {
         ev.type = InputEvent::Type::Scroll;
-        ev.scroll = e.at("delta").get<float>();
+        ev.scroll = finite(e.at("delta"), "delta");
         if (e.value("ctrl", false)) ev.mods |= GLFW_MOD_CONTROL;
       } else if (type == "key") {
         ev.type = InputEvent::Type::Key;
@@ -53,8 +69,7 @@ Script::Script(const std::filesystem::path& path) {
         if (ev.key < 0) throw std::runtime_error("unknown key '" + name + "'");
       } else if (type == "resize") {
         ev.type = InputEvent::Type::Resize;
-        const int w = e.at("width").get<int>(), h = e.at("height").get<int>();
-        if (w < 0 || h < 0 || w > 8192 || h > 8192) throw std::runtime_error("width and height must be in [0, 8192]");
+        const int w = integer(e.at("width"), "width", 0, 8192), h = integer(e.at("height"), "height", 0, 8192);
         ev.width = uint32_t(w);
         ev.height = uint32_t(h);
       } else {
