@@ -430,6 +430,32 @@ def check_video():
                              "--video=-lead.mp4"], capture_output=True, text=True, timeout=600, cwd=ARGS.work)
     if result.returncode != 0 or not os.path.isfile(lead):
         fail(f"--video=-lead.mp4: exit {result.returncode}, file made: {os.path.isfile(lead)}: {result.stderr}")
+    # A video name that is a folder is refused before the run.
+    folder_video = os.path.join(ARGS.work, "a_folder.mp4")
+    os.makedirs(folder_video, exist_ok=True)
+    refused = run([ARGS.scene, "-e", "2", "-o", os.path.join(ARGS.work, "video_folder"), "--video", folder_video] + SMALL,
+                  expect=1)
+    if "is a folder, not a video file" not in refused.stderr:
+        fail(f"a --video that is a folder should be refused before the run: {refused.stderr!r}")
+    # An ffmpeg that dies: the frames written so far each have their row, and summary.json says so.
+    fake = os.path.join(ARGS.work, "fake_ffmpeg")
+    os.makedirs(fake, exist_ok=True)
+    with open(os.path.join(fake, "ffmpeg"), "w") as f:
+        f.write("#!/bin/sh\nexit 1\n")
+    os.chmod(os.path.join(fake, "ffmpeg"), 0o755)
+    broken = os.path.join(ARGS.work, "video_broken")
+    shutil.rmtree(broken, ignore_errors=True)
+    env = dict(os.environ, PATH=fake + os.pathsep + os.environ.get("PATH", ""))
+    result = subprocess.run([ARGS.tool, ARGS.scene, "-e", "4", "-o", broken, "--video", os.path.join(broken, "v.mp4")] + SMALL,
+                            capture_output=True, text=True, timeout=600, env=env)
+    if result.returncode == 0 or "--video" not in result.stderr:
+        fail(f"a run whose ffmpeg died should fail naming --video: exit {result.returncode}, {result.stderr!r}")
+    pngs = [n for n in files(broken) if n.endswith(".png")]
+    if len(stats_rows(broken)) != len(pngs):
+        fail(f"{len(pngs)} frames but {len(stats_rows(broken))} rows in stats.csv after the video failed")
+    summary = json.load(open(os.path.join(broken, "summary.json")))
+    if "video" not in json.dumps(summary):
+        fail(f"summary.json does not say the video failed: {summary}")
     recorded = json.load(open(os.path.join(out2, "capture.json")))["video"]
     if recorded != os.path.abspath(lead):
         fail(f"capture.json records the video as {recorded!r}, not the absolute {os.path.abspath(lead)!r}")

@@ -117,6 +117,7 @@ void check_video(const RunSettings& s, bool overwrite) {
   const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
   if (!fs::is_directory(folder) || !engine::io::folder_is_writable(folder))
     throw std::runtime_error("--video " + s.video + ": " + folder.string() + " is not a writable folder");
+  if (fs::is_directory(path)) throw std::runtime_error("--video " + s.video + ": is a folder, not a video file");
   if (fs::exists(path) && !overwrite) throw std::runtime_error(s.video + ": exists; --overwrite replaces it");
   if (!capture::find_on_path("ffmpeg"))
     throw std::runtime_error("--video needs ffmpeg, which is not installed (Debian: apt-get install ffmpeg)");
@@ -215,8 +216,13 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
   // Ends the run where it stands: stats.csv and summary.json for the frames written, the video closed.
   const auto conclude = [&](const std::string& status) {
     stats.finish();
-    if (video) video->finish();
-    const json facts = {{"status", status},
+    std::string video_status = video ? "finished" : "";
+    try {
+      if (video) video->finish();
+    } catch (const std::exception& error) {  // the frames, table and summary still stand
+      video_status = std::string("failed: ") + error.what();
+    }
+    json facts = {{"status", status},
                         {"scene", scene.name},
                         {"scene_source", settings.scene_source},
                         {"device", context.device_name()},
@@ -226,7 +232,9 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
                         {"frame_seconds", plan.frame_seconds()},
                         {"resumed_after_frame", resuming ? json(checkpoint.frame) : json(nullptr)},
                         {"run_wall_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()}};
+    if (video) facts["video"] = video_status;
     engine::io::write_file_atomically(settings.folder / capture::k_summary_name, capture::summary_json(stats.text(), facts));
+    if (video_status.rfind("failed", 0) == 0) throw std::runtime_error("--video: " + video_status);
   };
 
   tools::Progress progress(plan.end - first_frame + 1);
@@ -243,12 +251,12 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
       if (written) {
         for (const auto& t : result.time.passes) row.pass_ms[t.name] += t.milliseconds;
         writer.write(frame, node, particles, *result.image);
-        if (video) video->add(*result.image);
         if (header.empty()) header = stats_header(row);
         stats.append(header, stats_row(row, header));
         folder.wrote_output();
       }
-      last_done = frame;
+      last_done = frame;  // the frame's files and row are complete: a video failure below keeps them
+      if (written && video) video->add(*result.image);
       if (settings.checkpoint_every > 0 && frame > 0 && frame % settings.checkpoint_every == 0) {
         capture::save_checkpoint(settings.folder / capture::k_checkpoint_name,
                                  {frame, capture::fingerprint(record_text), node.save_checkpoint(), stats.text()});
