@@ -1,5 +1,7 @@
 #include "liquid/scene/override.h"
 
+#include "liquid/scene/format.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -35,7 +37,7 @@ bool is_index(const std::string& part) {
 }
 
 void apply(Json& doc, const SceneOverride& o) {
-  const std::string where = "--set " + o.path;
+  const std::string where = "--set " + printable(o.path);
   const std::vector<std::string> parts = path_parts(o.path);
   if (parts.empty()) throw SceneError(where + ": not a field path (use name, camera.position, fluid_blocks.0.max)");
   Json* node = &doc;
@@ -78,7 +80,7 @@ void apply(Json& doc, const SceneOverride& o) {
 SceneOverride parse_scene_override(const std::string& text) {
   const size_t equals = text.find('=');
   if (equals == std::string::npos || equals == 0)
-    throw std::invalid_argument("--set " + text + ": expected key=value (e.g. --set stiffness=20)");
+    throw std::invalid_argument("--set " + printable(text) + ": expected key=value (e.g. --set stiffness=20)");
   return {text.substr(0, equals), text.substr(equals + 1)};
 }
 

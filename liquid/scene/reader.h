@@ -22,7 +22,9 @@ using Json = nlohmann::json;
 
 constexpr double k_max_length = 100.0;  // m, radii, half extents, hill sizes: the default vector bound
 
-inline std::string child(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+inline std::string child(const std::string& path, const std::string& key) {
+  return path.empty() ? printable(key) : path + "." + printable(key);
+}
 
 inline std::string element(const std::string& path, size_t index) { return path + "[" + std::to_string(index) + "]"; }
 

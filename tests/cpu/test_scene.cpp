@@ -338,3 +338,20 @@ TEST_CASE("malformed scenes are rejected naming the file and field", "[scene]") 
     REQUIRE_THROWS_AS(parse(j), SceneError);
   }
 }
+
+TEST_CASE("a key with a newline or of a megabyte is named on one short line", "[scene]") {
+  Json j = valid_2d();
+  j["bad\nkey"] = 1;
+  REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: bad\\nkey: unknown key"));
+  Json big = valid_2d();
+  big[std::string(1 << 20, 'k')] = 1;
+  try {
+    parse(big);
+    FAIL("a megabyte key was accepted");
+  } catch (const SceneError& error) {
+    const std::string message = error.what();
+    CHECK(message.size() < 200);
+    CHECK(message.find("(1048576 bytes)") != std::string::npos);
+    CHECK(message.find('\n') == std::string::npos);
+  }
+}
