@@ -29,7 +29,8 @@ void FrameWriter::write(int frame, liquid::LiquidNode& node, const liquid::Parti
                                        settings_.plan.frames_per_second()});
   if (settings_.volumes) {
 #if RASTERLIQUIDS_HAVE_OPENVDB
-    liquid::write_vdb(folder_ / settings_.volumes->name(frame), volume, liquid::VdbFrame{frame, node.time(), scene_name_, settings_.plan.frames_per_second()});
+    liquid::write_vdb(folder_ / settings_.volumes->name(frame), volume,
+                      liquid::VdbFrame{frame, node.time(), scene_name_, settings_.plan.frames_per_second()});
 #else
     throw std::logic_error("volume export requested in a build without OpenVDB");
 #endif

@@ -15,8 +15,8 @@ namespace liquid {
 struct PlyFrame {
   int frame = 0;
   double time_s = 0.0;         // simulated time of the state
-  double fps = 0.0;            // frames per simulated second of the sequence (a header comment; 0: none)
   std::vector<float> density;  // rho/rho0 per particle, same order as the particles
+  double fps = 0.0;            // frames per simulated second of the sequence (a header comment; 0: none)
 };
 
 // The whole file: an ASCII header then one packed little-endian vertex per particle. The id is the
