@@ -6,8 +6,6 @@
 
 namespace liquid {
 
-static_assert(k_max_force_brushes == LIQUID_MAX_BRUSHES, "the public brush limit is the solver's");
-
 LiquidNode::LiquidNode(engine::vk::Context& context, const Scene& scene, const LiquidOptions& options)
     : simulation_(std::make_unique<Simulation>(context, scene, options)) {}
 LiquidNode::~LiquidNode() = default;
@@ -28,6 +26,7 @@ double LiquidNode::adapt_time_step(const Diagnostics& d) { return simulation_->a
 void LiquidNode::set_time_step(double dt) { simulation_->set_time_step(dt); }
 
 void LiquidNode::set_brushes(std::vector<ForceBrush> brushes) { simulation_->set_brushes(std::move(brushes)); }
+int LiquidNode::max_force_brushes() { return gpu::k_max_brushes; }  // shaders/liquid/shared.h
 RuntimeParameters LiquidNode::runtime_parameters() const { return simulation_->runtime_parameters(); }
 void LiquidNode::set_runtime_parameters(const RuntimeParameters& p) { simulation_->set_runtime_parameters(p); }
 void LiquidNode::set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity) {

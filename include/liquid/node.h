@@ -58,8 +58,10 @@ class LiquidNode {
   // frame). Throws std::invalid_argument unless 0 < dt <= the scene's time_step and finite.
   void set_time_step(double dt);
 
-  // External forces for the following steps (at most k_max_force_brushes).
+  // External forces for the following steps, at most max_force_brushes() of them (the solver's
+  // uniform block holds that many; a longer list is refused when the step is declared).
   void set_brushes(std::vector<ForceBrush> brushes);
+  static int max_force_brushes();
   // The parameters a host may change while the node runs; they take effect from the next step.
   // Throws std::invalid_argument on a non-finite gravity, a PIC ratio outside [0, 1] or a negative
   // stiffness. (The energy bound stays the scene's.)

@@ -39,9 +39,6 @@ class SimulationError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The most force brushes one step takes (LiquidNode::set_brushes).
-inline constexpr int k_max_force_brushes = 4;
-
 // How a node is created for a host's frame loop.
 struct LiquidOptions {
   uint32_t frames_in_flight = 2;  // frames the GPU may still be running when add_to() is called

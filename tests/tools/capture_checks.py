@@ -163,6 +163,7 @@ def check_folders():
     os.makedirs(mine)
     for name in (".write_probe", ".liquid_capture_probe"):
         open(os.path.join(mine, name), "w").write("the user's own file\n")
+    # (with --video where ffmpeg is installed, whose folder is probed too)
     run([ARGS.scene, "-e", "1", "-o", mine, "--video", os.path.join(mine, "v.mp4")] + SMALL
         if shutil.which("ffmpeg") else [ARGS.scene, "-e", "1", "-o", mine] + SMALL)
     for name in (".write_probe", ".liquid_capture_probe"):
@@ -427,7 +428,7 @@ def check_video():
     if os.path.exists(lead):
         os.remove(lead)
     result = subprocess.run([ARGS.tool, ARGS.scene, "-e", "2", "--width", "48", "--height", "36", "-o", out2,
-                             "--video=-lead.mp4"], capture_output=True, text=True, timeout=600, cwd=ARGS.work)
+                             "--video=-lead.mp4", "--validation"], capture_output=True, text=True, timeout=600, cwd=ARGS.work)
     if result.returncode != 0 or not os.path.isfile(lead):
         fail(f"--video=-lead.mp4: exit {result.returncode}, file made: {os.path.isfile(lead)}: {result.stderr}")
     # A video name that is a folder is refused before the run.

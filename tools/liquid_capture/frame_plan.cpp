@@ -16,7 +16,7 @@ std::string hash_form(const std::string& name) {
     if (name[i] == '%') {  // printf: %d, %4d, %04d
       size_t j = i + 1;
       while (j < name.size() && std::isdigit(static_cast<unsigned char>(name[j]))) ++j;
-      if (j < name.size() && name[j] == 'd') {
+      if (j < name.size() && name[j] == 'd' && j - i - 1 <= 2) {  // a width of at most two digits
         digits = j > i + 1 ? size_t(std::stoi(name.substr(i + 1, j - i - 1))) : 1;
         if (digits >= 1 && digits <= 16) {
           out.append(digits, '#');
@@ -27,7 +27,7 @@ std::string hash_form(const std::string& name) {
     } else if (name.compare(i, 2, "$F") == 0) {  // Houdini: $F, $F4
       size_t j = i + 2;
       while (j < name.size() && std::isdigit(static_cast<unsigned char>(name[j]))) ++j;
-      digits = j > i + 2 ? size_t(std::stoi(name.substr(i + 2, j - i - 2))) : 1;
+      digits = j == i + 2 ? 1 : j - i - 2 <= 2 ? size_t(std::stoi(name.substr(i + 2, j - i - 2))) : 0;
       if (digits >= 1 && digits <= 16) {
         out.append(digits, '#');
         i = j;
