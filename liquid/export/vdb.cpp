@@ -2,6 +2,12 @@
 
 #include <openvdb/openvdb.h>
 
+#include <array>
+#include <cctype>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <mutex>
 #include <stdexcept>
 #include <system_error>
@@ -13,6 +19,44 @@ namespace {
 void initialize_once() {
   static std::once_flag initialized;
   std::call_once(initialized, [] { openvdb::initialize(); });
+}
+
+// OpenVDB writes a random UUID into every file's header (Archive::writeHeader: the magic number,
+// three version numbers and a grid-offsets flag, 21 bytes, then the UUID as 36 characters), so two
+// identical runs would give files that differ in it. Replace it by one hashed from the rest of the
+// file (two FNV-1a 64 hashes, as an RFC 9562 version 8 UUID): equal content, equal files.
+constexpr std::streamoff k_uuid_offset = 21;
+constexpr size_t k_uuid_length = 36;
+
+bool looks_like_uuid(const std::string& text) {
+  if (text.size() != k_uuid_length) return false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const bool dash = i == 8 || i == 13 || i == 18 || i == 23;
+    if (dash ? text[i] != '-' : !std::isxdigit(static_cast<unsigned char>(text[i]))) return false;
+  }
+  return true;
+}
+
+void stamp_content_uuid(const std::filesystem::path& path) {
+  std::fstream file(path, std::ios::in | std::ios::out | std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  if (!file.good() && !file.eof()) throw std::runtime_error("cannot read the file back");
+  if (bytes.size() < k_uuid_offset + k_uuid_length || !looks_like_uuid(bytes.substr(k_uuid_offset, k_uuid_length)))
+    throw std::logic_error("the OpenVDB header has no UUID where this build expects it");
+  std::array<uint64_t, 2> hash{0xcbf29ce484222325ull, 0x84222325cbf29ce4ull};
+  for (size_t i = k_uuid_offset + k_uuid_length; i < bytes.size(); ++i)
+    for (uint64_t& h : hash) h = (h ^ static_cast<unsigned char>(bytes[i])) * 0x100000001b3ull;
+  hash[0] = (hash[0] & ~0xf000ull) | 0x8000ull;                                 // version 8
+  hash[1] = (hash[1] & 0x3fffffffffffffffull) | 0x8000000000000000ull;          // variant 10
+  char uuid[k_uuid_length + 1];
+  std::snprintf(uuid, sizeof uuid, "%08x-%04x-%04x-%04x-%012llx", unsigned(hash[0] >> 32),
+                unsigned(hash[0] >> 16 & 0xffff), unsigned(hash[0] & 0xffff), unsigned(hash[1] >> 48),
+                static_cast<unsigned long long>(hash[1] & 0xffffffffffffull));
+  file.clear();
+  file.seekp(k_uuid_offset);
+  file.write(uuid, k_uuid_length);
+  file.close();
+  if (!file) throw std::runtime_error("cannot write the file's UUID");
 }
 
 }  // namespace
@@ -42,7 +86,8 @@ void write_vdb(const std::filesystem::path& path, const VolumeFrame& volume, con
       for (int x = 0; x < volume.cells.x; ++x) {
         const size_t i = volume.index(x, y, z);
         const openvdb::Coord c(x, y, z);
-        if (volume.density[i] > 0.0f) rho.setValue(c, volume.density[i]);
+        if (!(volume.density[i] >= k_vdb_min_density)) continue;  // velocity too: none without liquid
+        rho.setValue(c, volume.density[i]);
         const glm::vec4& v = volume.velocity[i];
         if (v.w >= 0.5f) u.setValue(c, openvdb::Vec3s(v.x, v.y, v.z));
       }
@@ -62,6 +107,7 @@ void write_vdb(const std::filesystem::path& path, const VolumeFrame& volume, con
     openvdb::io::File file(temporary.string());
     file.write({density, velocity}, meta);
     file.close();
+    stamp_content_uuid(temporary);
   } catch (const std::exception& e) {
     std::error_code ignored;
     std::filesystem::remove(temporary, ignored);

@@ -11,6 +11,11 @@
 #if RASTERLIQUIDS_HAVE_OPENVDB
 #include "liquid/export/vdb.h"
 #include "liquid/solver/simulation.h"
+
+#include <array>
+#include <fstream>
+#include <iterator>
+#include <set>
 #endif
 
 #include <catch2/catch.hpp>
@@ -129,19 +134,38 @@ TEST_CASE("OpenVDB files hold the node's density and velocity grids in metres", 
     CHECK(file.frame.time_s == node.time());
     CHECK(file.voxel_size == Approx(node.simulation().setup().cell_size));
     CHECK(file.voxel_zero.x == Approx(0.5 * node.simulation().setup().cell_size));
-    size_t liquid_cells = 0;
-    for (float rho : volume.density) liquid_cells += rho > 0.0f;
+    // The kernel's faint tail stays out of the file: only cells of at least k_vdb_min_density.
+    size_t liquid_cells = 0, faint_cells = 0;
+    for (float rho : volume.density) {
+      liquid_cells += rho >= liquid::k_vdb_min_density;
+      faint_cells += rho > 0.0f && rho < liquid::k_vdb_min_density;
+    }
     REQUIRE(liquid_cells > 100);
+    REQUIRE(faint_cells > 0);  // else the threshold is not exercised
     CHECK(file.density.size() == liquid_cells);
+    std::set<std::array<int, 3>> dense;
     for (const auto& v : file.density) {
       REQUIRE(v.index.z < volume.cells.z);  // 2D: one voxel deep
       REQUIRE(v.value == volume.density[volume.index(v.index.x, v.index.y, v.index.z)]);
+      dense.insert({v.index.x, v.index.y, v.index.z});
     }
     for (const auto& v : file.velocity) {
       const glm::vec4 cell = volume.velocity[volume.index(v.index.x, v.index.y, v.index.z)];
       REQUIRE(cell.w >= 0.5f);
       REQUIRE(v.value == glm::vec3(cell));
+      REQUIRE(dense.count({v.index.x, v.index.y, v.index.z}) == 1);  // no velocity without density
     }
+
+    // The same frame written again gives the same bytes (OpenVDB's random UUID replaced).
+    std::filesystem::path again = path;
+    again += ".again.vdb";
+    liquid::write_vdb(again, volume, liquid::VdbFrame{7, node.time(), node.scene().name});
+    const auto bytes = [](const std::filesystem::path& p) {
+      std::ifstream in(p, std::ios::binary);
+      return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    };
+    CHECK(bytes(path) == bytes(again));
+    CHECK(liquid::read_vdb(again).density.size() == liquid_cells);
   }
   for (GridPath path : {GridPath::GeometryShader, GridPath::VertexLayer, GridPath::Atlas})
     REQUIRE_NO_VALIDATION_MESSAGES_ON(test::gpu_for(path));
