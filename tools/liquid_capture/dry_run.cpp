@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <system_error>
+#include <vector>
 
 namespace capture {
 
@@ -29,6 +30,9 @@ std::string clock_text(double seconds) {
 // The most steps one probed frame takes: a plan of many steps per frame is timed on this many and
 // scaled, so the probe stays a few seconds whatever the plan (and a stop signal is not kept waiting).
 constexpr int k_max_probe_steps = 64;
+// Frames of each kind timed after the warm-up: the median of three keeps one slow frame (a page
+// fault, another process) from setting the estimate.
+constexpr int k_probe_frames = 3;
 
 // Wall time of one frame as the run does it, with `steps` steps: GPU work, readbacks, diagnostics
 // and, for a written frame, its files (into a scratch folder that is removed again).
@@ -46,7 +50,9 @@ double timed_frame(const RunSettings& settings, engine::vk::Context& context, li
 }  // namespace
 
 void dry_run(const RunSettings& settings, engine::vk::Context& context, liquid::LiquidNode& node,
-             liquid::LiquidRenderer& renderer, const liquid::CameraView& camera, tools::FrameLoop& loop) {
+             liquid::LiquidRenderer& renderer, const liquid::CameraView& camera, tools::FrameLoop& loop,
+             std::chrono::steady_clock::time_point process_start) {
+  const auto probe_begin = std::chrono::steady_clock::now();
   const FramePlan& plan = settings.plan;
   const liquid::SimulationSetup& s = node.simulation().setup();
   std::printf("scene %s (from %s%s):\n%s\n", node.scene().name.c_str(), settings.scene_source.c_str(),
@@ -70,28 +76,41 @@ void dry_run(const RunSettings& settings, engine::vk::Context& context, liquid::
   if (!settings.video.empty()) std::printf("; video %s", settings.video.c_str());
   std::printf("\n");
 
-  // The probe: one warm-up frame (first use of each pipeline), then one frame of each kind.
+  // The probe: one warm-up frame of each kind (the first use of each graph and its pipelines would
+  // otherwise be timed as a frame: it made a late start's estimate 40 % high), then the median of
+  // k_probe_frames frames of each kind.
   std::error_code error;
   const fs::path scratch = fs::temp_directory_path() / ("liquid_capture_probe_" + std::to_string(::getpid()));
   fs::create_directories(scratch, error);
   double simulated = 0.0, written = 0.0;
   const int probe_steps = std::min(plan.steps_per_frame, k_max_probe_steps);
+  const auto median_frame = [&](liquid::LiquidRenderer* with) {
+    std::vector<double> times;
+    for (int i = 0; i < k_probe_frames; ++i)
+      times.push_back(timed_frame(settings, context, node, with, camera, loop, scratch, probe_steps));
+    std::sort(times.begin(), times.end());
+    return times[times.size() / 2];
+  };
   try {
     timed_frame(settings, context, node, &renderer, camera, loop, scratch, probe_steps);
+    timed_frame(settings, context, node, nullptr, camera, loop, scratch, probe_steps);
     // A simulated frame is all steps; a written one adds the view and files to the same steps.
-    const double probed = timed_frame(settings, context, node, nullptr, camera, loop, scratch, probe_steps);
+    const double probed = median_frame(nullptr);
     simulated = probed * plan.steps_per_frame / probe_steps;
-    written = std::max(simulated, timed_frame(settings, context, node, &renderer, camera, loop, scratch, probe_steps) -
-                                      probed + simulated);
+    written = std::max(simulated, median_frame(&renderer) - probed + simulated);
   } catch (...) {
     fs::remove_all(scratch, error);
     throw;
   }
   fs::remove_all(scratch, error);
   const int skipped = plan.start > 0 ? plan.start - 1 : 0;  // frame 0 has no steps
-  const double total = skipped * simulated + plan.written() * written;
-  std::printf("estimate: about %s (probe on %s: a simulated frame %.0f ms, a written frame %.0f ms)\n",
-              clock_text(total).c_str(), context.device_name().c_str(), simulated * 1e3, written * 1e3);
+  // What came before the probe (the device, the node's pipelines and uploads) a run does too.
+  const double startup = std::chrono::duration<double>(probe_begin - process_start).count();
+  const double total = startup + skipped * simulated + plan.written() * written;
+  std::printf("estimate: about %s = %.1f s (probe on %s: startup %.1f s, a simulated frame %.0f ms, a written "
+              "frame %.0f ms)\n",
+              clock_text(total).c_str(), total, context.device_name().c_str(), startup, simulated * 1e3,
+              written * 1e3);
 }
 
 }  // namespace capture

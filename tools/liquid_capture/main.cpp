@@ -175,7 +175,7 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
   if (!scene.adaptive_time_step && plan.time_step < node.time_step()) node.set_time_step(plan.time_step);
   tools::FrameLoop loop(context);
   if (options.dry_run) {
-    capture::dry_run(settings, context, node, renderer, camera, loop);
+    capture::dry_run(settings, context, node, renderer, camera, loop, started);
     tools::fail_on_validation_messages(context.validation_message_count());
     return 0;
   }
