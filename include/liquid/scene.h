@@ -110,6 +110,10 @@ inline constexpr double k_acoustic_cfl_smoothed_stable = 2.4;  // the largest me
 inline constexpr double k_max_acoustic_cfl_chapter = 1.0;
 inline constexpr double k_max_acoustic_cfl = 2.0;
 
+// The range a scene's time_step may take, s.
+inline constexpr double k_min_time_step = 1e-6;
+inline constexpr double k_max_time_step = 0.1;
+
 // CFL numbers of the adaptive step: dt = min(time_step, acoustic_cfl h / (c + |u|max),
 // velocity_cfl h / |u|max), with c the Tait form's speed of sound at the densest cell.
 struct AdaptiveTimeStep {
@@ -125,7 +129,7 @@ struct Scene {
   int dimension = 2;                // 2 or 3
   SimulationMode mode = SimulationMode::Liquid;
   glm::vec3 domain{1.0f};           // m, box [0, domain]; z ignored in 2D
-  std::optional<int> grid_resolution;  // cells along the longest axis; default round(N^(1/d))
+  std::optional<int> grid_resolution;  // cells along the longest axis; default two particle spacings a cell
   glm::vec3 gravity{0.0f, -9.81f, 0.0f};  // m/s^2
   float particle_spacing = 0.01f;   // m, lattice spacing of fluid blocks (sets particle mass)
   float density = 1000.0f;          // kg/m^3, the liquid's density (particle mass = density * spacing^d)
@@ -137,7 +141,9 @@ struct Scene {
   // s; when set, pic_ratio is the blend over a step of this length and steps of other lengths
   // blend at the same rate per second (liquid/physics/pic_blend.h); empty: r per step, as the chapter.
   std::optional<float> pic_ratio_reference_step;
-  float time_step = 0.002f;         // s, one simulation step (with adaptive_time_step, the largest)
+  // s, one simulation step (with adaptive_time_step, the largest); 0: the regime's step at the
+  // scene's cell size (the acoustic CFL the shipped scenes keep to; liquid/physics/time_step.h).
+  float time_step = 0.0f;
   int substeps = 8;                 // steps per rendered frame
   float wall_margin_cells = 0.5f;   // particles are clamped this many cells inside the walls (or where they started)
   SplatFormat splat_format = SplatFormat::Auto;
@@ -151,6 +157,9 @@ struct Scene {
   // Steps sized from the state by CFL conditions (liquid/physics/time_step.h); empty: every step is
   // time_step (the chapter's fixed step).
   std::optional<AdaptiveTimeStep> adaptive_time_step;
+  // For code that studies instability on purpose (not a scene file key): a fixed time_step past the
+  // regime's stable step is run instead of refused by make_setup.
+  bool allow_unstable_time_step = false;
 };
 
 // The long-step regime: the splat-adjoint pressure with the PIC blend per second

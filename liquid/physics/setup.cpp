@@ -5,6 +5,7 @@
 
 #include "liquid/physics/kernel.h"
 #include "liquid/physics/obstacles.h"
+#include "liquid/physics/time_step.h"
 #include "liquid/physics/wall_coverage.h"
 #include "shaders/liquid/shared.h"
 
@@ -18,7 +19,6 @@
 namespace liquid {
 namespace {
 
-constexpr int k_min_grid_cells = 8;
 // floor((max - min) / s + epsilon): a block whose extent is a whole number of spacings gets that
 // many particles even when the float division lands just below the integer.
 constexpr double k_lattice_epsilon = 1e-4;
@@ -57,18 +57,12 @@ std::string describe_grid(glm::ivec3 cells) {
   return std::to_string(cells.x) + " x " + std::to_string(cells.y) + " x " + std::to_string(cells.z);
 }
 
-// Chooses the cells per axis and the cell size; the longest axis gets the scene's resolution or
-// round(N^(1/d)) (section 7).
-void choose_grid(const Scene& scene, int capacity, SimulationSetup& setup) {
-  const int d = scene.dimension;
-  double longest = 0.0;
-  for (int a = 0; a < d; ++a) longest = std::max(longest, double(scene.domain[a]));
-  const int longest_cells = scene.grid_resolution
-                                ? *scene.grid_resolution
-                                : std::max(k_min_grid_cells, int(std::lround(std::pow(double(capacity), 1.0 / d))));
-  const double h = longest / longest_cells;
+// Chooses the cells per axis and the cell size (square/cubic cells, longest_axis_cells along the
+// longest side).
+void choose_grid(const Scene& scene, SimulationSetup& setup) {
+  const double h = scene_cell_size(scene);
   setup.grid_cells = glm::ivec3(1);
-  for (int a = 0; a < d; ++a)
+  for (int a = 0; a < scene.dimension; ++a)
     setup.grid_cells[a] = int(std::max(1.0, std::min(std::round(double(scene.domain[a]) / h), 1e9)));
   setup.cell_size = float(h);
   // Cells are square/cubic, so the box is snapped to whole cells (the shorter axes may grow or
@@ -81,16 +75,19 @@ void check_grid_limits(const Scene& scene, const SimulationSetup& setup, const D
   const bool three_d = scene.dimension == 3;
   const int per_axis = three_d ? limits.max_image_dimension_3d : limits.max_image_dimension_2d;
   const char* limit_name = three_d ? "max_image_dimension_3d" : "max_image_dimension_2d";
+  // A default grid says where it came from, so the user knows which key to set.
+  const std::string from = scene.grid_resolution ? "" : " (the default: " + format_number(k_default_spacings_per_cell) +
+                                                             " particle spacings a cell; set grid_resolution)";
   for (int a = 0; a < scene.dimension; ++a)
     if (cells[a] > per_axis)
       fail(scene, "grid_resolution",
            "grid " + describe_grid(cells) + " exceeds the device limit of " + std::to_string(per_axis) +
-               " texels per axis (" + limit_name + ")");
+               " texels per axis (" + limit_name + ")" + from);
   if (three_d && cells.z > limits.max_framebuffer_layers)
     fail(scene, "grid_resolution",
          "grid " + describe_grid(cells) + " needs " + std::to_string(cells.z) +
              " framebuffer layers, past the device limit of " + std::to_string(limits.max_framebuffer_layers) +
-             " (max_framebuffer_layers)");
+             " (max_framebuffer_layers)" + from);
 }
 
 // Whether a lattice point at t = 0 lies in the part of an obstacle's band where its artificial
@@ -241,7 +238,40 @@ void check_emitters(const Scene& scene, const SimulationSetup& setup) {
                         format_number(setup.domain[a]) + " m on axis " + std::to_string(a) + ")");
 }
 
+// A fixed step past the regime's stable one would explode in the first steps: refuse it before the
+// run, saying what the scene could do instead (adaptive steps adapt, so they are not refused).
+void check_time_step(const Scene& scene, const SimulationSetup& setup) {
+  const double largest = largest_stable_time_step(setup);
+  if (scene.adaptive_time_step || scene.allow_unstable_time_step || setup.time_step <= largest) return;
+  const double sound = speed_of_sound(setup, 1.0), fall = fall_speed(setup);
+  fail(scene, "time_step",
+       format_number(setup.time_step) + " s is past the longest stable step of this scene, " + format_number(largest) +
+           " s (an acoustic CFL of " + format_number(stable_acoustic_cfl(setup)) + " in " +
+           (setup.long_steps ? "the long-step regime" : "the chapter's regime") + " on cells of " +
+           format_number(setup.cell_size) + " m, for sound at " + format_number(sound) + " m/s and a fall across the domain at " +
+           format_number(fall) + " m/s); lower it, leave it out for the regime's step, or add adaptive_time_step");
+}
+
 }  // namespace
+
+double longest_side(const Scene& scene) {
+  double longest = 0.0;
+  for (int a = 0; a < scene.dimension; ++a) longest = std::max(longest, double(scene.domain[a]));
+  return longest;
+}
+
+int longest_axis_cells(const Scene& scene) {
+  if (scene.grid_resolution) return *scene.grid_resolution;
+  const double cells = std::round(longest_side(scene) / (k_default_spacings_per_cell * scene.particle_spacing));
+  return int(std::clamp(cells, double(k_min_grid_cells), 1e9));
+}
+
+double scene_cell_size(const Scene& scene) { return longest_side(scene) / longest_axis_cells(scene); }
+
+PressureLaw pressure_law(const Scene& scene) {
+  if (scene.mode == SimulationMode::ShallowWater) return {glm::length(scene.gravity) * scene.rest_depth, 1.0f};
+  return {scene.stiffness, scene.gamma};
+}
 
 double kernel_integral_cells(int dimension, double radius_cells) {
   if (dimension == 2) return k_pi * radius_cells * radius_cells / 4.0;
@@ -256,7 +286,7 @@ SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
   SimulationSetup setup;
   setup.dimension = scene.dimension;
   setup.shallow_water = scene.mode == SimulationMode::ShallowWater;
-  setup.time_step = scene.time_step;
+  setup.time_step = float(scene_time_step(scene));
   setup.particle_spacing = scene.particle_spacing;
   setup.kernel_radius_cells = scene.kernel_radius_cells;
   setup.pic_ratio = scene.pic_ratio;
@@ -278,7 +308,7 @@ SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
   setup.capacity = int(capacity);
   setup.particle_texture = glm::ivec2(texture);
 
-  choose_grid(scene, setup.capacity, setup);
+  choose_grid(scene, setup);
   // The artificial obstacle density falls to zero one kernel radius outside the surface.
   setup.obstacle_band = scene.kernel_radius_cells * setup.cell_size;
   check_grid_limits(scene, setup, limits);
@@ -311,18 +341,15 @@ SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
   setup.rest_density = scene.rest_density ? *scene.rest_density
                                           : float(scale * lattice_weight_sum(d, spacing / h, radius));
 
-  if (scene.mode == SimulationMode::ShallowWater) {
-    // P = k rho / rho0 = g * rest_depth * rho / rho0 = g * (water height); the plane is horizontal.
-    setup.gamma = 1.0f;
-    setup.stiffness = glm::length(scene.gravity) * scene.rest_depth;
-    setup.gravity = glm::vec3(0.0f);
-  } else {
-    setup.gamma = scene.gamma;
-    setup.stiffness = scene.stiffness;
-    setup.gravity = scene.gravity;  // z is 0 in 2D (the parser fills it so)
-  }
+  const PressureLaw law = pressure_law(scene);
+  setup.stiffness = law.stiffness;
+  setup.gamma = law.gamma;
+  // Shallow water: P = k rho / rho0 = g * (water height), and the plane is horizontal. Else z is 0
+  // in 2D (the parser fills it so).
+  setup.gravity = scene.mode == SimulationMode::ShallowWater ? glm::vec3(0.0f) : scene.gravity;
   setup.wall_margin = scene.wall_margin_cells * setup.cell_size;
   setup.wall_share_beyond = wall_share_beyond(scene, spacing / h, gpu::k_wall_table_size);
+  check_time_step(scene, setup);
   return setup;
 }
 

@@ -58,6 +58,30 @@ struct SimulationSetup {
 // pi r^2 / 4 in 2D, 64 pi r^3 / 315 in 3D.
 double kernel_integral_cells(int dimension, double radius_cells);
 
+// A scene without grid_resolution gets cells of this many particle spacings, as the shipped physical
+// scenes are built (1.5 to 2.5): the liquid, not the domain, sets the resolution. (round(N^(1/d))
+// over the whole domain gave a column in a wide tank 5.7 spacings a cell, and a surge front 9.4 %
+// behind Martin & Moyce where two spacings give 7.7 %.)
+inline constexpr double k_default_spacings_per_cell = 2.0;
+
+// The cells along the longest axis: grid_resolution, or the longest side over
+// k_default_spacings_per_cell spacings (at least k_min_grid_cells).
+int longest_axis_cells(const Scene& scene);
+inline constexpr int k_min_grid_cells = 8;
+
+// The longest side of the scene's domain (as written, before snapping to whole cells), m.
+double longest_side(const Scene& scene);
+
+// The cell size h the setup gives the scene, m: the longest side over longest_axis_cells.
+double scene_cell_size(const Scene& scene);
+
+// k and gamma of the scene's pressure law (shallow water: P = g h, k = |g| rest_depth, gamma = 1).
+struct PressureLaw {
+  float stiffness = 0.0f;
+  float gamma = 1.0f;
+};
+PressureLaw pressure_law(const Scene& scene);
+
 // Derives the setup; throws SceneError naming the scene and the problem (a grid or particle count
 // past the device's limits, a fluid block with no particle, ...).
 SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits);

@@ -8,12 +8,25 @@ namespace liquid {
 namespace {
 
 // The long steps' CFL numbers were measured with a kernel of 3 cells.
+double regime_acoustic_cfl(bool long_steps, double kernel_radius_cells) {
+  return long_steps ? k_acoustic_cfl_smoothed * kernel_radius_cells / 3.0 : k_acoustic_cfl_chapter;
+}
+
 double kernel_scale(const SimulationSetup& setup) { return setup.kernel_radius_cells / 3.0; }
+
+double longest_side(const SimulationSetup& setup) {
+  double longest = 0.0;
+  for (int a = 0; a < setup.dimension; ++a) longest = std::max(longest, double(setup.domain[a]));
+  return longest;
+}
+
+// The velocity CFL a default step keeps to when there is no sound to bound it (AdaptiveTimeStep's).
+constexpr double k_default_velocity_cfl = 0.4;
 
 }  // namespace
 
 double regime_acoustic_cfl(const SimulationSetup& setup) {
-  return setup.long_steps ? k_acoustic_cfl_smoothed * kernel_scale(setup) : k_acoustic_cfl_chapter;
+  return regime_acoustic_cfl(setup.long_steps, setup.kernel_radius_cells);
 }
 
 double stable_acoustic_cfl(const SimulationSetup& setup) {
@@ -25,10 +38,29 @@ double speed_of_sound(const SimulationSetup& setup, double density_ratio) {
   return std::sqrt(double(setup.stiffness) * setup.gamma * std::pow(ratio, double(setup.gamma)));
 }
 
+double fall_speed(const SimulationSetup& setup) {
+  return std::sqrt(2.0 * glm::length(setup.gravity) * longest_side(setup));
+}
+
+double scene_time_step(const Scene& scene) {
+  if (scene.time_step > 0.0f) return scene.time_step;
+  const double h = scene_cell_size(scene);
+  const PressureLaw law = pressure_law(scene);
+  const double sound = std::sqrt(double(law.stiffness) * law.gamma);
+  if (sound > 0.0)
+    return std::min(regime_acoustic_cfl(long_step_regime(scene), scene.kernel_radius_cells) * h / sound, k_max_time_step);
+  const double fall = std::sqrt(2.0 * glm::length(scene.gravity) * longest_side(scene));
+  return fall > 0.0 ? std::min(k_default_velocity_cfl * h / fall, k_max_time_step) : k_max_time_step;
+}
+
+double largest_stable_time_step(const SimulationSetup& setup) {
+  const double signal = speed_of_sound(setup, 1.0) + fall_speed(setup);
+  return signal > 0.0 ? stable_acoustic_cfl(setup) * setup.cell_size / signal : double(k_max_time_step);
+}
+
 RuntimeParameterRange runtime_parameter_range(const SimulationSetup& setup, double time_step, float stiffness,
                                               glm::vec3 gravity) {
-  double longest = 0.0;
-  for (int a = 0; a < setup.dimension; ++a) longest = std::max(longest, double(setup.domain[a]));
+  const double longest = longest_side(setup);
   const double k = std::max(double(stiffness), 0.0), g = glm::length(gravity);
   // The fastest signal the step may carry: sound plus the flow, within the stable acoustic CFL.
   const double signal = stable_acoustic_cfl(setup) * setup.cell_size / time_step;

@@ -26,6 +26,20 @@ double stable_acoustic_cfl(const SimulationSetup& setup);
 // Speed of sound (m/s) at density ratio rho / rho0.
 double speed_of_sound(const SimulationSetup& setup, double density_ratio);
 
+// The speed of a fall from rest across the domain's longest side, sqrt(2 |g| L), m/s: the fastest
+// flow gravity alone gives (0 in shallow water, whose plane is horizontal).
+double fall_speed(const SimulationSetup& setup);
+
+// The step a scene runs at, s: its time_step, or (time_step 0, the default) its regime's acoustic
+// CFL step at its own cell size, regime_acoustic_cfl h / c0 with c0 the speed of sound at rest, as
+// the shipped scenes choose theirs (with no stiffness, no sound: a velocity CFL of 0.4 for the fall).
+double scene_time_step(const Scene& scene);
+
+// The longest fixed step stable in the setup's regime, s: stable_acoustic_cfl h / (c0 + fall_speed),
+// sound and the fastest fall together (the bound runtime_parameter_range keeps the sliders in).
+// make_setup refuses a fixed step past it.
+double largest_stable_time_step(const SimulationSetup& setup);
+
 // The live parameters (LiquidNode::set_runtime_parameters) a host's sliders can offer while the
 // node keeps its step `time_step`, all of which stay stable (the viewer's panel uses them). Two
 // conditions bound gravity g and stiffness k together, with L the domain's longest side:

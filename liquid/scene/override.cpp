@@ -1,6 +1,7 @@
 #include "liquid/scene/override.h"
 
 #include "liquid/scene/format.h"
+#include "liquid/scene/json_nesting.h"
 
 #include <nlohmann/json.hpp>
 
@@ -40,14 +41,23 @@ void apply(Json& doc, const SceneOverride& o) {
   const std::string where = "--set " + printable(o.path);
   const std::vector<std::string> parts = path_parts(o.path);
   if (parts.empty()) throw SceneError(where + ": not a field path (use name, camera.position, fluid_blocks.0.max)");
+  // The scene file's limits, checked before the value is parsed or the document printed again.
+  if (o.value.size() > k_max_scene_bytes)
+    throw SceneError(where + ": the value is " + format_number(double(o.value.size())) + " bytes, larger than the " +
+                     format_number(double(k_max_scene_bytes >> 20)) + " MiB a scene may be");
+  if (parts.size() + size_t(json_nesting_depth(o.value)) > size_t(k_max_scene_nesting))
+    throw SceneError(where + ": the path and its value nest deeper than the " + std::to_string(k_max_scene_nesting) +
+                     " levels a scene may");
   Json* node = &doc;
   std::string walked;
   for (const std::string& part : parts) {
     if (node->is_array()) {
-      if (!is_index(part)) throw SceneError(where + ": " + walked + " is a list; expected an index, got '" + part + "'");
+      if (!is_index(part))
+        throw SceneError(where + ": " + printable(walked) + " is a list; expected an index, got '" + printable(part) + "'");
       const size_t index = std::stoul(part);
       if (index >= node->size())
-        throw SceneError(where + ": " + walked + " has " + std::to_string(node->size()) + " element(s), no [" + part + "]");
+        throw SceneError(where + ": " + printable(walked) + " has " + std::to_string(node->size()) + " element(s), no [" +
+                         part + "]");
       node = &(*node)[index];
       walked += "[" + part + "]";
     } else if (node->is_object()) {
@@ -55,12 +65,13 @@ void apply(Json& doc, const SceneOverride& o) {
       walked += (walked.empty() ? "" : ".") + part;
     } else if (node->is_null()) {
       if (is_index(part))  // a list the scene does not have: no element to set
-        throw SceneError(where + ": the scene has no " + walked + ", so no [" + part + "]");
+        throw SceneError(where + ": the scene has no " + printable(walked) + ", so no [" + part + "]");
       *node = Json::object();  // a missing parent object (camera.position without a camera)
       node = &(*node)[part];
       walked += (walked.empty() ? "" : ".") + part;
     } else {
-      throw SceneError(where + ": " + walked + " is a " + node->type_name() + ", it has no field '" + part + "'");
+      throw SceneError(where + ": " + printable(walked) + " is a " + node->type_name() + ", it has no field '" +
+                       printable(part) + "'");
     }
   }
   Json value = Json::parse(o.value, nullptr, /*allow_exceptions=*/false);
@@ -69,7 +80,7 @@ void apply(Json& doc, const SceneOverride& o) {
     char* end = nullptr;
     const double number = std::strtod(o.value.c_str(), &end);
     if (!o.value.empty() && end == o.value.c_str() + o.value.size() && !std::isfinite(number))
-      throw SceneError(where + ": " + o.value + " is not a finite number");
+      throw SceneError(where + ": " + printable(o.value) + " is not a finite number");
     value = Json(o.value);
   }
   *node = std::move(value);

@@ -216,7 +216,7 @@ void read_physics(const Reader& r, const Json& doc, Scene& scene) {
   if (const Json* v = Reader::find(doc, "pic_ratio")) scene.pic_ratio = float(r.number_in(*v, "pic_ratio", 0.0, 1.0));
   if (const Json* v = Reader::find(doc, "pic_ratio_reference_step"))
     scene.pic_ratio_reference_step = float(r.number_in(*v, "pic_ratio_reference_step", 1e-6, 0.1));
-  if (const Json* v = Reader::find(doc, "time_step")) scene.time_step = float(r.number_in(*v, "time_step", 1e-6, 0.1));
+  if (const Json* v = Reader::find(doc, "time_step")) scene.time_step = float(r.number_in(*v, "time_step", k_min_time_step, k_max_time_step));
   if (const Json* v = Reader::find(doc, "substeps")) scene.substeps = r.integer_in(*v, "substeps", 1, 1000);
   if (const Json* v = Reader::find(doc, "adaptive_time_step"))
     scene.adaptive_time_step = read_adaptive_time_step(r, *v, "adaptive_time_step");

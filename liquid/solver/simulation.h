@@ -74,6 +74,8 @@ class Simulation {
   LiquidState& state() { return *state_; }
 
  private:
+  // Refuses a checkpoint whose values no run reaches (std::invalid_argument naming the value).
+  void check_checkpoint_values(const Checkpoint& checkpoint) const;
   // The splat-adjoint pressure's two grid images for one graph (invalid handles without it).
   struct PressureImages {
     ImageHandle pressure, potential;

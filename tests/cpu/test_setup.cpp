@@ -103,31 +103,91 @@ TEST_CASE("dam_break_2d gives the expected particles and grid", "[setup]") {
   }
 }
 
-TEST_CASE("the default grid follows N^(1/d) with at least 8 cells", "[setup]") {
-  // 3D: 20 x 20 x 20 = 8000 particles -> round(8000^(1/3)) = 20 cells along the longest axis.
+TEST_CASE("the default grid follows the particle spacing, two spacings a cell, at least 8 cells", "[setup]") {
+  // 3D: a 0.2 m cube at 1 cm in a 1 x 0.5 x 0.25 m box: 2 cm cells, whatever the particle count.
   Scene cube = block_scene(3, {1.0f, 0.5f, 0.25f}, {{0.0f, 0.0f, 0.0f}, {0.2f, 0.2f, 0.2f}, {}}, 0.01f);
   SimulationSetup setup = make_setup(cube, {});
   REQUIRE(setup.capacity == 8000);
-  CHECK(setup.grid_cells == glm::ivec3(20, 10, 5));
-  CHECK(setup.cell_size == Approx(0.05f));
+  CHECK(setup.grid_cells == glm::ivec3(50, 25, 13));  // 12.5 rounds to 13, the box snapped to it
+  CHECK(setup.cell_size == Approx(0.02f));
+  CHECK(setup.particle_spacing / setup.cell_size == Approx(1.0 / k_default_spacings_per_cell));
 
-  // Few particles: clamped to 8 cells.
-  Scene few = block_scene(2, {1.0f, 1.0f, 0.0f}, {{0.0f, 0.0f, 0.0f}, {0.1f, 0.1f, 0.0f}, {}}, 0.02f);
+  // The case N^(1/d) got wrong: a 0.1 x 0.2 m column at 1.5 mm in a 0.8 x 0.3 m tank. From the
+  // particle count it had 94 cells, 5.7 spacings a cell; from the spacing, 267 cells of 3 mm.
+  Scene column = block_scene(2, {0.8f, 0.3f, 0.0f}, {{0.0f, 0.0f, 0.0f}, {0.1f, 0.2f, 0.0f}, {}}, 0.0015f);
+  setup = make_setup(column, {});
+  CHECK(setup.grid_cells == glm::ivec3(267, 100, 1));
+  CHECK(setup.cell_size == Approx(0.8 / 267));
+
+  // Coarse particles in a small box: clamped to 8 cells.
+  Scene few = block_scene(2, {0.1f, 0.1f, 0.0f}, {{0.0f, 0.0f, 0.0f}, {0.05f, 0.05f, 0.0f}, {}}, 0.01f);
   CHECK(make_setup(few, {}).grid_cells == glm::ivec3(8, 8, 1));
 
-  // An emitter's capacity counts in N.
-  few.emitters = {Emitter{{0.5f, 0.5f, 0.0f}, {1.0f, 0.0f, 0.0f}, 0.01f, 0.0f, 1e30f, 10000 - 25}};
-  setup = make_setup(few, {});
-  CHECK(setup.capacity == 10000);
-  CHECK(setup.grid_cells == glm::ivec3(100, 100, 1));
+  // An emitter's capacity does not change the cells: the spacing sets them.
+  few.emitters = {Emitter{{0.05f, 0.05f, 0.0f}, {1.0f, 0.0f, 0.0f}, 0.01f, 0.0f, 1e30f, 10000}};
+  CHECK(make_setup(few, {}).grid_cells == glm::ivec3(8, 8, 1));
 
-  // Shorter axes are rounded to whole cells and the box snapped to them.
+  // A scene's grid_resolution wins; shorter axes are rounded to whole cells and the box snapped.
   few.emitters.clear();
   few.domain = {1.0f, 0.337f, 0.0f};
   few.grid_resolution = 10;
   setup = make_setup(few, {});
   CHECK(setup.grid_cells == glm::ivec3(10, 3, 1));
   CHECK(setup.domain.y == Approx(0.3f));
+
+  // A default grid past the device's limits is refused naming where it came from.
+  Scene fine = block_scene(2, {10.0f, 1.0f, 0.0f}, {{0.0f, 0.0f, 0.0f}, {0.01f, 0.01f, 0.0f}, {}}, 0.0002f);
+  CHECK_THROWS_WITH(make_setup(fine, {}),
+                    Catch::Contains("grid 25000 x 2500 x 1 exceeds the device limit of 16384 texels per axis") &&
+                        Catch::Contains("(the default: 2 particle spacings a cell; set grid_resolution)"));
+}
+
+TEST_CASE("a scene without time_step gets its regime's step at its own cell size", "[setup][time_step]") {
+  // Only the required keys: the chapter's regime, k = 50, gamma = 5, 2 cm cells: an acoustic CFL
+  // of 0.16 at the speed of sound at rest, sqrt(250) m/s.
+  Scene scene = block_scene(2, {1.0f, 0.6f, 0.0f}, {{0.0f, 0.0f, 0.0f}, {0.3f, 0.4f, 0.0f}, {}}, 0.01f);
+  REQUIRE(scene.time_step == 0.0f);
+  SimulationSetup setup = make_setup(scene, {});
+  CHECK(setup.time_step == Approx(k_acoustic_cfl_chapter * 0.02 / std::sqrt(250.0)));
+  CHECK(scene_time_step(scene) == Approx(setup.time_step));
+  CHECK(setup.time_step < largest_stable_time_step(setup));
+
+  // The long-step regime: its CFL, scaled by the kernel radius over 3 cells.
+  scene.pressure_force = PressureForce::SplatAdjoint;
+  scene.pic_ratio_reference_step = 1e-4f;
+  scene.kernel_radius_cells = 4.0f;
+  setup = make_setup(scene, {});
+  CHECK(setup.time_step == Approx(k_acoustic_cfl_smoothed * 4.0 / 3.0 * setup.cell_size / std::sqrt(250.0)));
+
+  // Shallow water: the wave speed sqrt(|g| rest_depth).
+  Scene shallow = scene_of("shallow_water.json");
+  shallow.time_step = 0.0f;
+  setup = make_setup(shallow, {});
+  CHECK(setup.time_step == Approx(k_acoustic_cfl_chapter * setup.cell_size / std::sqrt(9.81 * 0.05)));
+
+  // Every shipped scene's own step is within its regime's stable one.
+  for (const std::filesystem::path& path : shipped_scenes()) {
+    INFO(path);
+    const SimulationSetup shipped = make_setup(load_scene(path), {});
+    CHECK(shipped.time_step <= largest_stable_time_step(shipped));
+  }
+}
+
+TEST_CASE("a fixed time_step past its regime's stable step is refused before the run", "[setup][time_step]") {
+  // The old default of 2 ms on the scene above: an acoustic CFL of 1.6, past the chapter's 1.
+  Scene scene = block_scene(2, {1.0f, 0.6f, 0.0f}, {{0.0f, 0.0f, 0.0f}, {0.3f, 0.4f, 0.0f}, {}}, 0.01f);
+  scene.source = "scene.json";
+  scene.time_step = 0.002f;
+  CHECK_THROWS_WITH(make_setup(scene, {}),
+                    Catch::StartsWith("scene.json: time_step: 0.002 s is past the longest stable step of this scene, ") &&
+                        Catch::Contains("in the chapter's regime on cells of 0.02 m") &&
+                        Catch::EndsWith("lower it, leave it out for the regime's step, or add adaptive_time_step"));
+  // Just within it: accepted; adaptive steps adapt, so their largest step is not refused.
+  scene.time_step = float(0.99 * k_max_acoustic_cfl_chapter * 0.02 / (std::sqrt(250.0) + std::sqrt(2 * 9.81)));
+  CHECK_NOTHROW(make_setup(scene, {}));
+  scene.time_step = 0.002f;
+  scene.adaptive_time_step = AdaptiveTimeStep{};
+  CHECK_NOTHROW(make_setup(scene, {}));
 }
 
 TEST_CASE("the lattice of symmetric_2d is mirror-symmetric", "[setup]") {
@@ -392,6 +452,7 @@ TEST_CASE("a block resting on the floor starts hydrostatically compressed", "[se
       uniform.fluid_blocks[0].max.y += 0.1f;
     } else {
       uniform.pressure_force = PressureForce::Chapter;
+      uniform.time_step = 0.0f;  // the chapter's regime's own step (the long step would be refused)
     }
     INFO((floating ? "floating" : "chapter"));
     const std::vector<float> uniform_layers = layer_heights(make_setup(uniform, {}));

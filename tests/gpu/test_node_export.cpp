@@ -21,6 +21,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 
@@ -87,8 +88,22 @@ TEST_CASE("a node restored from a checkpoint continues the run bit for bit", "[g
   liquid::LiquidNode::Checkpoint crowded = saved;
   crowded.active = int(saved.positions.size()) + 1;
   CHECK_THROWS_WITH(second.restore_checkpoint(crowded),
-                    Catch::Contains("holds " + std::to_string(crowded.active) + " active particles, more than the") &&
+                    Catch::Contains("holds " + std::to_string(crowded.active) + " active particles, outside the") &&
                         Catch::Contains("capacity"));
+  // Every value is held to what a run reaches, naming it (a NaN used to run on into "unstable").
+  const auto refused = [&](auto edit, const std::string& message) {
+    liquid::LiquidNode::Checkpoint edited = saved;
+    edit(edited);
+    CHECK_THROWS_WITH(second.restore_checkpoint(edited), Catch::StartsWith("liquid: the checkpoint's " + message));
+  };
+  refused([](auto& c) { c.positions[3].x = std::nanf(""); }, "particle 3 has a non-finite position or velocity");
+  refused([](auto& c) { c.velocities[0].y = INFINITY; }, "particle 0 has a non-finite position or velocity");
+  refused([](auto& c) { c.positions[1].y = -0.5f; }, "particle 1 lies outside the domain (-0.5 m on axis 1)");
+  refused([](auto& c) { c.time = -1.0; }, "time is not a finite time >= 0 s");
+  refused([](auto& c) { c.step = -3; }, "step count is negative (-3)");
+  refused([](auto& c) { c.time_step = 1.0; }, "time step is not in [0, 0.001] s");
+  refused([](auto& c) { c.emitted[0] = 401; }, "emitter 0 has added 401 particles, outside [0, 400]");
+  refused([](auto& c) { c.poses[0].center.x = std::nanf(""); }, "obstacle 0 has a non-finite pose");
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 

@@ -285,7 +285,7 @@ TEST_CASE("2D view golden: a wave, a droplet, a thin sheet, obstacles and partic
   // and a block of particles under the surface.
   const liquid::Scene scene = liquid::parse_scene(R"({
     "name": "view2d golden", "dimension": 2, "domain": [1.0, 0.6], "grid_resolution": 128,
-    "particle_spacing": 0.01, "density": 1000, "stiffness": 50, "time_step": 0.001, "substeps": 1,
+    "particle_spacing": 0.01, "density": 1000, "stiffness": 50, "substeps": 1,
     "fluid_blocks": [ { "min": [0.03, 0.03], "max": [0.33, 0.2] } ],
     "obstacles": [
       { "shape": "sphere", "center": [0.55, 0.26], "radius": 0.06 },

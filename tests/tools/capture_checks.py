@@ -245,6 +245,22 @@ def check_failsafe():
         refused = run(["--resume", out], expect=1)
         if refused.stderr.count("\n") != 1 or message not in refused.stderr:
             fail(f"frames.{field} = {value} in capture.json should be refused in one line naming it: {refused.stderr!r}")
+    # A record is sized and its nesting counted before it is read whole or parsed: a deeply nested
+    # one (it crashed the resume), an oversized one and a link to an endless file are refused at
+    # once, in one line.
+    for content, message in ((b"[" * 200000 + b"]" * 200000, "capture.json: not a capture's record (nested deeper than 10 levels)"),
+                             (b" " * (17 << 20), "capture.json: not a capture's record (not a regular file of at most 16 MiB)"),
+                             (None, "capture.json: not a capture's record (not a regular file of at most 16 MiB)")):
+        os.remove(record)
+        if content is None:
+            os.symlink("/dev/zero", record)
+        else:
+            open(record, "wb").write(content)
+        begin = time.monotonic()
+        refused = run(["--resume", out], expect=1)
+        if refused.stderr.count("\n") != 1 or message not in refused.stderr or time.monotonic() - begin > 20:
+            fail(f"a bad record should be refused at once in one line saying {message!r}: {refused.stderr!r}")
+    os.remove(record)
     edited = json.loads(kept)
     edited["view"]["camera_position"] = [1]
     open(record, "w").write(json.dumps(edited))
@@ -348,6 +364,29 @@ def check_estimate():
     print(f"estimated {estimate:.1f} s, ran {real:.1f} s")
     if not 0.75 <= estimate / real <= 1.33:
         fail(f"the dry run estimated {estimate:.1f} s for a run of {real:.1f} s")
+
+
+def check_names():
+    """Output names a file system cannot hold are refused before the run, in one line, with no
+    folder left behind: a frame name (at the run's last frame) whose temporary .partial passes 255
+    bytes, a run of 250 '#'."""
+    out = os.path.join(ARGS.work, "names")
+    shutil.rmtree(out, ignore_errors=True)
+    cases = (("-o", os.path.join(out, "f_" + "#" * 250 + ".png")),
+             ("-o", os.path.join(out, "x" * 240 + "_####.png")),
+             ("--particles-name", "p" * 240 + "_####.ply"),
+             ("--video", os.path.join(ARGS.work, "v" * 250 + ".mp4")))
+    for flag, value in cases:
+        args = [ARGS.scene, "-e", "2"] + ([] if flag == "-o" else ["-o", out]) + [flag, value] + SMALL
+        refused = run(args, expect=2)
+        if refused.stderr.count("\n") != 1 or "255" not in refused.stderr and "longer than" not in refused.stderr:
+            fail(f"{flag} of {len(os.path.basename(value))} bytes should be refused in one line: {refused.stderr!r}")
+        if os.path.exists(out):
+            fail(f"a refused {flag} left {out} behind")
+    # 247 bytes and .partial: 255, which fits.
+    run([ARGS.scene, "-e", "2", "-o", os.path.join(out, "x" * 238 + "_####.png")] + SMALL)
+    if files(out)[-1] != "x" * 238 + "_0002.png":
+        fail(f"a name of 247 bytes should be written: {files(out)}")
 
 
 def check_range():
@@ -504,7 +543,7 @@ if __name__ == "__main__":
     DOC_READER = doc_reader(ARGS.docs)
     os.makedirs(ARGS.work, exist_ok=True)
     checks = {"sigint": lambda: check_interrupt(signal.SIGINT), "sigterm": lambda: check_interrupt(signal.SIGTERM),
-              "resume": check_resume, "dryrun": check_dry_run, "estimate": check_estimate, "folders": check_folders, "range": check_range, "volume": check_volume,
+              "resume": check_resume, "dryrun": check_dry_run, "estimate": check_estimate, "names": check_names, "folders": check_folders, "range": check_range, "volume": check_volume,
               "video": check_video, "adaptive": check_adaptive,
               "failsafe": check_failsafe, "lock": check_lock, "fps": check_fps}
     checks[ARGS.check]()

@@ -9,6 +9,7 @@
 #include "liquid/node.h"
 #include "liquid/renderer.h"
 #include "liquid/scene.h"
+#include "liquid/scene/json_nesting.h"
 #include "liquid/solver/simulation.h"
 #include "tools/common/cli.h"
 #include "tools/common/frame_loop.h"
@@ -104,10 +105,24 @@ liquid::CameraView camera_from(const RunSettings& s, const liquid::LiquidNode& n
   return camera;
 }
 
-std::string read_text(const fs::path& path) {
+// The run's record, sized before it is read and its nesting counted before it is parsed, so an
+// oversized, endless (a link to /dev/zero) or deeply nested file is refused at once.
+std::string read_record(const fs::path& path) {
+  std::error_code error;
+  if (!fs::exists(path, error))
+    throw std::runtime_error(path.parent_path().string() + ": not a capture folder (no " + path.filename().string() + ")");
+  const auto size = fs::is_regular_file(path, error) ? fs::file_size(path, error) : 0;
+  if (!fs::is_regular_file(path, error) || error || size > capture::k_max_record_bytes)
+    throw std::runtime_error(path.string() + ": not a capture's record (not a regular file of at most " +
+                             std::to_string(capture::k_max_record_bytes >> 20) + " MiB)");
   std::ifstream file(path, std::ios::binary);
-  if (!file) throw std::runtime_error(path.parent_path().string() + ": not a capture folder (no " + path.filename().string() + ")");
-  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+  std::string text(size_t(size), '\0');
+  file.read(text.data(), std::streamsize(text.size()));
+  if (!file) throw std::runtime_error(path.string() + ": cannot read the capture's record");
+  if (liquid::json_nesting_depth(text) > capture::k_max_record_nesting)
+    throw std::runtime_error(path.string() + ": not a capture's record (nested deeper than " +
+                             std::to_string(capture::k_max_record_nesting) + " levels)");
+  return text;
 }
 
 // Before --video, the checks that need no device: ffmpeg installed, the file free, its folder there.
@@ -133,7 +148,7 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
   if (resuming) {
     capture::check_resume_flags(app);
     const fs::path folder(options.resume);
-    record_text = read_text(folder / capture::k_record_name);
+    record_text = read_record(folder / capture::k_record_name);
     const std::string record_name = (folder / capture::k_record_name).string();
     const json record = json::parse(record_text, nullptr, /*allow_exceptions=*/false);
     if (record.is_discarded()) throw std::runtime_error(record_name + ": not valid JSON (not a capture's record)");

@@ -2,7 +2,9 @@
 
 #include "tools/common/grid_path_flag.h"
 
+#include "liquid/physics/time_step.h"
 #include "liquid/scene.h"
+#include "liquid/scene/format.h"
 #include "liquid/scene/override.h"
 #include "tools/common/cli.h"
 
@@ -82,6 +84,33 @@ fs::path resolve_scene(const std::string& name) {
                            (list.empty() ? "" : " (" + list + ")"));
 }
 
+namespace {
+
+// Every output's name, at the run's last frame and with the .partial its temporary adds, within
+// what a file system takes (NAME_MAX, 255 bytes on Linux): refused before the run, not at its first
+// write, which left a started run behind.
+constexpr size_t k_max_file_name_bytes = 255;
+constexpr size_t k_temporary_suffix_bytes = sizeof(".partial") - 1;
+
+void check_name_lengths(const RunSettings& r) {
+  const auto check = [&](const NamePattern& pattern, const char* what) {
+    const std::string longest = pattern.name(r.plan.end);
+    if (longest.size() + k_temporary_suffix_bytes > k_max_file_name_bytes)
+      throw std::invalid_argument(std::string(what) + " " + liquid::printable(pattern.text()) + ": frame " +
+                                  std::to_string(r.plan.end) + "'s name is " + std::to_string(longest.size()) +
+                                  " bytes, and with its temporary .partial past the " +
+                                  std::to_string(k_max_file_name_bytes) + " a file name may have");
+  };
+  check(r.frames, "-o");
+  if (r.particles) check(*r.particles, "--particles-name");
+  if (r.volumes) check(*r.volumes, "--volume-name");
+  if (!r.video.empty() && fs::path(r.video).filename().string().size() + k_temporary_suffix_bytes > k_max_file_name_bytes)
+    throw std::invalid_argument("--video " + liquid::printable(r.video) + ": the file name is longer than " +
+                                std::to_string(k_max_file_name_bytes - k_temporary_suffix_bytes) + " bytes");
+}
+
+}  // namespace
+
 RunSettings settle(const CaptureOptions& o, int max_steps_per_frame) {
   if (o.scene.empty()) throw UsageError("a scene is required: a JSON file, or a name in assets/scenes/");
   RunSettings r;
@@ -105,9 +134,9 @@ RunSettings settle(const CaptureOptions& o, int max_steps_per_frame) {
     r.plan.end = o.end ? *o.end : o.start + o.frames.value_or(60) - 1;
     if (r.plan.end < r.plan.start)
       throw UsageError("--end " + std::to_string(r.plan.end) + " is before --start " + std::to_string(r.plan.start));
-    r.plan.time_step = scene.time_step;
+    r.plan.time_step = liquid::scene_time_step(scene);
     r.plan.steps_per_frame =
-        steps_per_frame(o.steps_per_frame, o.fps, scene.time_step, scene.substeps, max_steps_per_frame);
+        steps_per_frame(o.steps_per_frame, o.fps, r.plan.time_step, scene.substeps, max_steps_per_frame);
     if (o.fps > 0.0 && o.steps_per_frame == 0) {  // exactly o.fps frames per simulated second
       r.plan.fps = o.fps;
       r.plan.time_step = 1.0 / (o.fps * r.plan.steps_per_frame);
@@ -151,6 +180,11 @@ RunSettings settle(const CaptureOptions& o, int max_steps_per_frame) {
     const std::string ext = fs::path(r.video).extension().string();
     if (ext != ".mp4" && ext != ".mkv" && ext != ".mov")
       throw UsageError("--video " + r.video + ": the name must end in .mp4, .mkv or .mov");
+  }
+  try {
+    check_name_lengths(r);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
   }
   return r;
 }
@@ -228,6 +262,7 @@ RunSettings run_settings_from_json(const json& j, const fs::path& folder, const 
     r.fov_y_degrees = fov == 0 ? 0.0f : float(number(fov, "view.fov_y_degrees", k_min_fov_degrees, k_max_fov_degrees, false));
     r.checkpoint_every = int(number(j.at("checkpoint_every"), "checkpoint_every", 0, k_max_frame, true));
     r.video = j.at("video").get<std::string>();
+    check_name_lengths(r);
     return r;
   } catch (const std::exception& e) {
     throw std::runtime_error(source + ": " + e.what());

@@ -8,6 +8,9 @@
 
 #include "tools/liquid_capture/options.h"
 
+#include "liquid/scene.h"
+
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -18,6 +21,11 @@ namespace capture {
 inline const char* k_record_name = "capture.json";
 inline const char* k_stats_name = "stats.csv";
 inline const char* k_summary_name = "summary.json";
+// A record is the scene document (at most liquid::k_max_scene_bytes, printed once more with deeper
+// indentation) and a page of settings, one level deeper than the scene: past these it is refused
+// before it is parsed.
+inline constexpr std::uintmax_t k_max_record_bytes = 4 * liquid::k_max_scene_bytes;
+inline constexpr int k_max_record_nesting = liquid::k_max_scene_nesting + 2;
 inline const char* k_checkpoint_name = "checkpoint.bin";
 // The folder --overwrite moves the replaced run into until the new run has written an output.
 inline const char* k_set_aside_prefix = ".replaced-run-";

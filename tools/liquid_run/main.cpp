@@ -69,7 +69,7 @@ int run(const std::string& scene_path, int steps, double seconds, int report_eve
   std::printf("scene %s: %dD, %d particles (capacity %d), grid %dx%dx%d, h = %.4g m, dt = %.3g s%s, k = %.4g, "
               "gamma = %.3g, rho0 = %.5g kg/m^3\n",
               scene.name.c_str(), s.dimension, s.initial_particles, s.capacity, s.grid_cells.x, s.grid_cells.y,
-              s.grid_cells.z, s.cell_size, scene.time_step, scene.adaptive_time_step ? " (the largest; adaptive)" : "",
+              s.grid_cells.z, s.cell_size, s.time_step, scene.adaptive_time_step ? " (the largest; adaptive)" : "",
               s.stiffness, s.gamma, s.rest_density);
   std::printf("device %s (%s)\n", context.device_name().c_str(), context.driver_description().c_str());
   std::printf("%7s %9s %9s %7s %8s %6s %9s %12s %12s %12s %9s %10s\n", "step", "time_s", "active", "outside",

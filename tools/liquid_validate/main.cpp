@@ -8,6 +8,7 @@
 #include "engine/vk/context.h"
 #include "liquid/analysis/validation.h"
 #include "liquid/node.h"
+#include "liquid/physics/time_step.h"
 #include "liquid/scene.h"
 #include "liquid/scene/override.h"
 
@@ -105,7 +106,7 @@ Run run_scene(engine::vk::Context& context, const Options& o, const liquid::Scen
   run.setup = node.simulation().setup();
   tools::FrameLoop loop(context);
   const auto start = std::chrono::steady_clock::now();
-  const int total = int(std::ceil(seconds / double(scene.time_step) - 1e-6));
+  const int total = int(std::ceil(seconds / double(run.setup.time_step) - 1e-6));
   int done = 0;
   auto sample = [&] {
     const liquid::ParticleSnapshot particles = node.read_particles();
@@ -261,7 +262,7 @@ void column(engine::vk::Context& context, const Options& o, const char* file, st
     std::printf("%s, %.3f s...\n", scene.name.c_str(), t_end);
     // The front is interpolated between samples.
     Run run = run_scene(context, o, scene, t_end,
-                        std::max(1, int(std::lround(liquid::k_front_sample_period_s / scene.time_step))));
+                        std::max(1, int(std::lround(liquid::k_front_sample_period_s / liquid::scene_time_step(scene)))));
     std::vector<double> T{0.0}, Z{(base.fluid_blocks[0].max.x) / a};
     for (const Sample& s : run.samples) T.push_back(s.t * std::sqrt(2.0 * g / a)), Z.push_back(s.front / a);
     const liquid::FrontError e = liquid::compare_front(T, Z);
