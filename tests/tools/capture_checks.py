@@ -383,6 +383,12 @@ def check_names():
             fail(f"{flag} of {len(os.path.basename(value))} bytes should be refused in one line: {refused.stderr!r}")
         if os.path.exists(out):
             fail(f"a refused {flag} left {out} behind")
+    # User text echoed in a message is escaped onto one line, and a huge one is cut.
+    for args, echoed in (([ARGS.scene, "--no\nsuch"], "--no\\nsuch"),
+                         ([ARGS.scene, "--" + "k" * 100000], " bytes)")):
+        refused = run(args, expect=2)
+        if refused.stderr.count("\n") != 1 or echoed not in refused.stderr or len(refused.stderr) > 5000:
+            fail(f"a bad flag should be echoed on one line, escaped and cut: {refused.stderr[:300]!r}")
     # 247 bytes and .partial: 255, which fits.
     run([ARGS.scene, "-e", "2", "-o", os.path.join(out, "x" * 238 + "_####.png")] + SMALL)
     if files(out)[-1] != "x" * 238 + "_0002.png":

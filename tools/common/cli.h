@@ -3,6 +3,7 @@
 // "<tool>: error: ..." and exit status 1.
 #pragma once
 
+#include "liquid/scene/format.h"
 #include "tools/common/keep_modules_loaded.h"
 
 #include <CLI/CLI.hpp>
@@ -66,6 +67,15 @@ inline CLI::Validator integer_range(std::int64_t lo, std::int64_t hi) {
       "INTEGER in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]", "INTEGER_RANGE");
 }
 
+// The most of one error message a tool prints: a message that echoes a huge argument back is cut.
+inline constexpr size_t k_max_error_bytes = 4096;
+
+// "<tool>: error: <what>" on one line: control characters in echoed user text (a newline in a key
+// or a file name) are escaped and a message past k_max_error_bytes is cut, saying its length.
+inline void print_error(const char* tool, const char* what) {
+  std::fprintf(stderr, "%s: error: %s\n", tool, liquid::printable(what, k_max_error_bytes).c_str());
+}
+
 // Parses the arguments; returns an exit code when the program should stop (after --help: 0, after
 // a bad flag or value: 2, with "<tool>: error: ..." printed), or nothing to carry on.
 inline std::optional<int> parse_arguments(CLI::App& app, int argc, char** argv, const char* tool) {
@@ -74,7 +84,7 @@ inline std::optional<int> parse_arguments(CLI::App& app, int argc, char** argv, 
   } catch (const CLI::Success& help) {
     return app.exit(help);
   } catch (const CLI::ParseError& error) {
-    std::fprintf(stderr, "%s: error: %s\n", tool, error.what());
+    print_error(tool, error.what());
     return 2;
   }
   return std::nullopt;
@@ -88,7 +98,7 @@ int run_main(CLI::App& app, int argc, char** argv, const char* tool, Body&& body
   try {
     return body();
   } catch (const std::exception& error) {
-    std::fprintf(stderr, "%s: error: %s\n", tool, error.what());
+    print_error(tool, error.what());
     return 1;
   }
 }

@@ -314,7 +314,7 @@ int main(int argc, char** argv) {
     try {
       return run(options, app);
     } catch (const capture::UsageError& error) {
-      std::fprintf(stderr, "liquid_capture: error: %s\n", error.what());
+      tools::print_error("liquid_capture", error.what());
       return 2;
     }
   });
