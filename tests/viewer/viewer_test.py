@@ -4,12 +4,15 @@ checks what the node read back at exit (--report) against the same run without t
 
   viewer_test.py MODE --viewer PATH --with-xvfb PATH --scenes DIR --scripts DIR --out DIR [--compare PATH]
                 [--viewer-arg ARG ...]
-MODE: drag | obstacle | hit3d | resize | golden | bad_reload | no_panel | paused_reset | screenshots. Every run has --validation: any validation
-message makes the viewer exit non-zero and the test fail.
+MODE: drag | obstacle | hit3d | shallow_water | camera_reset | resize | golden | bad_reload | no_panel |
+paused_reset | screenshots | overlay | panel_size | panel_drag | panel_wrap. Every run has --validation: any
+validation message makes the viewer exit non-zero and the test fail.
 """
 import argparse
 import json
+import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -90,6 +93,38 @@ def com(r):
     return r["diagnostics"]["center_of_mass"]
 
 
+def height_field_camera(domain, rest_depth):
+    """The shallow-water view's default camera (liquid::default_height_field_camera): position,
+    target, vertical field of view."""
+    target = [0.5 * domain[0], 0.5 * rest_depth, 0.5 * domain[1]]
+    elevation, distance = math.radians(50), 1.55 * max(domain)
+    position = [target[0], target[1] + distance * math.sin(elevation), target[2] + distance * math.cos(elevation)]
+    return position, target, 40.0
+
+
+def height_field_point(pixel, size, camera, level):
+    """The domain point (x, y) of the height-field view under a window pixel: where the view ray
+    meets the horizontal plane at world height `level` (domain y is world z)."""
+    position, target, fov = camera
+    forward = [t - p for t, p in zip(target, position)]
+    n = math.sqrt(sum(f * f for f in forward))
+    forward = [f / n for f in forward]
+    right = [-forward[2], 0.0, forward[0]]  # forward x (0, 1, 0)
+    n = math.sqrt(sum(r * r for r in right))
+    right = [r / n for r in right]
+    up = [right[1] * forward[2] - right[2] * forward[1], right[2] * forward[0] - right[0] * forward[2],
+          right[0] * forward[1] - right[1] * forward[0]]
+    half = math.tan(math.radians(fov) / 2)
+    nx, ny = 2 * (pixel[0] + 0.5) / size[0] - 1, 2 * (pixel[1] + 0.5) / size[1] - 1  # Vulkan: y down
+    direction = [f + nx * half * size[0] / size[1] * r - ny * half * u for f, r, u in zip(forward, right, up)]
+    s = (level - position[1]) / direction[1]
+    return position[0] + s * direction[0], position[2] + s * direction[2]
+
+
+def same_camera(a, b, tolerance=1e-4):
+    return all(abs(x - y) < tolerance for key in ("position", "target") for x, y in zip(a[key], b[key]))
+
+
 def drag(args):
     # A left drag up and to the right through the 2D dam's column (tests/viewer/drag_2d.json).
     scene = os.path.join(args.scenes, "dam_break_2d.json")
@@ -141,6 +176,58 @@ def hit3d(args):
     check(abs(distance) < 0.01 and off[0] > 0.5, f"over empty space it is in the plane through the centre: {off}")
 
 
+def shallow_water(args):
+    # The shallow-water view is a perspective height field: a left drag towards the camera through
+    # the near half of the window (tests/viewer/shallow_drag.json, from pixel y 150 to 195 of 240)
+    # pushes the liquid of the near half of the plane towards the viewer (domain +y), and a middle
+    # drag orbits the camera.
+    path = os.path.join(args.scenes, "shallow_water.json")
+    scene = json.load(open(path))
+    common = [path, "--frames", "24", "--steps-per-frame", "8", *SIZE, "--no-panel"]
+    base = run(args, "shallow_none", common)
+    dragged = run(args, "shallow_drag", [*common, "--script", os.path.join(args.scripts, "shallow_drag.json")])
+    camera = height_field_camera(scene["domain"], scene["rest_depth"])
+    check(same_camera(base["camera"], {"position": camera[0], "target": camera[1]}),
+          f"without input the camera is the scene's default: {base['camera']}")
+    # The brush slides in the horizontal plane at the height it touched the water (about the rest
+    # depth, twice it over the raised block): 5 cm of height is under 5 cm on the plane here.
+    expected = height_field_point((160, 195), (320, 240), camera, scene["rest_depth"])
+    brush = dragged["last_brush"]
+    check(abs(brush[0] - expected[0]) < 0.05 and abs(brush[1] - expected[1]) < 0.06,
+          f"the brush is where the view ray meets the water: last at {brush[:2]}, expected about {expected}")
+    check(brush[1] > 0.5, f"a drag in the near half of the window lands in the near half of the plane: y = {brush[1]:.3f}")
+    dy = com(dragged)[1] - com(base)[1]
+    check(dy > 2e-4, f"the liquid moved towards the viewer (domain +y): centre of mass moved by {dy:.5f} m")
+    check(dragged["diagnostics"]["outside_domain"] == 0, "no particle left the domain")
+    orbited = run(args, "shallow_orbit", [path, "--frames", "6", *SIZE, "--no-panel",
+                                          "--script", os.path.join(args.scripts, "orbit.json")])
+    check(not same_camera(orbited["camera"], base["camera"], 1e-2),
+          f"a middle drag orbits the camera: {base['camera']['position']} -> {orbited['camera']['position']}")
+    target_moved = max(abs(a - b) for a, b in zip(orbited["camera"]["target"], base["camera"]["target"]))
+    check(target_moved < 1e-5, "an orbit keeps the target")
+
+
+def camera_reset(args):
+    # R resets the scene and the camera: after an orbit (tests/viewer/orbit.json) the camera is
+    # the scene's again (orbit_reset.json: the same, then R), in 3D and in shallow water.
+    for name, frames in (("dam_break_3d", 8), ("shallow_water", 8)):
+        path = os.path.join(args.scenes, name + ".json")
+        common = [path, "--frames", str(frames), *SIZE, "--no-panel"]
+        orbited = run(args, name + "_orbit", [*common, "--script", os.path.join(args.scripts, "orbit.json")])
+        reset = run(args, name + "_orbit_reset", [*common, "--script", os.path.join(args.scripts, "orbit_reset.json")])
+        scene = json.load(open(path))
+        if "camera" in scene:
+            default = {"position": scene["camera"]["position"], "target": scene["camera"]["target"]}
+        else:
+            position, target, _ = height_field_camera(scene["domain"], scene["rest_depth"])
+            default = {"position": position, "target": target}
+        check(not same_camera(orbited["camera"], default, 1e-2),
+              f"{name}: the middle drag orbited the camera to {orbited['camera']['position']}")
+        check(same_camera(reset["camera"], default),
+              f"{name}: after R the camera is the scene's: {reset['camera']['position']} (default {default['position']})")
+        check(reset["steps"] < orbited["steps"], f"{name}: and the scene was reset ({reset['steps']} steps since)")
+
+
 def resize(args):
     scene = os.path.join(args.scenes, "dam_break_2d.json")
     shot = os.path.join(args.out, "resize.png")
@@ -160,18 +247,19 @@ def golden(args):
     shot = os.path.join(args.out, "viewer_dam_break_2d.png")
     # 24 steps (21.8 ms), the time of the 192 chapter-sized steps the golden was first recorded at.
     run(args, "golden", [scene, "--frames", "12", "--steps-per-frame", "2", "--width", "256", "--height", "192",
-                         "--no-panel", "--screenshot", shot])
+                         "--no-panel", "--no-overlay", "--screenshot", shot])
     result = subprocess.run([args.compare, shot, "viewer_dam_break_2d"], capture_output=True, text=True)
     print(result.stdout, result.stderr, sep="")
     check(result.returncode == 0, "the last frame matches tests/goldens/viewer_dam_break_2d.png")
 
 
-def bad_reload(args):
-    # A scene edited on disk while the viewer runs: a bad edit is reported, the old scene keeps running.
-    scene = os.path.join(args.out, "edited_2d.json")
+def run_with_bad_edit(args, name, size=SIZE):
+    """Runs the viewer on a copy of dam_break_2d that is edited badly (stiffness -1) once the
+    window is up; returns the report."""
+    scene = os.path.join(args.out, name + "_2d.json")
     shutil.copy(os.path.join(args.scenes, "dam_break_2d.json"), scene)
-    command = [args.with_xvfb, args.viewer, scene, "--frames", "60", *SIZE, "--validation", "--report",
-               os.path.join(args.out, "bad_reload.json")]
+    report = os.path.join(args.out, name + ".json")
+    command = [args.with_xvfb, args.viewer, scene, "--frames", "60", *size, "--validation", "--report", report]
     viewer = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     started = viewer.stdout.readline()  # the viewer prints its first line once the window is up
     print(started, end="")
@@ -185,8 +273,15 @@ def bad_reload(args):
     print(out, err, sep="")
     check(started.startswith("liquid_viewer: "), "the viewer started")
     check(viewer.returncode == 0, f"the viewer kept running to its last frame (exit {viewer.returncode})")
-    with open(os.path.join(args.out, "bad_reload.json")) as f:
+    with open(report) as f:
         r = json.load(f)
+    check(r["validation_messages"] == 0, "no validation message")
+    return r
+
+
+def bad_reload(args):
+    # A scene edited on disk while the viewer runs: a bad edit is reported, the old scene keeps running.
+    r = run_with_bad_edit(args, "bad_reload")
     check("stiffness" in r["scene_error"], f"the bad edit's error is shown: {r['scene_error']!r}")
     check(r["diagnostics"]["active_particles"] > 0 and r["steps"] > 0, "the old scene kept running")
 
@@ -217,7 +312,7 @@ def paused_reset(args):
     # A reset while paused (tests/viewer/pause_reset.json: Space at frame 3, R at frame 5) shows
     # the reset scene's first state, not an empty tank, though no step follows it.
     scene = os.path.join(args.scenes, "dam_break_2d.json")
-    common = [scene, *SIZE, "--no-panel"]
+    common = [scene, *SIZE, "--no-panel", "--no-overlay"]  # the liquid alone in the screenshots
     first_shot, reset_shot = os.path.join(args.out, "first.png"), os.path.join(args.out, "paused_reset.png")
     run(args, "first_frame", [*common, "--frames", "1", "--screenshot", first_shot])
     r = run(args, "paused_reset", [*common, "--frames", "9", "--screenshot", reset_shot,
@@ -250,10 +345,79 @@ def screenshots(args):
         check((width, height) == (320, 240), f"{name} is a 320 x 240 PNG")
 
 
+def overlay(args):
+    # With the panel hidden an overlay shows the scene, the frame rate, the simulated time and
+    # PAUSED when paused (tests/viewer/pause_overlay.json: Space at frame 2); it is display only,
+    # and O (--no-overlay) or the panel hide it.
+    scene = os.path.join(args.scenes, "dam_break_2d.json")
+    common = [scene, "--frames", "6", *SIZE]
+    script = ["--script", os.path.join(args.scripts, "pause_overlay.json")]
+    paused = run(args, "overlay_paused", [*common, "--no-panel", *script])
+    lines = paused["overlay"]
+    check(paused["paused"] and "PAUSED" in lines, f"paused with the panel hidden, the overlay says so: {lines}")
+    check("dam_break_2d.json" in lines, "the overlay names the scene")
+    check(any(re.fullmatch(r"\d+\.\d fps, t = \d+\.\d{3} s", line) for line in lines),
+          "the overlay shows the frame rate and the simulated time")
+    running = run(args, "overlay_running", [*common, "--no-panel"])
+    check(running["overlay"] and "PAUSED" not in running["overlay"], f"running, no PAUSED: {running['overlay']}")
+    hidden = run(args, "overlay_hidden", [*common, "--no-panel", "--no-overlay"])
+    check(hidden["overlay"] == [], "--no-overlay draws none")
+    check((hidden["steps"], hidden["time"]) == (running["steps"], running["time"]),
+          "the simulation is the same with and without the overlay")
+    with_panel = run(args, "overlay_panel", [*common, *script])
+    check(with_panel["overlay"] == [] and with_panel["panel_shown"], "with the panel shown there is no overlay")
+
+
+def panel_fits(r, name):
+    w, h, p = r["width"], r["height"], r["panel"]
+    check(p["width"] <= 0.4 * w + 0.5 and p["height"] <= h,
+          f"{name}: the panel ({p['width']:.0f} x {p['height']:.0f}) is at most 40% of the {w} x {h} window wide and not taller")
+    check(0 <= p["x"] and p["x"] + p["width"] <= w + 0.5 and 0 <= p["y"] and p["y"] + p["height"] <= h + 0.5,
+          f"{name}: it is inside the window: at ({p['x']:.0f}, {p['y']:.0f})")
+
+
+def panel_size(args):
+    # The panel is sized to the window: at most 40% of its width, never taller, inside it.
+    scene = os.path.join(args.scenes, "dam_break_2d.json")
+    for w, h in ((320, 240), (640, 480), (1024, 768)):
+        r = run(args, f"panel_{w}x{h}", [scene, "--frames", "3", "--width", str(w), "--height", str(h)])
+        check((r["width"], r["height"]) == (w, h), f"the window is {w} x {h}")
+        panel_fits(r, f"{w} x {h}")
+
+
+def panel_drag(args):
+    # The panel moves by its title bar and folds by its arrow (tests/viewer/panel_drag.json at
+    # 640 x 480: dragged 300 px left, folded, dragged 200 px down); the mouse over it does not
+    # reach the brush.
+    common = [os.path.join(args.scenes, "dam_break_2d.json"), "--frames", "22", "--width", "640", "--height", "480"]
+    start = run(args, "panel_start", [*common[:2], "3", *common[3:]])["panel"]
+    check(abs(start["x"] + start["width"] - 632) < 1 and abs(start["y"] - 8) < 1 and start["width"] > 150,
+          f"the panel starts top right (where the script grabs it): {start}")
+    moved = run(args, "panel_drag", [*common, "--script", os.path.join(args.scripts, "panel_drag.json")])
+    p = moved["panel"]
+    check(abs(p["x"] - (start["x"] - 300)) < 1 and abs(p["y"] - (start["y"] + 200)) < 1,
+          f"the title bar drags moved it by (-300, 200): from ({start['x']:.0f}, {start['y']:.0f}) to ({p['x']:.0f}, {p['y']:.0f})")
+    check(p["collapsed"], "the click on its arrow folded it (and so it could go 200 px down)")
+    check("last_brush" not in moved, "the panel kept the mouse: no brush")
+
+
+def panel_wrap(args):
+    # A long error (a bad edit of the scene, as in bad_reload) wraps to the panel's width, and the
+    # panel stays within 40% of the window.
+    r = run_with_bad_edit(args, "panel_wrap", ["--width", "640", "--height", "480"])
+    check("stiffness" in r["scene_error"], f"the bad edit's error is shown: {r['scene_error']!r}")
+    panel_fits(r, "after the error")
+    p, line = r["panel"], 13  # ImGui's default font: 13 px lines
+    check(p["message_width"] <= p["width"] and p["message_height"] >= 3 * line,
+          f"the message is wrapped: {p['message_width']:.0f} x {p['message_height']:.0f} px in a panel "
+          f"{p['width']:.0f} px wide")
+
+
 def main():
     p = argparse.ArgumentParser()
-    p.add_argument("mode", choices=["drag", "obstacle", "hit3d", "resize", "golden", "bad_reload", "no_panel",
-                                   "paused_reset", "screenshots"])
+    p.add_argument("mode", choices=["drag", "obstacle", "hit3d", "shallow_water", "camera_reset", "resize", "golden",
+                                   "bad_reload", "no_panel", "paused_reset", "screenshots", "overlay", "panel_size",
+                                   "panel_drag", "panel_wrap"])
     p.add_argument("--viewer", required=True)
     p.add_argument("--with-xvfb", required=True)
     p.add_argument("--scenes", required=True)

@@ -24,6 +24,7 @@ struct ViewerOptions {
   bool validation = false;
   bool unthrottled = false;  // MAILBOX or IMMEDIATE instead of FIFO
   bool panel = true;
+  bool overlay = true;       // the overlay while the panel is hidden
   Pacing pacing = Pacing::FixedSteps;
   int steps_per_frame = 1;
   std::optional<liquid::GridPath> grid_path;  // --3d-path; empty: LIQUID_3D_PATH or the device's best

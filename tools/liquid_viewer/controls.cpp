@@ -17,6 +17,7 @@ Action apply_key(int key, Settings& s) {
     case GLFW_KEY_F: s.fxaa = !s.fxaa; return Action::None;
     case GLFW_KEY_P: s.particles = !s.particles; return Action::None;
     case GLFW_KEY_H: s.panel = !s.panel; return Action::None;
+    case GLFW_KEY_O: s.overlay = !s.overlay; return Action::None;
     case GLFW_KEY_T:
       s.pacing = s.pacing == Pacing::FixedSteps ? Pacing::WallTime : Pacing::FixedSteps;
       return Action::None;
@@ -39,7 +40,7 @@ Action apply_key(int key, Settings& s) {
 const char* key_help() {
   return "Space      pause / resume\n"
          "N          one step (pauses)\n"
-         "R          reset the scene\n"
+         "R          reset the scene and the camera\n"
          "L, F5      reload the scene file (also automatic when it changes)\n"
          "PgDn, PgUp next / previous scene of assets/scenes\n"
          "F          FXAA on / off\n"
@@ -47,11 +48,13 @@ const char* key_help() {
          "T          pacing: fixed steps per frame / wall time\n"
          "+, -       steps per frame\n"
          "S, F12     screenshot (viewer_NNNN.png)\n"
-         "H          hide / show this panel\n"
+         "H          hide / show this panel (hidden: an overlay)\n"
+         "O          the overlay on / off\n"
          "Esc, Q     quit\n"
          "Left drag  force brush (wheel: radius)\n"
          "Right drag move the nearest obstacle\n"
-         "Middle drag orbit (3D), Shift + middle drag pan, Ctrl + wheel zoom";
+         "Middle drag orbit (3D, shallow water), Shift + middle drag pan, Ctrl + wheel zoom\n"
+         "Title bar  drag to move this panel, its arrow folds it";
 }
 
 int key_code(const std::string& name) {

@@ -14,6 +14,7 @@ struct Settings {
   bool fxaa = true;
   bool particles = false;  // 2D: particles drawn over the liquid
   bool panel = true;
+  bool overlay = true;     // the small overlay while the panel is hidden
   Pacing pacing = Pacing::FixedSteps;
   int steps_per_frame = 1;  // FixedSteps (the chapter: one step per frame)
   int max_steps_per_frame = 16;  // WallTime's cap, and the node's uniform space

@@ -1,5 +1,5 @@
 // One recorded frame: the node's steps, the renderer (and FXAA) into a graph image, the present
-// pass into the imported swapchain image, then after the graph the panel, the screenshot copy and the
+// pass into the imported swapchain image, then after the graph the panel or overlay, the screenshot copy and the
 // transition to PRESENT_SRC, from the state the graph left the image in.
 #include "tools/liquid_viewer/viewer.h"
 
@@ -63,7 +63,7 @@ bool Viewer::draw_frame(FrameSlot& slot, int steps, double) {
   const VkResult acquired =
       vkAcquireNextImageKHR(device, swapchain_->handle(), UINT64_MAX, slot.acquired, VK_NULL_HANDLE, &index);
   if (acquired == VK_ERROR_OUT_OF_DATE_KHR) {
-    if (settings_.panel) imgui_->skip();
+    if (imgui_frame_) imgui_->skip();
     return false;
   }
   if (acquired != VK_SUCCESS && acquired != VK_SUBOPTIMAL_KHR) VK_CHECK(acquired);
@@ -94,7 +94,7 @@ bool Viewer::draw_frame(FrameSlot& slot, int steps, double) {
   slot.submitted = true;
 
   // After the graph: the image is where its sync state says (the present pass's colour attachment).
-  if (settings_.panel) {
+  if (imgui_frame_) {
     transition(cmd, target, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, true);
     imgui_->record(cmd, index);

@@ -71,7 +71,8 @@ ImGuiLayer::ImGuiLayer(engine::vk::Context& context, GLFWwindow* window, const S
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
-  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left behind
+  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left behind: the panel's place lasts the session
+  ImGui::GetIO().ConfigWindowsMoveFromTitleBarOnly = true;  // a drag on the panel's body is a slider's
   ImGui::StyleColorsDark();
   ImGui_ImplGlfw_InitForVulkan(window, true);  // chains the window's own callbacks
   ImGui_ImplVulkan_InitInfo info{};
@@ -134,9 +135,15 @@ void ImGuiLayer::on_swapchain_recreated(const Swapchain& swapchain) {
   create_framebuffers(swapchain);
 }
 
-void ImGuiLayer::new_frame() {
+void ImGuiLayer::new_frame(const ScriptedPointer* pointer) {
   ImGui_ImplVulkan_NewFrame();
   ImGui_ImplGlfw_NewFrame();
+  if (pointer) {  // after the backend, which reads the window's pointer into the same fields
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = ImVec2(pointer->x, pointer->y);
+    for (int i = 0; i < 3; ++i) io.MouseDown[i] = pointer->down[i];
+    io.MouseWheel += pointer->wheel;
+  }
   ImGui::NewFrame();
 }
 

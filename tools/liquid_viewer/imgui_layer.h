@@ -17,6 +17,13 @@ namespace viewer {
 
 class Swapchain;
 
+// The mouse as a replayed script leaves it, for ImGui in place of the window's real pointer.
+struct ScriptedPointer {
+  float x = 0.0f, y = 0.0f;  // window pixels
+  bool down[3] = {false, false, false};  // left, right, middle (ImGui's order)
+  float wheel = 0.0f;  // clicks since the last frame
+};
+
 class ImGuiLayer {
  public:
   ImGuiLayer(engine::vk::Context& context, GLFWwindow* window, const Swapchain& swapchain);
@@ -26,8 +33,8 @@ class ImGuiLayer {
 
   // After the swapchain was recreated (device idle): new framebuffers.
   void on_swapchain_recreated(const Swapchain& swapchain);
-  // Starts a frame of ImGui calls.
-  void new_frame();
+  // Starts a frame of ImGui calls; with `pointer`, ImGui sees that mouse instead of the window's.
+  void new_frame(const ScriptedPointer* pointer = nullptr);
   // Ends the frame and records its drawing into swapchain image `index`, which must be in
   // COLOR_ATTACHMENT_OPTIMAL with its earlier writes made visible to colour-attachment access;
   // it is left there, its writes done by COLOR_ATTACHMENT_OUTPUT.

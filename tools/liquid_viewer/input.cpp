@@ -21,6 +21,14 @@ void ViewMapping::ray(glm::vec2 pixel, glm::vec3& ray_origin, glm::vec3& directi
   direction = glm::normalize(glm::vec3(far_point) / far_point.w - ray_origin);
 }
 
+glm::vec3 ViewMapping::world_to_domain(glm::vec3 world) const {
+  return height_field ? glm::vec3(world.x, world.z, 0.0f) : world;
+}
+
+glm::vec3 ViewMapping::domain_to_world(glm::vec3 point) const {
+  return height_field ? glm::vec3(point.x, water_level, point.y) : point;
+}
+
 OrbitCamera OrbitCamera::from(const liquid::CameraView& view) {
   OrbitCamera c;
   c.target = view.target;
@@ -38,20 +46,27 @@ liquid::CameraView OrbitCamera::view() const {
 }
 
 glm::vec3 MouseTools::point_on_drag_plane(const ViewMapping& mapping, glm::vec2 pixel) const {
-  if (mapping.dimension == 2) return mapping.to_domain(pixel);
-  glm::vec3 origin, direction, centre_origin, normal;
+  if (!mapping.perspective()) return mapping.to_domain(pixel);
+  glm::vec3 origin, direction, normal;
   mapping.ray(pixel, origin, direction);
-  mapping.ray(0.5f * mapping.size, centre_origin, normal);  // the view direction
+  if (mapping.height_field) {
+    normal = {0.0f, 1.0f, 0.0f};  // the brush slides over the water, at the height it touched
+  } else {
+    glm::vec3 centre_origin;
+    mapping.ray(0.5f * mapping.size, centre_origin, normal);  // the view direction
+  }
   const float along = glm::dot(normal, direction);
-  if (std::abs(along) < 1e-6f) return anchor_;
-  return origin + direction * (glm::dot(anchor_ - origin, normal) / along);
+  const float t = std::abs(along) < 1e-6f ? -1.0f : glm::dot(anchor_ - origin, normal) / along;
+  // A ray parallel to the plane, or meeting it behind the camera (above the horizon), keeps the anchor.
+  if (t < 0.0f) return mapping.world_to_domain(anchor_);
+  return mapping.world_to_domain(origin + direction * t);
 }
 
 bool MouseTools::handle(const InputEvent& e, const ViewMapping& mapping, OrbitCamera& camera) {
   switch (e.type) {
     case InputEvent::Type::Move: {
       const glm::vec2 p{e.x, e.y};
-      if (middle_ && mapping.dimension == 3) {
+      if (middle_ && mapping.perspective()) {
         const glm::vec2 d = p - middle_last_;
         if (middle_mods_ & GLFW_MOD_SHIFT) {
           const liquid::CameraView v = camera.view();
@@ -82,11 +97,11 @@ bool MouseTools::handle(const InputEvent& e, const ViewMapping& mapping, OrbitCa
         left_ = down;
         last_brush_.reset();
         smoothed_velocity_ = glm::vec3(0.0f);
-        if (down && mapping.dimension == 3) {
+        if (down && mapping.perspective()) {
           glm::vec3 origin, direction;
           mapping.ray(cursor_, origin, direction);
           const std::optional<glm::vec3> hit = surface_hit ? surface_hit(origin, direction) : std::nullopt;
-          anchor_ = hit ? *hit : 0.5f * mapping.domain;
+          anchor_ = hit ? *hit : mapping.domain_to_world(0.5f * mapping.domain);
         }
         return true;
       }
@@ -104,12 +119,12 @@ bool MouseTools::handle(const InputEvent& e, const ViewMapping& mapping, OrbitCa
       float best = std::numeric_limits<float>::max();
       for (size_t i = 0; i < centers.size(); ++i) {
         float distance = 0.0f;
-        if (mapping.dimension == 2) {
+        if (!mapping.perspective()) {
           distance = glm::length(glm::vec2(centers[i]) - glm::vec2(mapping.to_domain(cursor_)));
         } else {
           glm::vec3 origin, direction;
           mapping.ray(cursor_, origin, direction);
-          const glm::vec3 to = centers[i] - origin;
+          const glm::vec3 to = mapping.domain_to_world(centers[i]) - origin;
           distance = glm::length(to - direction * glm::dot(to, direction));
         }
         if (distance < best) {
@@ -118,7 +133,7 @@ bool MouseTools::handle(const InputEvent& e, const ViewMapping& mapping, OrbitCa
         }
       }
       if (picked_) {
-        anchor_ = centers[*picked_];
+        anchor_ = mapping.domain_to_world(centers[*picked_]);
         pick_offset_ = centers[*picked_] - point_on_drag_plane(mapping, cursor_);
       }
       return true;

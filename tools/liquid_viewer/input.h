@@ -28,19 +28,30 @@ struct InputEvent {
   uint32_t width = 0, height = 0;  // Resize
 };
 
-// How window pixels map to the scene: the 2D view's fitted layout, or the 3D camera's matrix.
+// How window pixels map to the scene: the 2D view's fitted layout, or the camera's matrix for the
+// 3D view and for shallow water's height field (a 2D simulation drawn in perspective: domain
+// (x, y) is the world point (x, height, y) on the ground plane, up = world y).
 struct ViewMapping {
   int dimension = 2;
+  bool height_field = false;     // 2D shallow water, seen through the camera
   glm::vec2 size{1.0f};          // framebuffer pixels
-  glm::vec2 origin{0.0f};        // 2D: pixel of the domain's bottom-left corner
-  float pixels_per_metre = 1.0f; // 2D
-  glm::mat4 inverse_view_projection{1.0f};  // 3D
+  glm::vec2 origin{0.0f};        // flat 2D: pixel of the domain's bottom-left corner
+  float pixels_per_metre = 1.0f; // flat 2D
+  glm::mat4 inverse_view_projection{1.0f};  // 3D and height field
   glm::vec3 domain{1.0f};
+  float water_level = 0.0f;      // height field: world y of the water at rest
 
-  // 2D: the domain point under the pixel (z = 0).
+  // Whether the view is a camera's (3D or height field): rays, orbiting.
+  bool perspective() const { return dimension == 3 || height_field; }
+  // Flat 2D: the domain point under the pixel (z = 0).
   glm::vec3 to_domain(glm::vec2 pixel) const;
-  // 3D: the view ray through the pixel (origin on the near plane, unit direction).
+  // Perspective: the view ray through the pixel in world space (origin on the near plane, unit
+  // direction).
   void ray(glm::vec2 pixel, glm::vec3& origin, glm::vec3& direction) const;
+  // Between the domain's coordinates and the view's world (the same but for the height field;
+  // there a domain point is placed at the water's rest level).
+  glm::vec3 world_to_domain(glm::vec3 world) const;
+  glm::vec3 domain_to_world(glm::vec3 point) const;
 };
 
 // An orbiting camera around a target (the 3D view's).
@@ -69,8 +80,9 @@ class MouseTools {
   float brush_strength = 20.0f;  // 1/s: acceleration per drag speed
   float max_acceleration = 300.0f;  // m/s^2
 
-  // Left press in 3D: where the ray meets the liquid (set by the viewer from the density), or
-  // nothing when it misses (the plane through the domain centre is used).
+  // Left press in a perspective view: where the ray (world space) meets the liquid (set by the
+  // viewer from the density), or nothing when it misses (3D: the plane through the domain centre
+  // is used; height field: the water's rest level).
   std::function<std::optional<glm::vec3>(glm::vec3 origin, glm::vec3 direction)> surface_hit;
   // Obstacle centres now, for picking with the right button.
   std::function<std::vector<glm::vec3>()> obstacle_centers;
@@ -89,7 +101,8 @@ class MouseTools {
   bool left_ = false, right_ = false, middle_ = false;
   int middle_mods_ = 0;
   glm::vec2 middle_last_{0.0f};
-  // The drag plane (3D): through `anchor_`, facing the camera.
+  // The drag plane, in world space: 3D, through `anchor_` facing the camera; height field, the
+  // horizontal plane through `anchor_`.
   glm::vec3 anchor_{0.0f};
   std::optional<glm::vec3> last_brush_;
   glm::vec3 smoothed_velocity_{0.0f};

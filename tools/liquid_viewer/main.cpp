@@ -40,6 +40,8 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"steps", "wall"}));
   app.add_flag("--unthrottled", o.unthrottled, "present with MAILBOX or IMMEDIATE instead of FIFO");
   app.add_flag("--no-panel", [&](int64_t) { o.panel = false; }, "start with the debug panel hidden");
+  app.add_flag("--no-overlay", [&](int64_t) { o.overlay = false; },
+               "start without the overlay shown while the panel is hidden (O toggles it)");
   app.add_flag("--validation", o.validation, "enable the Vulkan validation layer (any message fails the run)");
   std::string grid_path;
   tools::add_grid_path_option(app, grid_path);

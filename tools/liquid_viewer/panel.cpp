@@ -6,6 +6,8 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <exception>
 
 namespace viewer {
@@ -38,21 +40,61 @@ void live_parameters(liquid::LiquidNode& node) {
   if (changed) node.set_runtime_parameters(p);
 }
 
+const ImVec4 k_error_colour(1.0f, 0.4f, 0.3f, 1.0f);
+
+// An error in colour, wrapped to the panel's width; its laid-out size goes into `rect`.
+void error_text(const std::string& text, PanelRect& rect) {
+  ImGui::PushStyleColor(ImGuiCol_Text, k_error_colour);
+  ImGui::TextWrapped("%s", text.c_str());
+  ImGui::PopStyleColor();
+  rect.message_width = ImGui::GetItemRectSize().x;
+  rect.message_height = ImGui::GetItemRectSize().y;
+}
+
+// Keeps a row of widgets inside a narrow panel: the next one goes on this line only if it fits
+// (a button: its label and padding; `extra`: what else it has, a check box's box).
+void same_line_if_fits(const char* next_label, float extra = 0.0f) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float right = ImGui::GetItemRectMax().x + style.ItemSpacing.x + ImGui::CalcTextSize(next_label).x +
+                      2.0f * style.FramePadding.x + extra;
+  if (right <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) ImGui::SameLine();
+}
+
 }  // namespace
 
 PanelRequest draw_panel(Settings& s, MouseTools& mouse, liquid::LiquidNode& node, const Stats& stats,
                         const std::vector<std::filesystem::path>& scenes, const std::filesystem::path& current) {
   PanelRequest request;
-  // Top right: the scenes' liquid starts on the left.
-  ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 8, 8), ImGuiCond_Always, ImVec2(1, 0));
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const float margin = 8.0f;
+  const float width = std::min(k_panel_max_width_fraction * display.x, 26.0f * ImGui::GetFontSize());
+  // First shown top right (the scenes' liquid starts on the left); after that where it was dragged.
+  ImGui::SetNextWindowPos(ImVec2(display.x - margin, margin), ImGuiCond_FirstUseEver, ImVec2(1, 0));
+  // The width is fixed (the text wraps to it); the height follows the content up to the window's.
+  ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, std::max(display.y - 2.0f * margin, 1.0f)));
   ImGui::SetNextWindowBgAlpha(0.8f);
-  ImGui::Begin("liquid_viewer", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-  ImGui::Text("%.1f fps (%.1f ms), %ux%u, %s", stats.fps, stats.frame_ms, stats.width, stats.height,
-              stats.present_mode.c_str());
-  ImGui::Text("t = %.3f s, step %d, %d steps this frame", node.time(), node.step_count(), stats.steps_this_frame);
-  if (s.pacing == Pacing::WallTime) ImGui::Text("lag behind wall time: %.3f s", stats.lag);
-  if (!stats.scene_error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "reload failed: %s", stats.scene_error.c_str());
-  if (!stats.simulation_error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", stats.simulation_error.c_str());
+  const bool open = ImGui::Begin("liquid_viewer", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  // Back inside the window when the window shrank or the panel was dragged past an edge.
+  const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  const ImVec2 inside(std::clamp(pos.x, 0.0f, std::max(display.x - size.x, 0.0f)),
+                      std::clamp(pos.y, 0.0f, std::max(display.y - size.y, 0.0f)));
+  if (inside.x != pos.x || inside.y != pos.y) ImGui::SetWindowPos(inside);
+  request.rect = {inside.x, inside.y, size.x, size.y, ImGui::IsWindowCollapsed()};
+  if (!open) {  // collapsed: the title bar only
+    ImGui::End();
+    return request;
+  }
+  // Half the width for a slider, half for its label (ImGui's default leaves a narrow panel's
+  // labels clipped).
+  ImGui::PushItemWidth(0.5f * ImGui::GetContentRegionAvail().x);
+  ImGui::TextWrapped("%.1f fps (%.1f ms), %ux%u, %s", stats.fps, stats.frame_ms, stats.width, stats.height,
+                     stats.present_mode.c_str());
+  ImGui::TextWrapped("t = %.3f s, step %d, %d steps this frame", node.time(), node.step_count(),
+                     stats.steps_this_frame);
+  if (s.paused) ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.2f, 1.0f), "PAUSED");
+  if (s.pacing == Pacing::WallTime) ImGui::TextWrapped("lag behind wall time: %.3f s", stats.lag);
+  if (!stats.scene_error.empty()) error_text("reload failed: " + stats.scene_error, request.rect);
+  if (!stats.simulation_error.empty()) error_text(stats.simulation_error, request.rect);
   if (!stats.status.empty()) ImGui::TextWrapped("%s", stats.status.c_str());
 
   if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) {
@@ -63,24 +105,24 @@ PanelRequest draw_panel(Settings& s, MouseTools& mouse, liquid::LiquidNode& node
       ImGui::EndCombo();
     }
     if (ImGui::Button(s.paused ? "resume" : "pause")) s.paused = !s.paused;
-    ImGui::SameLine();
+    same_line_if_fits("step");
     if (ImGui::Button("step")) s.paused = s.step_once = true;
-    ImGui::SameLine();
+    same_line_if_fits("reset");
     if (ImGui::Button("reset")) request.action = Action::Reset;
-    ImGui::SameLine();
+    same_line_if_fits("reload");
     if (ImGui::Button("reload")) request.action = Action::Reload;
-    ImGui::SameLine();
+    same_line_if_fits("shot");
     if (ImGui::Button("shot")) request.action = Action::Screenshot;
     ImGui::Checkbox("FXAA", &s.fxaa);
     if (node.dimension() == 2) {
-      ImGui::SameLine();
+      same_line_if_fits("particles", ImGui::GetFrameHeight());
       ImGui::Checkbox("particles", &s.particles);
     }
   }
   if (ImGui::CollapsingHeader("Pacing and parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
     int pacing = int(s.pacing);
     ImGui::RadioButton("steps per frame", &pacing, int(Pacing::FixedSteps));
-    ImGui::SameLine();
+    same_line_if_fits("wall time", ImGui::GetFrameHeight());
     ImGui::RadioButton("wall time", &pacing, int(Pacing::WallTime));
     s.pacing = Pacing(pacing);
     if (s.pacing == Pacing::FixedSteps) ImGui::SliderInt("steps/frame", &s.steps_per_frame, 1, s.max_steps_per_frame);
@@ -91,21 +133,71 @@ PanelRequest draw_panel(Settings& s, MouseTools& mouse, liquid::LiquidNode& node
   }
   if (ImGui::CollapsingHeader("Diagnostics", ImGuiTreeNodeFlags_DefaultOpen) && stats.diagnostics) {
     const liquid::Diagnostics& d = *stats.diagnostics;
-    ImGui::Text("particles %d (outside %d, in obstacles %d)", d.active_particles, d.outside_domain, d.inside_obstacles);
-    ImGui::Text("max rho/rho0 %.3f, max speed %.2f m/s", d.max_density_ratio, d.max_speed);
-    ImGui::Text("kinetic %.4g J, mechanical %.4g J", d.kinetic_energy, d.mechanical_energy);
+    ImGui::TextWrapped("particles %d (outside %d, in obstacles %d)", d.active_particles, d.outside_domain,
+                       d.inside_obstacles);
+    ImGui::TextWrapped("max rho/rho0 %.3f, max speed %.2f m/s", d.max_density_ratio, d.max_speed);
+    ImGui::TextWrapped("kinetic %.4g J, mechanical %.4g J", d.kinetic_energy, d.mechanical_energy);
   }
-  if (ImGui::CollapsingHeader("GPU time per pass (ms)", ImGuiTreeNodeFlags_DefaultOpen)) {
+  if (ImGui::CollapsingHeader("GPU time per pass (ms)", ImGuiTreeNodeFlags_DefaultOpen) &&
+      ImGui::BeginTable("passes", 2, ImGuiTableFlags_SizingStretchProp)) {
+    // Names take what the milliseconds leave (clipped on a narrow panel).
+    ImGui::TableSetupColumn("pass", ImGuiTableColumnFlags_WidthStretch);
+    ImGui::TableSetupColumn("ms", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("00000.000").x);
     double total = 0.0;
+    const auto row = [](const char* name, double ms) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(name);
+      ImGui::TableNextColumn();
+      ImGui::Text("%9.3f", ms);
+    };
     for (const auto& p : stats.passes) {
-      ImGui::Text("%-28s %8.3f", p.name.c_str(), p.milliseconds);
+      row(p.name.c_str(), p.milliseconds);
       total += p.milliseconds;
     }
-    ImGui::Text("%-28s %8.3f", "total", total);
+    row("total", total);
+    ImGui::EndTable();
   }
-  if (ImGui::CollapsingHeader("Keys")) ImGui::TextUnformatted(key_help());
+  if (ImGui::CollapsingHeader("Keys", ImGuiTreeNodeFlags_DefaultOpen)) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextUnformatted(key_help());
+    ImGui::PopTextWrapPos();
+  }
+  ImGui::PopItemWidth();
   ImGui::End();
   return request;
+}
+
+std::vector<std::string> draw_overlay(const Settings& s, const liquid::LiquidNode& node, const Stats& stats,
+                                      const std::filesystem::path& current) {
+  std::vector<std::string> lines;
+  lines.push_back(current.filename().string());
+  char line[96];
+  std::snprintf(line, sizeof line, "%.1f fps, t = %.3f s", stats.fps, node.time());
+  lines.push_back(line);
+  if (s.paused) lines.push_back("PAUSED");
+  if (!stats.scene_error.empty()) lines.push_back("reload failed (H shows why)");
+  if (!stats.simulation_error.empty()) lines.push_back("unstable (H shows why)");
+  lines.push_back("H: panel and keys");
+
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(8.0f, 8.0f), ImGuiCond_Always);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f),
+                                      ImVec2(k_panel_max_width_fraction * display.x, std::max(display.y - 16.0f, 1.0f)));
+  ImGui::SetNextWindowBgAlpha(0.5f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                                 ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoSavedSettings |
+                                 ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+  if (ImGui::Begin("##overlay", nullptr, flags)) {
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + k_panel_max_width_fraction * display.x - 16.0f);
+    for (const std::string& text : lines) {
+      if (text == "PAUSED") ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.2f, 1.0f), "%s", text.c_str());
+      else ImGui::TextUnformatted(text.c_str());
+    }
+    ImGui::PopTextWrapPos();
+  }
+  ImGui::End();
+  return lines;
 }
 
 }  // namespace viewer

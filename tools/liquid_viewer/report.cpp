@@ -1,6 +1,7 @@
 // --report PATH: the final state as JSON, for the tests (what the node read back, not what was
 // drawn): frames, steps, the swapchain, the diagnostics with the centre of mass, the obstacles'
-// centres, the last brush position and the validation message count.
+// centres, the last brush position, the camera, where the panel was last drawn, the overlay's
+// lines in the last frame and the validation message count.
 #include "tools/liquid_viewer/viewer.h"
 
 #include "liquid/analysis/diagnostics.h"
@@ -39,6 +40,16 @@ void Viewer::write_report(const std::filesystem::path& path) {
   r["paused"] = settings_.paused;
   r["stability_error"] = stats_.simulation_error;  // what paused the run, if the check did
   if (last_brush_) r["last_brush"] = vec(*last_brush_);
+  const liquid::CameraView camera = session_->camera_view();
+  r["camera"] = {{"position", vec(camera.position)}, {"target", vec(camera.target)},
+                 {"fov_y_degrees", camera.fov_y_degrees}};
+  r["panel_shown"] = settings_.panel;
+  if (panel_rect_) {
+    const PanelRect& p = *panel_rect_;
+    r["panel"] = {{"x", p.x}, {"y", p.y}, {"width", p.width}, {"height", p.height}, {"collapsed", p.collapsed},
+                  {"message_width", p.message_width}, {"message_height", p.message_height}};
+  }
+  r["overlay"] = overlay_lines_;
   nlohmann::json passes = nlohmann::json::object();  // GPU ms of the last timed frame, by pass
   for (const auto& p : stats_.passes) passes[p.name] = p.milliseconds;
   r["gpu_ms"] = passes;

@@ -7,6 +7,8 @@
 //    {"frame": 60, "type": "scroll", "delta": 1, "ctrl": true},
 //    {"frame": 70, "type": "resize", "width": 320, "height": 200}]
 // A press or release happens at the cursor of the last move.
+// From the first mouse event on, the panel sees the script's mouse instead of the window's, as it
+// stands when each frame's events are done (a press and its release in one frame are no click to it).
 #pragma once
 
 #include "tools/liquid_viewer/input.h"

@@ -1,5 +1,6 @@
 #include "tools/liquid_viewer/session.h"
 
+#include "liquid/physics/setup.h"
 #include "liquid/render/view2d.h"
 #include "liquid/solver/simulation.h"
 
@@ -60,10 +61,8 @@ void Session::set_view(uint32_t width, uint32_t height, bool fxaa, bool particle
 
 void Session::reset() {
   const auto parameters = node_->runtime_parameters();
-  const OrbitCamera camera = camera_;
-  create(scene_);
+  create(scene_);  // the camera too goes back to the scene's
   node_->set_runtime_parameters(parameters);
-  camera_ = camera;
 }
 
 std::optional<std::string> Session::reload() {
@@ -84,18 +83,22 @@ ViewMapping Session::mapping() const {
   ViewMapping m;
   m.dimension = node_->dimension();
   m.size = {float(view_.width), float(view_.height)};
-  m.domain = node_->simulation().setup().domain;
-  if (m.dimension == 2) {
+  const liquid::SimulationSetup& setup = node_->simulation().setup();
+  m.domain = setup.domain;
+  m.height_field = setup.shallow_water;
+  m.water_level = setup.rest_depth;
+  if (m.perspective()) {
+    m.inverse_view_projection = glm::inverse(renderer_->view_projection(camera_.view()));
+  } else {
     const liquid::View2dLayout layout = liquid::fit_view2d(glm::vec2(m.domain), view_.width, view_.height);
     m.origin = layout.origin;
     m.pixels_per_metre = layout.pixels_per_metre;
-  } else {
-    m.inverse_view_projection = glm::inverse(renderer_->view_projection(camera_.view()));
   }
   return m;
 }
 
 std::optional<glm::vec3> Session::surface_hit(glm::vec3 origin, glm::vec3 direction) {
+  if (node_->simulation().setup().shallow_water) return height_field_hit(origin, direction);
   const liquid::SimulationSetup& s = node_->simulation().setup();
   const glm::vec3 domain = s.domain;
   // The ray's stretch inside the domain box (slab test).
@@ -119,6 +122,37 @@ std::optional<glm::vec3> Session::surface_hit(glm::vec3 origin, glm::vec3 direct
     const glm::vec3 p = origin + t * direction;
     const glm::ivec3 c = glm::clamp(glm::ivec3(glm::floor(p / s.cell_size)), glm::ivec3(0), n - 1);
     if (ratio[size_t(c.x) + size_t(n.x) * (size_t(c.y) + size_t(n.y) * size_t(c.z))] >= 0.5f) return p;
+  }
+  return std::nullopt;
+}
+
+std::optional<glm::vec3> Session::height_field_hit(glm::vec3 origin, glm::vec3 direction) {
+  const liquid::SimulationSetup& s = node_->simulation().setup();
+  const glm::ivec2 n(s.grid_cells.x, s.grid_cells.y);
+  const std::vector<float> ratio = node_->read_density_ratio();
+  if (ratio.size() < size_t(n.x) * size_t(n.y)) return std::nullopt;
+  // The surface the view draws over domain point (x, y): the ground plus the water's depth there.
+  const auto surface = [&](glm::vec2 p) {
+    const glm::ivec2 c = glm::clamp(glm::ivec2(glm::floor(p / s.cell_size)), glm::ivec2(0), n - 1);
+    return liquid::ground_height(scene_, p) + s.rest_depth * ratio[size_t(c.x) + size_t(n.x) * size_t(c.y)];
+  };
+  // The ray's stretch over the plane (world x and z inside the domain), marched in half cells
+  // until it first goes below the surface.
+  float t0 = 0.0f, t1 = 1e30f;
+  for (int a : {0, 2}) {
+    const float extent = a == 0 ? s.domain.x : s.domain.y;
+    if (std::abs(direction[a]) < 1e-9f) {
+      if (origin[a] < 0.0f || origin[a] > extent) return std::nullopt;
+      continue;
+    }
+    float ta = -origin[a] / direction[a], tb = (extent - origin[a]) / direction[a];
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+  }
+  for (float t = t0; t <= t1; t += 0.5f * s.cell_size) {
+    const glm::vec3 p = origin + t * direction;
+    if (p.y <= surface({p.x, p.z})) return p;
   }
   return std::nullopt;
 }

@@ -36,7 +36,8 @@ class Session {
   bool needs_view(uint32_t width, uint32_t height, bool fxaa, bool particles) const;
   // (Re)creates the renderer for this size and these switches (the device must be idle).
   void set_view(uint32_t width, uint32_t height, bool fxaa, bool particles);
-  // Back to the scene's first step (the device must be idle); keeps the live parameters.
+  // Back to the scene's first step and its default camera (the device must be idle); keeps the
+  // live parameters.
   void reset();
   // Reloads the file (the device must be idle). On failure the running scene stays and the
   // error is returned (also kept in error()).
@@ -48,11 +49,13 @@ class Session {
   // The view's pixel mapping at the renderer's size.
   ViewMapping mapping() const;
   liquid::CameraView camera_view() const { return camera_.view(); }
-  // 3D: where a view ray first meets the liquid (rho/rho0 >= 0.5 in the density read back now;
-  // no frame of the node may be in flight), or nothing.
+  // Where a view ray (world space) first meets the liquid, from the density read back now (no
+  // frame of the node may be in flight), or nothing: 3D, rho/rho0 >= 0.5; shallow water, the
+  // height field's surface (ground plus water depth), in the view's world.
   std::optional<glm::vec3> surface_hit(glm::vec3 origin, glm::vec3 direction);
 
  private:
+  std::optional<glm::vec3> height_field_hit(glm::vec3 origin, glm::vec3 direction);
   void create(const liquid::Scene& scene);
   std::filesystem::file_time_type stamp() const;
 

@@ -45,6 +45,7 @@ Viewer::Viewer(const ViewerOptions& options)
   surface_ = window_.create_surface(context_->instance());
   swapchain_ = std::make_unique<Swapchain>(*context_, surface_, options.unthrottled);
   settings_.panel = options.panel;
+  settings_.overlay = options.overlay;
   settings_.pacing = options.pacing;
   settings_.steps_per_frame = std::clamp(options.steps_per_frame, 1, settings_.max_steps_per_frame);
   session_ = std::make_unique<Session>(*context_, options.scene, k_frames_in_flight, settings_.max_steps_per_frame,
@@ -99,10 +100,42 @@ void Viewer::handle(const InputEvent& e, bool from_window) {
     perform(apply_key(e.key, settings_));
     return;
   }
-  // The panel takes the mouse over its window; a release always reaches the tools (no stuck drag).
-  const bool over_panel = from_window && settings_.panel && imgui_->wants_mouse();
+  if (!from_window) follow_script_pointer(e);
+  // The panel takes the mouse over its window (the window's, or a script's once it moves the
+  // mouse); a release always reaches the tools (no stuck drag).
+  const bool panel_sees_it = from_window || script_pointer_;
+  const bool over_panel = panel_sees_it && settings_.panel && imgui_->wants_mouse();
   if (over_panel && e.type != InputEvent::Type::Release && e.type != InputEvent::Type::Move) return;
   mouse_.handle(e, session_->mapping(), session_->camera());
+}
+
+void Viewer::follow_script_pointer(const InputEvent& e) {
+  if (e.type != InputEvent::Type::Move && e.type != InputEvent::Type::Press && e.type != InputEvent::Type::Release &&
+      e.type != InputEvent::Type::Scroll)
+    return;
+  ScriptedPointer& p = script_pointer_ ? *script_pointer_ : script_pointer_.emplace();
+  p.x = e.x;
+  p.y = e.y;
+  if (e.type == InputEvent::Type::Scroll) p.wheel += e.scroll;
+  if (e.type == InputEvent::Type::Press || e.type == InputEvent::Type::Release)
+    p.down[e.button == MouseButton::Left ? 0 : e.button == MouseButton::Right ? 1 : 2] =
+        e.type == InputEvent::Type::Press;
+}
+
+bool Viewer::draw_ui() {
+  overlay_lines_.clear();
+  if (!settings_.panel && !settings_.overlay) return false;
+  imgui_->new_frame(script_pointer_ ? &*script_pointer_ : nullptr);
+  if (script_pointer_) script_pointer_->wheel = 0.0f;
+  if (!settings_.panel) {
+    overlay_lines_ = draw_overlay(settings_, session_->node(), stats_, session_->path());
+    return true;
+  }
+  const PanelRequest request = draw_panel(settings_, mouse_, session_->node(), stats_, scenes_, session_->path());
+  panel_rect_ = request.rect;
+  if (request.open_scene) open(*request.open_scene);
+  perform(request.action);
+  return true;
 }
 
 std::filesystem::path Viewer::next_screenshot_path() {
@@ -230,12 +263,7 @@ int Viewer::run() {
       wait_all();
       session_->set_view(extent.width, extent.height, settings_.fxaa, settings_.particles);
     }
-    if (settings_.panel) {
-      imgui_->new_frame();
-      const PanelRequest request = draw_panel(settings_, mouse_, session_->node(), stats_, scenes_, session_->path());
-      if (request.open_scene) open(*request.open_scene);
-      perform(request.action);
-    }
+    imgui_frame_ = draw_ui();
     FrameSlot& slot = *slots_[size_t(drawn_frames_) % k_frames_in_flight];
     slot.wait();
     read_timings(slot);

@@ -35,6 +35,9 @@ class Viewer {
  private:
   // viewer.cpp
   void handle(const InputEvent& event, bool from_window);
+  void follow_script_pointer(const InputEvent& event);
+  // ImGui's frame: the panel, or the overlay while it is hidden; false when neither is drawn.
+  bool draw_ui();
   void perform(Action action);
   void open(const std::filesystem::path& scene);
   void wait_all();
@@ -77,6 +80,11 @@ class Viewer {
   double last_frame_time_ = 0.0;
   int fps_frames_ = 0;
   std::optional<glm::vec3> last_brush_;  // for the report
+  // A script's mouse, which the panel sees in a replayed run (from the script's first mouse event).
+  std::optional<ScriptedPointer> script_pointer_;
+  bool imgui_frame_ = false;  // this frame draws ImGui (the panel or the overlay)
+  std::optional<PanelRect> panel_rect_;     // where the panel was last drawn (for the report)
+  std::vector<std::string> overlay_lines_;  // what the overlay showed this frame (for the report)
 };
 
 }  // namespace viewer
