@@ -254,19 +254,22 @@ void check_time_step(const Scene& scene, const SimulationSetup& setup) {
 
 }  // namespace
 
-double longest_side(const Scene& scene) {
+double longest_side(glm::vec3 domain, int dimension) {
   double longest = 0.0;
-  for (int a = 0; a < scene.dimension; ++a) longest = std::max(longest, double(scene.domain[a]));
+  for (int a = 0; a < dimension; ++a) longest = std::max(longest, double(domain[a]));
   return longest;
 }
 
 int longest_axis_cells(const Scene& scene) {
   if (scene.grid_resolution) return *scene.grid_resolution;
-  const double cells = std::round(longest_side(scene) / (k_default_spacings_per_cell * scene.particle_spacing));
+  const double cells =
+      std::round(longest_side(scene.domain, scene.dimension) / (k_default_spacings_per_cell * scene.particle_spacing));
   return int(std::clamp(cells, double(k_min_grid_cells), 1e9));
 }
 
-double scene_cell_size(const Scene& scene) { return longest_side(scene) / longest_axis_cells(scene); }
+double scene_cell_size(const Scene& scene) {
+  return longest_side(scene.domain, scene.dimension) / longest_axis_cells(scene);
+}
 
 PressureLaw pressure_law(const Scene& scene) {
   if (scene.mode == SimulationMode::ShallowWater) return {glm::length(scene.gravity) * scene.rest_depth, 1.0f};

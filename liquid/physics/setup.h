@@ -69,8 +69,9 @@ inline constexpr double k_default_spacings_per_cell = 2.0;
 int longest_axis_cells(const Scene& scene);
 inline constexpr int k_min_grid_cells = 8;
 
-// The longest side of the scene's domain (as written, before snapping to whole cells), m.
-double longest_side(const Scene& scene);
+// The longest of a domain's first `dimension` sides, m (a scene's as written, or a setup's snapped
+// to whole cells).
+double longest_side(glm::vec3 domain, int dimension);
 
 // The cell size h the setup gives the scene, m: the longest side over longest_axis_cells.
 double scene_cell_size(const Scene& scene);

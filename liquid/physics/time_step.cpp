@@ -8,17 +8,17 @@ namespace liquid {
 namespace {
 
 // The long steps' CFL numbers were measured with a kernel of 3 cells.
+double kernel_scale(double kernel_radius_cells) { return kernel_radius_cells / 3.0; }
+
 double regime_acoustic_cfl(bool long_steps, double kernel_radius_cells) {
-  return long_steps ? k_acoustic_cfl_smoothed * kernel_radius_cells / 3.0 : k_acoustic_cfl_chapter;
+  return long_steps ? k_acoustic_cfl_smoothed * kernel_scale(kernel_radius_cells) : k_acoustic_cfl_chapter;
 }
 
-double kernel_scale(const SimulationSetup& setup) { return setup.kernel_radius_cells / 3.0; }
+// The speed of sound at rest density, sqrt(k gamma), m/s.
+double rest_sound(double stiffness, double gamma) { return std::sqrt(std::max(stiffness, 0.0) * gamma); }
 
-double longest_side(const SimulationSetup& setup) {
-  double longest = 0.0;
-  for (int a = 0; a < setup.dimension; ++a) longest = std::max(longest, double(setup.domain[a]));
-  return longest;
-}
+// sqrt(2 |g| L): a fall from rest across a side of length L, m/s.
+double fall_speed(double gravity, double longest) { return std::sqrt(2.0 * gravity * longest); }
 
 // The velocity CFL a default step keeps to when there is no sound to bound it (AdaptiveTimeStep's).
 constexpr double k_default_velocity_cfl = 0.4;
@@ -30,7 +30,8 @@ double regime_acoustic_cfl(const SimulationSetup& setup) {
 }
 
 double stable_acoustic_cfl(const SimulationSetup& setup) {
-  return setup.long_steps ? k_acoustic_cfl_smoothed_stable * kernel_scale(setup) : k_max_acoustic_cfl_chapter;
+  return setup.long_steps ? k_acoustic_cfl_smoothed_stable * kernel_scale(setup.kernel_radius_cells)
+                          : k_max_acoustic_cfl_chapter;
 }
 
 double speed_of_sound(const SimulationSetup& setup, double density_ratio) {
@@ -39,17 +40,17 @@ double speed_of_sound(const SimulationSetup& setup, double density_ratio) {
 }
 
 double fall_speed(const SimulationSetup& setup) {
-  return std::sqrt(2.0 * glm::length(setup.gravity) * longest_side(setup));
+  return fall_speed(glm::length(setup.gravity), longest_side(setup.domain, setup.dimension));
 }
 
 double scene_time_step(const Scene& scene) {
   if (scene.time_step > 0.0f) return scene.time_step;
   const double h = scene_cell_size(scene);
   const PressureLaw law = pressure_law(scene);
-  const double sound = std::sqrt(double(law.stiffness) * law.gamma);
+  const double sound = rest_sound(law.stiffness, law.gamma);
   if (sound > 0.0)
     return std::min(regime_acoustic_cfl(long_step_regime(scene), scene.kernel_radius_cells) * h / sound, k_max_time_step);
-  const double fall = std::sqrt(2.0 * glm::length(scene.gravity) * longest_side(scene));
+  const double fall = fall_speed(glm::length(scene.gravity), longest_side(scene.domain, scene.dimension));
   return fall > 0.0 ? std::min(k_default_velocity_cfl * h / fall, k_max_time_step) : k_max_time_step;
 }
 
@@ -60,11 +61,11 @@ double largest_stable_time_step(const SimulationSetup& setup) {
 
 RuntimeParameterRange runtime_parameter_range(const SimulationSetup& setup, double time_step, float stiffness,
                                               glm::vec3 gravity) {
-  const double longest = longest_side(setup);
+  const double longest = longest_side(setup.domain, setup.dimension);
   const double k = std::max(double(stiffness), 0.0), g = glm::length(gravity);
   // The fastest signal the step may carry: sound plus the flow, within the stable acoustic CFL.
   const double signal = stable_acoustic_cfl(setup) * setup.cell_size / time_step;
-  const double sound = std::sqrt(k * setup.gamma), fall = std::sqrt(2.0 * g * longest);
+  const double sound = rest_sound(k, setup.gamma), fall = fall_speed(g, longest);
   RuntimeParameterRange r;
   const double left_for_fall = std::max(signal - sound, 0.0);
   r.max_gravity = float(std::min(k_max_hydrostatic_ratio * k, 0.5 * left_for_fall * left_for_fall) / longest);

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
-#include <iterator>
 #include <stdexcept>
 #include <type_traits>
 
@@ -65,6 +64,20 @@ class Reader {
 
 }  // namespace
 
+std::string read_sized_file(const std::filesystem::path& path, std::uintmax_t max_bytes, const std::string& kind) {
+  std::error_code error;
+  const bool regular = std::filesystem::is_regular_file(path, error);
+  const std::uintmax_t size = regular ? std::filesystem::file_size(path, error) : 0;
+  if (!regular || error || size > max_bytes)
+    throw std::runtime_error(path.string() + ": not a " + kind + " (not a regular file of at most " +
+                             std::to_string(max_bytes >> 20) + " MiB)");
+  std::ifstream file(path, std::ios::binary);
+  std::string bytes(size_t(size), '\0');
+  file.read(bytes.data(), std::streamsize(bytes.size()));
+  if (!file) throw std::runtime_error(path.string() + ": cannot read the " + kind);
+  return bytes;
+}
+
 uint64_t fingerprint(std::string_view text) {
   uint64_t hash = 14695981039346656037ull;
   for (const unsigned char c : text) hash = (hash ^ c) * 1099511628211ull;
@@ -99,15 +112,8 @@ CaptureCheckpoint load_checkpoint(const std::filesystem::path& path) {
   std::error_code error;
   if (!std::filesystem::exists(path, error))
     throw std::runtime_error(path.string() + ": no checkpoint to resume from (was --checkpoint-every given?)");
-  // Sized before it is read: a checkpoint is a regular file no larger than its particle textures
-  // at the largest the solver takes, plus the table.
-  const auto size = std::filesystem::is_regular_file(path, error) ? std::filesystem::file_size(path, error) : 0;
-  if (!std::filesystem::is_regular_file(path, error) || size > k_max_checkpoint_bytes)
-    throw std::runtime_error(path.string() + ": not a checkpoint (not a regular file of at most " +
-                             std::to_string(k_max_checkpoint_bytes >> 20) + " MiB)");
-  std::ifstream file(path, std::ios::binary);
-  std::string bytes(std::istreambuf_iterator<char>(file), {});
-  if (!file.eof() && !file) throw std::runtime_error(path.string() + ": cannot read the checkpoint");
+  // No larger than its particle textures at the largest the solver takes, plus the table.
+  const std::string bytes = read_sized_file(path, k_max_checkpoint_bytes, "checkpoint");
   Reader r(bytes, path.string());
   char magic[8];
   for (char& m : magic) m = r.get<char>();

@@ -24,6 +24,11 @@ void save_checkpoint(const std::filesystem::path& path, const CaptureCheckpoint&
 // Throws std::runtime_error naming the path when the file is missing, truncated or not a checkpoint.
 CaptureCheckpoint load_checkpoint(const std::filesystem::path& path);
 
+// A file a resume reads back (checkpoint.bin, capture.json), sized before it is read: it must be a
+// regular file of at most `max_bytes`, else "PATH: not a KIND (not a regular file of at most N
+// MiB)", so an oversized file or a link to /dev/zero is refused without being read.
+std::string read_sized_file(const std::filesystem::path& path, std::uintmax_t max_bytes, const std::string& kind);
+
 // FNV-1a, 64 bits: a fingerprint against damage and mix-ups, not a security measure.
 uint64_t fingerprint(std::string_view text);
 

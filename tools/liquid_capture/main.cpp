@@ -111,14 +111,7 @@ std::string read_record(const fs::path& path) {
   std::error_code error;
   if (!fs::exists(path, error))
     throw std::runtime_error(path.parent_path().string() + ": not a capture folder (no " + path.filename().string() + ")");
-  const auto size = fs::is_regular_file(path, error) ? fs::file_size(path, error) : 0;
-  if (!fs::is_regular_file(path, error) || error || size > capture::k_max_record_bytes)
-    throw std::runtime_error(path.string() + ": not a capture's record (not a regular file of at most " +
-                             std::to_string(capture::k_max_record_bytes >> 20) + " MiB)");
-  std::ifstream file(path, std::ios::binary);
-  std::string text(size_t(size), '\0');
-  file.read(text.data(), std::streamsize(text.size()));
-  if (!file) throw std::runtime_error(path.string() + ": cannot read the capture's record");
+  const std::string text = capture::read_sized_file(path, capture::k_max_record_bytes, "capture's record");
   if (liquid::json_nesting_depth(text) > capture::k_max_record_nesting)
     throw std::runtime_error(path.string() + ": not a capture's record (nested deeper than " +
                              std::to_string(capture::k_max_record_nesting) + " levels)");
