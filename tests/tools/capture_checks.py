@@ -352,7 +352,7 @@ def check_estimate():
     frame sets it (it was 40 % high when the first simulated frame was timed cold)."""
     out = os.path.join(ARGS.work, "estimate")
     shutil.rmtree(out, ignore_errors=True)
-    plan = ["small_3d", "-s", "20", "-e", "22", "--width", "96", "--height", "72", "-o", out]
+    plan = ["small_3d", "-s", "20", "-e", "22", "--width", "96", "--height", "72", "--validation", "-o", out]
     probe = run(plan + ["--dry-run"])
     line = next((l for l in probe.stdout.splitlines() if l.startswith("estimate: about ")), None)
     if line is None or " = " not in line or "startup " not in line:
