@@ -46,7 +46,8 @@ SeparableBlur::SeparableBlur(engine::vk::Context& context, const GridLayout& lay
                              const std::vector<int32_t>& specialization)
     : nearest_(context, VK_FILTER_NEAREST) {
   const GridPassShaders shaders = grid_pass_shaders(layout);
-  for (int axis = 0; axis < layout.dimension; ++axis)
+  const int axes = kind == Kind::Splat ? 2 : layout.dimension;  // the splat's z pass reads the deposit's pair
+  for (int axis = 0; axis < axes; ++axis)
     axes_.emplace_back(context, engine::vk::GraphicsPipelineDesc{
                                     .name = pass_name(kind, axis),
                                     .vertex = shaders.vertex,

@@ -17,20 +17,20 @@ namespace liquid {
 class SeparableBlur {
  public:
   enum class Kind {
-    Splat,      // (sum w u, sum w) spread unnormalised
-    Potential,  // Phi = W^T P: normalised, hydrostatic ghost cells beyond the walls
+    Splat,      // (sum w u, sum w) spread unnormalised along x and y (SeparableSplatPass runs z)
+    Potential,  // Phi = W^T P along every axis: normalised, hydrostatic ghost cells beyond the walls
   };
   SeparableBlur(engine::vk::Context& context, const GridLayout& layout, Kind kind, VkFormat format,
                 const std::vector<int32_t>& specialization);
 
   // Spreads `source` along x, then y (then z), each pass reading the other's output: source ->
   // scratch -> source (-> scratch). Both handles are advanced to their newest versions; returns the
-  // one that holds the result: scratch in 3D, source in 2D. Both must be grid images of the blur's
-  // format.
+  // one that holds the result: source after an even number of passes, scratch after an odd one.
+  // Both must be grid images of the blur's format.
   ImageHandle add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle& source,
                      ImageHandle& scratch) const;
 
-  // How many passes add_to declares: one per axis.
+  // How many passes add_to declares: one per axis it spreads.
   int passes() const { return int(axes_.size()); }
 
  private:

@@ -1,6 +1,7 @@
 #include "liquid/solver/separable_splat.h"
 
 #include "engine/passes/bindings.h"
+#include "engine/passes/fullscreen.h"
 #include "liquid/solver/uniforms.h"
 #include "liquid_shaders.h"
 
@@ -15,60 +16,107 @@ std::span<const uint32_t> deposit_vertex_shader(const GridLayout& layout) {
   return layout.path == GridPath::GeometryShader ? liquid_shaders::deposit_vert_3d_gs : liquid_shaders::deposit_vert_3d;
 }
 
+engine::vk::GraphicsPipelineDesc deposit_pipeline(const GridLayout& layout, VkFormat format,
+                                                  const std::vector<int32_t>& specialization) {
+  const bool pair = layout.dimension == 3;  // the lower and upper slices' shares
+  engine::vk::GraphicsPipelineDesc d{
+      .name = "liquid.deposit",
+      .vertex = deposit_vertex_shader(layout),
+      .geometry = layout.layered() && layout.path == GridPath::GeometryShader
+                      ? std::span<const uint32_t>(liquid_shaders::splat_geom)
+                      : std::span<const uint32_t>{},
+      .fragment = pair ? liquid_shaders::deposit_frag_3d : liquid_shaders::deposit_frag_2d,
+      .topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST,
+      .color_formats = {format},
+      .blend = {engine::vk::BlendMode::Additive},
+      .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
+                   {LIQUID_BINDING_SPLAT_POSITIONS, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT},
+                   {LIQUID_BINDING_SPLAT_VELOCITIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
+      .specialization = specialization};
+  if (pair) {
+    d.color_formats.push_back(format);
+    d.blend.push_back(engine::vk::BlendMode::Additive);
+  }
+  return d;
+}
+
+engine::vk::GraphicsPipelineDesc spread_z_pipeline(const GridLayout& layout, VkFormat format,
+                                                   const std::vector<int32_t>& specialization) {
+  const GridPassShaders shaders = grid_pass_shaders(layout);
+  return engine::vk::GraphicsPipelineDesc{
+      .name = "liquid.splat_spread_z",
+      .vertex = shaders.vertex,
+      .geometry = shaders.geometry,
+      .fragment = layout.atlas() ? liquid_shaders::splat_blur_frag_3d_atlas_z : liquid_shaders::splat_blur_frag_3d_z,
+      .color_formats = {format},
+      .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
+                   {LIQUID_BINDING_BLUR_SOURCE, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
+                   {LIQUID_BINDING_BLUR_SOURCE_UPPER, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
+      .specialization = specialization};
+}
+
 }  // namespace
 
 SeparableSplatPass::SeparableSplatPass(engine::vk::Context& context, const GridLayout& layout,
                                        VkFormat splat_format, const std::vector<int32_t>& specialization)
-    : deposit_(context,
-               engine::vk::GraphicsPipelineDesc{
-                   .name = "liquid.deposit",
-                   .vertex = deposit_vertex_shader(layout),
-                   .geometry = layout.layered() && layout.path == GridPath::GeometryShader
-                                   ? std::span<const uint32_t>(liquid_shaders::splat_geom)
-                                   : std::span<const uint32_t>{},
-                   .fragment = liquid_shaders::deposit_frag,
-                   .topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST,
-                   .color_formats = {splat_format},
-                   .blend = {engine::vk::BlendMode::Additive},
-                   .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
-                                {LIQUID_BINDING_SPLAT_POSITIONS, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT},
-                                {LIQUID_BINDING_SPLAT_VELOCITIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
-                   .specialization = specialization}),
-      spread_(context, layout, SeparableBlur::Kind::Splat, splat_format, specialization),
+    : deposit_(context, deposit_pipeline(layout, splat_format, specialization)),
+      spread_xy_(context, layout, SeparableBlur::Kind::Splat, splat_format, specialization),
       nearest_(context, VK_FILTER_NEAREST),
-      scratch_desc_(layout.image_desc(splat_format, 0)),
-      instances_(layout.dimension == 3 ? 2u : 1u) {}
+      scratch_desc_(layout.image_desc(splat_format, 0)) {
+  if (layout.dimension == 3) spread_z_.emplace(context, spread_z_pipeline(layout, splat_format, specialization));
+}
 
 ImageHandle SeparableSplatPass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
                                        const ParticleImages& particles, ImageHandle splat, int active_particles) const {
-  struct Data {
+  struct Deposit {
     engine::passes::PassBindings bindings;
-    ImageHandle deposit;
+    ImageHandle lower, upper;
   };
-  // The spread alternates between two images and must end in `splat`: with an odd number of axes
-  // the deposit goes to the scratch image, with an even number to `splat` itself.
+  struct Spread {
+    engine::passes::PassBindings bindings;
+    ImageHandle out;
+  };
+  // 2D: the deposit goes to `splat`, and the x and y passes take it to the scratch image and back.
+  // 3D: the deposit's two grids are scratch images, the z pass writes `splat`, then x and y as in 2D.
+  const bool pair = spread_z_.has_value();
   ImageHandle scratch = graph.create_image("liquid.splat_scratch", scratch_desc_);
-  const bool odd_axes = spread_.passes() % 2 == 1;
-  ImageHandle deposit =
-      graph
-          .add_pass<Data>(
-              "liquid.deposit",
-              [&](PassBuilder& b, Data& d) {
-                d.bindings = engine::passes::PassBindings(deposit_);
-                d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
-                d.bindings.bind_image(b, LIQUID_BINDING_SPLAT_POSITIONS, particles.positions, nearest_.handle());
-                d.bindings.bind_image(b, LIQUID_BINDING_SPLAT_VELOCITIES, particles.velocities, nearest_.handle());
-                d.deposit = b.write(odd_axes ? scratch : splat, Access::ColorAttachmentBlend,
-                                    engine::graph::clear_to(0, 0, 0, 0));
-              },
-              [this, active_particles](PassContext& ctx, const Data& d) {
-                if (active_particles == 0) return;
-                d.bindings.bind_and_push(ctx);
-                vkCmdDraw(ctx.cmd, uint32_t(active_particles), instances_, 0, 0);
-              })
-          .deposit;
-  if (odd_axes) return spread_.add_to(graph, uniforms, deposit, splat);
-  return spread_.add_to(graph, uniforms, deposit, scratch);
+  const ImageHandle upper = pair ? graph.create_image("liquid.splat_upper", scratch_desc_) : ImageHandle{};
+  const Deposit& deposit = graph.add_pass<Deposit>(
+      "liquid.deposit",
+      [&](PassBuilder& b, Deposit& d) {
+        d.bindings = engine::passes::PassBindings(deposit_);
+        d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
+        d.bindings.bind_image(b, LIQUID_BINDING_SPLAT_POSITIONS, particles.positions, nearest_.handle());
+        d.bindings.bind_image(b, LIQUID_BINDING_SPLAT_VELOCITIES, particles.velocities, nearest_.handle());
+        d.lower = b.write(pair ? scratch : splat, Access::ColorAttachmentBlend, engine::graph::clear_to(0, 0, 0, 0));
+        if (pair) d.upper = b.write(upper, Access::ColorAttachmentBlend, engine::graph::clear_to(0, 0, 0, 0));
+      },
+      [active_particles](PassContext& ctx, const Deposit& d) {
+        if (active_particles == 0) return;
+        d.bindings.bind_and_push(ctx);
+        vkCmdDraw(ctx.cmd, uint32_t(active_particles), 1, 0, 0);
+      });
+  ImageHandle spread_source = deposit.lower;
+  if (pair) {
+    scratch = deposit.lower;
+    spread_source = graph
+                             .add_pass<Spread>(
+                                 "liquid.splat_spread_z",
+                                 [&](PassBuilder& b, Spread& d) {
+                                   d.bindings = engine::passes::PassBindings(*spread_z_);
+                                   d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
+                                   d.bindings.bind_image(b, LIQUID_BINDING_BLUR_SOURCE, deposit.lower, nearest_.handle());
+                                   d.bindings.bind_image(b, LIQUID_BINDING_BLUR_SOURCE_UPPER, deposit.upper,
+                                                         nearest_.handle());
+                                   d.out = b.write(splat, Access::ColorAttachmentWrite);
+                                 },
+                                 [](PassContext& ctx, const Spread& d) {
+                                   d.bindings.bind_and_push(ctx);
+                                   engine::passes::draw_fullscreen(ctx.cmd, ctx.layers);
+                                 })
+                             .out;
+  }
+  return spread_xy_.add_to(graph, uniforms, spread_source, scratch);
 }
 
 }  // namespace liquid

@@ -1,13 +1,15 @@
 // The separable splat (scene key "splat": "separable"): the same grid as the chapter's splat
-// (section 3: rgb = sum w u, a = sum w), in two stages. Deposit: each active particle drawn as a
-// point of two cells (once on each of the two slices around it in 3D) that adds its bilinear
-// (trilinear) weights to the 2^d cells around it by additive blending. Spread: one full-screen pass
-// per axis with the kernel's 1D taps (separable_blur.h). The kernel becomes the product of the
-// axes' profiles (liquid/physics/kernel.h) and every particle draws 2^(d-2) points of 2 x 2 pixels
-// instead of ceil(2r)^(d-2) points of 2r x 2r: on lavapipe, where the splat's cost is per point and
-// per 4x4 block a point touches, a fraction of the chapter's (docs/physics.md, "The separable
-// splat"). Shaders: shaders/liquid/solver/deposit.vert, deposit.frag (splat.geom on the
-// geometry-shader path) and separable_blur.frag.
+// (section 3: rgb = sum w u, a = sum w) with the tensor-product kernel of liquid/physics/kernel.h,
+// in two stages, one point per particle:
+//   2D: each particle a point of 2 x 2 cells that adds its bilinear weights by additive blending,
+//       then one full-screen pass per axis with the kernel's 1D taps (separable_blur.h).
+//   3D: the same point in the slice below the particle, adding its bilinear weights to two grids,
+//       that slice's share and the upper one's; a pass along z with the taps that also adds the
+//       upper shares to their slices, then the x and y passes.
+// The chapter's splat draws a point of 2r x 2r cells per slice the kernel reaches (6 for r = 3 in
+// 3D), and on lavapipe a point's cost is mostly per point (docs/physics.md, "The separable splat").
+// Shaders: shaders/liquid/solver/deposit.vert, deposit.frag (splat.geom on the geometry-shader
+// path) and separable_blur.frag.
 #pragma once
 
 #include "engine/vk/pipeline.h"
@@ -19,6 +21,7 @@
 #include "liquid/solver/separable_blur.h"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace liquid {
@@ -35,10 +38,10 @@ class SeparableSplatPass {
 
  private:
   engine::vk::GraphicsPipeline deposit_;
-  SeparableBlur spread_;
+  std::optional<engine::vk::GraphicsPipeline> spread_z_;  // 3D: the z pass over the deposit's two grids
+  SeparableBlur spread_xy_;                               // the x and y passes
   engine::vk::Sampler nearest_;
   engine::vk::ImageDesc scratch_desc_;
-  uint32_t instances_;  // points per particle: 1 in 2D, one per slice around it in 3D
 };
 
 }  // namespace liquid

@@ -36,6 +36,7 @@
 #define LIQUID_BINDING_POTENTIAL_PRESSURE 1
 // The separable splat's and potential's passes along one axis: the grid they spread.
 #define LIQUID_BINDING_BLUR_SOURCE 1
+#define LIQUID_BINDING_BLUR_SOURCE_UPPER 2  // the 3D deposit's second grid (the z pass)
 // Particle update: the particles, the splatted grid (u for FLIP) and the grid pass's u'.
 #define LIQUID_BINDING_PARTICLE_POSITIONS 1
 #define LIQUID_BINDING_PARTICLE_VELOCITIES 2

@@ -12,14 +12,30 @@
 //     potential.frag gathers it for the point-sprite splat (W is symmetric, and with mirrored taps
 //     it stays symmetric at the walls, so the same passes are its own transpose). The rise is linear
 //     in the taps, so adding each axis's part in its own pass gives potential.frag's sum.
+//   - DEPOSIT_PAIR (the separable splat's z pass in 3D, which runs first): the deposit comes as two
+//     grids, each slice's own share and the share it holds for the slice above (deposit.vert), so
+//     the value of slice k is lower(k) + upper(k - 1).
 #ifndef GHOST_RISE
 #define GHOST_RISE 0
+#endif
+#ifndef DEPOSIT_PAIR
+#define DEPOSIT_PAIR 0
 #endif
 #extension GL_GOOGLE_include_directive : require
 #include "liquid/common.glsl"
 #include "liquid/solver/grid_fragment.glsl"
 
 layout(set = 0, binding = LIQUID_BINDING_BLUR_SOURCE) uniform GRID_SAMPLER u_source;
+#if DEPOSIT_PAIR
+layout(set = 0, binding = LIQUID_BINDING_BLUR_SOURCE_UPPER) uniform GRID_SAMPLER u_source_upper;
+
+// The deposit of cell q: its slice's own share plus the one the slice below holds for it.
+vec4 deposit_at(ivec3 q) {
+  vec4 value = fetch_grid(u_source, q);
+  if (q.z > 0) value += fetch_grid(u_source_upper, q - ivec3(0, 0, 1));
+  return value;
+}
+#endif
 
 layout(location = 0) out vec4 out_value;
 
@@ -39,7 +55,11 @@ void main() {
     float w = t * t * t;
     ivec3 q = c;
     q[AXIS] = mirror_index(c[AXIS] + j, n);
+#if DEPOSIT_PAIR
+    vec4 value = deposit_at(q);
+#else
     vec4 value = fetch_grid(u_source, q);
+#endif
 #if GHOST_RISE
     value += wall_ghost_rise_along(AXIS, c[AXIS] + j);
 #endif
