@@ -115,7 +115,7 @@ int run(const Options& o, const CompareOptions& cmp, const std::string& command_
         continue;
       }
       const fs::path work = (o.json_path.has_parent_path() ? o.json_path.parent_path() : fs::path(".")) / "viewer";
-      results.push_back(run_viewer(c, o, *display->display(), work));
+      results.push_back(run_viewer(c, o, *display, work));
       viewer_validation_messages += results.back().viewer->validation_messages;
     } else {
       results.push_back(run_configuration(context, c, o));

@@ -87,6 +87,7 @@ void print_pass_table(const std::vector<Result>& results) {
   for (const std::string& name : columns) std::printf(" %12s", short_pass_name(name).c_str());
   std::printf(" %12s\n", "sum");
   for (const Result& r : results) {
+    if (r.pass_ms.empty()) continue;  // the viewer's rows: frame rate only
     std::printf("%-34s", r.config->name.c_str());
     double sum = 0.0;
     for (const std::string& name : columns) {

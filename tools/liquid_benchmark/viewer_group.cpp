@@ -38,7 +38,7 @@ fs::path viewer_beside_benchmark() {
   return beside;
 }
 
-Result run_viewer(const Configuration& c, const Options& o, const std::string& display, const fs::path& work) {
+Result run_viewer(const Configuration& c, const Options& o, const ViewerDisplay& display, const fs::path& work) {
   const auto start = std::chrono::steady_clock::now();
   fs::create_directories(work);
   const fs::path report = work / ("viewer_" + c.scene_name + ".json");
@@ -50,7 +50,7 @@ Result run_viewer(const Configuration& c, const Options& o, const std::string& d
                                    report.string()};
   if (o.steps_per_frame != 1) argv.insert(argv.end(), {"--steps-per-frame", std::to_string(o.steps_per_frame)});
   if (o.validation) argv.push_back("--validation");
-  const int code = run_process(argv, {"DISPLAY=" + display}, log);
+  const int code = run_process(argv, {"DISPLAY=" + *display.display()}, log);
   if (code != 0)
     throw std::runtime_error(c.name + ": liquid_viewer failed (exit " + std::to_string(code) + "): " +
                              failure_line(log) + " (its output: " + log.string() + ")");
@@ -75,7 +75,7 @@ Result run_viewer(const Configuration& c, const Options& o, const std::string& d
   if (!stability_error.empty() || !simulation_error.empty())
     result.stability = stability_error.empty() ? simulation_error : stability_error;
   result.viewer = ViewerRun{.binary = o.viewer->string(),
-                            .display = display,
+                            .display = display.what(),
                             .average_fps = fps,
                             .frames = r.value("frames", 0),
                             .width = r.value("width", 0u),

@@ -33,10 +33,11 @@ class ViewerDisplay {
 std::filesystem::path viewer_beside_benchmark();
 
 // Runs `o.viewer` on the configuration's scene for its timed frames at the options' frame size
-// (with --validation when the benchmark has it) and reads its --report: the frame rate over the
+// on the display (which must have one; with --validation when the benchmark has it) and reads its
+// --report: the frame rate over the
 // frames after the first becomes the result's frame time. Its report and output go to `work`.
 // Throws with the viewer's error line when it fails.
-Result run_viewer(const Configuration& c, const Options& o, const std::string& display,
+Result run_viewer(const Configuration& c, const Options& o, const ViewerDisplay& display,
                   const std::filesystem::path& work);
 
 }  // namespace tools::benchmark
