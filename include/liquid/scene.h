@@ -43,6 +43,13 @@ enum class SplatFormat { Auto, Rgba32f, Rgba16f };
 // resting water stays at rest (docs/physics.md).
 enum class PressureForce { Chapter, SplatAdjoint };
 
+// How the particles reach the grid. PointSprite: the chapter's splat (section 3), each particle a
+// point of the kernel's diameter (once per slice it reaches in 3D) blended into the grid.
+// Separable: each particle deposited into the 2^d cells around it (bilinear weights), then spread by
+// one full-screen pass per axis with the kernel's 1D profile; far fewer blended fragments, and a
+// tensor-product kernel instead of the radial one (docs/physics.md, "The separable splat").
+enum class SplatMode { PointSprite, Separable };
+
 // A box of liquid filled with particles on a lattice of the scene's particle spacing.
 struct FluidBlock {
   glm::vec3 min{0.0f};       // m (z ignored in 2D)
@@ -148,6 +155,7 @@ struct Scene {
   float wall_margin_cells = 0.5f;   // particles are clamped this many cells inside the walls (or where they started)
   SplatFormat splat_format = SplatFormat::Auto;
   PressureForce pressure_force = PressureForce::Chapter;
+  SplatMode splat = SplatMode::PointSprite;
   float rest_depth = 0.1f;          // m, shallow water: water height where rho = rho0
   std::vector<FluidBlock> fluid_blocks;
   std::vector<Emitter> emitters;

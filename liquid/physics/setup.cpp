@@ -178,12 +178,13 @@ void fill_block(const Scene& scene, size_t index, glm::ivec3 counts, SimulationS
       }
 }
 
-// Average over sub-cell offsets of sum_p w(|x_p - x_cell| / h, r) for an infinite lattice of
-// spacing `spacing_cells` (in cells): the summed weight a cell sees inside uniform liquid.
-double lattice_weight_sum(int dimension, double spacing_cells, double radius_cells) {
+// Average over sub-cell offsets of sum_p w(x_p - x_cell) for an infinite lattice of spacing
+// `spacing_cells` (in cells), with the scene's splat kernel: the summed weight a cell sees inside
+// uniform liquid.
+double lattice_weight_sum(SplatMode mode, int dimension, double spacing_cells, double radius_cells) {
   if (radius_cells / spacing_cells > k_max_summed_lattice_ratio)
-    return kernel_integral_cells(dimension, radius_cells) / std::pow(spacing_cells, dimension);
-  const int reach = int(std::ceil(radius_cells / spacing_cells)) + 1;
+    return splat_kernel_integral_cells(mode, dimension, radius_cells) / std::pow(spacing_cells, dimension);
+  const int reach = int(std::ceil(splat_kernel_support(mode, radius_cells) / spacing_cells)) + 1;
   const int offsets_z = dimension == 3 ? k_lattice_offsets_per_axis : 1;
   double total = 0.0;
   int samples = 0;
@@ -199,7 +200,7 @@ double lattice_weight_sum(int dimension, double spacing_cells, double radius_cel
               const double dx = (kx + offset.x) * spacing_cells;
               const double dy = (ky + offset.y) * spacing_cells;
               const double dz = dimension == 3 ? (kz + offset.z) * spacing_cells : 0.0;
-              sum += kernel_weight(dx * dx + dy * dy + dz * dz, radius_cells);
+              sum += splat_kernel_weight(mode, dx, dy, dz, radius_cells);
             }
         total += sum;
         ++samples;
@@ -282,6 +283,14 @@ double kernel_integral_cells(int dimension, double radius_cells) {
   throw std::invalid_argument("kernel_integral_cells: dimension must be 2 or 3, got " + std::to_string(dimension));
 }
 
+double splat_kernel_integral_cells(SplatMode mode, int dimension, double radius_cells) {
+  if (mode == SplatMode::PointSprite) return kernel_integral_cells(dimension, radius_cells);
+  double taps = 0.0;
+  const int reach = separable_reach(radius_cells);
+  for (int j = -reach; j <= reach; ++j) taps += kernel_weight(double(j) * j, radius_cells);
+  return std::pow(taps, dimension);
+}
+
 SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
   if (scene.dimension != 2 && scene.dimension != 3)
     fail(scene, "dimension", "must be 2 or 3, got " + std::to_string(scene.dimension));
@@ -295,6 +304,7 @@ SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
   setup.pic_ratio = scene.pic_ratio;
   setup.pic_ratio_reference_step = scene.pic_ratio_reference_step.value_or(0.0f);
   setup.splat_adjoint_pressure = scene.pressure_force == PressureForce::SplatAdjoint;
+  setup.splat = scene.splat;
   setup.long_steps = long_step_regime(scene);
   setup.rest_depth = scene.rest_depth;
   const int d = scene.dimension;
@@ -338,11 +348,11 @@ SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
   setup.particle_texture = glm::ivec2(particle_texture_size(setup.capacity));
 
   const double mass = scene.density * std::pow(spacing, d);
-  const double scale = mass / (std::pow(h, d) * kernel_integral_cells(d, radius));
+  const double scale = mass / (std::pow(h, d) * splat_kernel_integral_cells(scene.splat, d, radius));
   setup.particle_mass = float(mass);
   setup.density_scale = float(scale);
   setup.rest_density = scene.rest_density ? *scene.rest_density
-                                          : float(scale * lattice_weight_sum(d, spacing / h, radius));
+                                          : float(scale * lattice_weight_sum(scene.splat, d, spacing / h, radius));
 
   const PressureLaw law = pressure_law(scene);
   setup.stiffness = law.stiffness;

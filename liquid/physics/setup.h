@@ -42,6 +42,7 @@ struct SimulationSetup {
   float pic_ratio = 0.0f;       // section 5.1's blend: 1 = PIC, 0 = FLIP (the scene's)
   float pic_ratio_reference_step = 0.0f;  // s, the step pic_ratio is given for; 0: per step (the chapter's)
   bool splat_adjoint_pressure = false;  // the scene's pressure_force is splat_adjoint
+  SplatMode splat = SplatMode::PointSprite;  // the scene's splat
   bool long_steps = false;      // long_step_regime(scene): sets the acoustic CFL (physics/time_step.h)
   float wall_margin = 0.0f;     // m, particles are kept this far from every wall (or where they started, if closer)
   std::vector<float> wall_share_beyond;  // the kernel's share beyond a wall k + 0.5 cells away (wall_coverage.h)
@@ -57,6 +58,10 @@ struct SimulationSetup {
 // Integral of w(d, r) = (1 - d^2/r^2)^3 over the plane (d = 2) or space (d = 3), r in cells:
 // pi r^2 / 4 in 2D, 64 pi r^3 / 315 in 3D.
 double kernel_integral_cells(int dimension, double radius_cells);
+
+// The integral of the scene's splat kernel (liquid/physics/kernel.h), cells^d: the radial one's
+// above, or the separable one's (sum_j b_j)^d, since each axis's profile interpolates its taps.
+double splat_kernel_integral_cells(SplatMode mode, int dimension, double radius_cells);
 
 // A scene without grid_resolution gets cells of this many particle spacings, as the shipped physical
 // scenes are built (1.5 to 2.5): the liquid, not the domain, sets the resolution. (round(N^(1/d))

@@ -53,6 +53,7 @@ double lattice_mass_beyond_wall(int dimension, double spacing_cells, double radi
 
 std::vector<float> wall_share_beyond(const Scene& scene, double spacing_cells, int size) {
   std::vector<float> table(size_t(size), 0.0f);
+  if (scene.splat == SplatMode::Separable) return table;
   const double r = scene.kernel_radius_cells;
   for (int k = 0; k < size; ++k)
     table[size_t(k)] = float(scene.pressure_force == PressureForce::SplatAdjoint

@@ -29,7 +29,10 @@ double lattice_mass_beyond_wall(int dimension, double spacing_cells, double radi
 // shaders/liquid/common.glsl; docs/physics.md, "Start-up next to a wall").
 constexpr int k_wall_samples_chapter = 16;
 
-// The table for cells k + 0.5 cells from a wall, k = 0 .. size - 1, for the scene's mode.
+// The table for cells k + 0.5 cells from a wall, k = 0 .. size - 1, for the scene's mode. The
+// separable splat needs none (all zeros): it deposits a particle near a wall with its mirror image's
+// share folded in and spreads the deposit with mirrored taps, so the walls are already the lattice
+// continued through them (shaders/liquid/solver/deposit.vert, separable_blur.frag).
 std::vector<float> wall_share_beyond(const Scene& scene, double spacing_cells, int size);
 
 }  // namespace liquid

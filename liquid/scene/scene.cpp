@@ -231,6 +231,9 @@ void read_physics(const Reader& r, const Json& doc, Scene& scene) {
                                ? PressureForce::Chapter
                                : PressureForce::SplatAdjoint;
   }
+  if (const Json* v = Reader::find(doc, "splat"))
+    scene.splat = r.choice(*v, "splat", {"point_sprite", "separable"}) == 0 ? SplatMode::PointSprite
+                                                                            : SplatMode::Separable;
   if (const Json* v = Reader::find(doc, "rest_depth")) {
     if (!shallow) r.fail("rest_depth", "only allowed in shallow_water mode");
     scene.rest_depth = float(r.number_in(*v, "rest_depth", 0.0, k_max_length, true));
@@ -269,7 +272,7 @@ Scene read_scene(const Json& doc, const std::string& source_name) {
                {"name", "dimension", "mode", "domain", "grid_resolution", "gravity", "particle_spacing", "density",
                 "rest_density", "stiffness", "gamma", "kernel_radius_cells", "pic_ratio", "pic_ratio_reference_step", "time_step", "substeps",
                 "adaptive_time_step",
-                "wall_margin_cells", "splat_format", "pressure_force", "rest_depth", "fluid_blocks", "emitters", "obstacles", "ground",
+                "wall_margin_cells", "splat_format", "pressure_force", "splat", "rest_depth", "fluid_blocks", "emitters", "obstacles", "ground",
                 "camera"});
   Scene scene;
   scene.name = std::filesystem::path(source_name).stem().string();

@@ -29,18 +29,23 @@ engine::vk::GraphicsPipelineDesc grid_pipeline(const char* name, const GridLayou
 
 }  // namespace
 
-PressurePass::PressurePass(engine::vk::Context& context, const GridLayout& layout,
+PressurePass::PressurePass(engine::vk::Context& context, const GridLayout& layout, SplatMode splat,
                            const std::vector<int32_t>& specialization)
     : pressure_(context, grid_pipeline("liquid.pressure", layout,
                                        layout.pick(liquid_shaders::pressure_frag_2d, liquid_shaders::pressure_frag_3d,
                                                    liquid_shaders::pressure_frag_3d_atlas),
                                        LIQUID_BINDING_PRESSURE_SPLAT, specialization)),
-      potential_(context, grid_pipeline("liquid.potential", layout,
-                                        layout.pick(liquid_shaders::potential_frag_2d, liquid_shaders::potential_frag_3d,
-                                                    liquid_shaders::potential_frag_3d_atlas),
-                                        LIQUID_BINDING_POTENTIAL_PRESSURE, specialization)),
       nearest_(context, VK_FILTER_NEAREST),
-      desc_(layout.image_desc(k_pressure_format, 0)) {}
+      desc_(layout.image_desc(k_pressure_format, 0)) {
+  if (splat == SplatMode::Separable)
+    spread_.emplace(context, layout, SeparableBlur::Kind::Potential, k_pressure_format, specialization);
+  else
+    potential_.emplace(context, grid_pipeline("liquid.potential", layout,
+                                              layout.pick(liquid_shaders::potential_frag_2d,
+                                                          liquid_shaders::potential_frag_3d,
+                                                          liquid_shaders::potential_frag_3d_atlas),
+                                              LIQUID_BINDING_POTENTIAL_PRESSURE, specialization));
+}
 
 ImageHandle PressurePass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
                                  ImageHandle splat, ImageHandle& pressure, ImageHandle& potential) const {
@@ -66,8 +71,11 @@ ImageHandle PressurePass::add_to(engine::graph::RenderGraph& graph, const engine
         .out;
   };
   pressure = pass("liquid.pressure", pressure_, LIQUID_BINDING_PRESSURE_SPLAT, splat, pressure);
-  potential = pass("liquid.potential", potential_, LIQUID_BINDING_POTENTIAL_PRESSURE, pressure, potential);
-  return potential;
+  if (potential_) {
+    potential = pass("liquid.potential", *potential_, LIQUID_BINDING_POTENTIAL_PRESSURE, pressure, potential);
+    return potential;
+  }
+  return spread_->add_to(graph, uniforms, pressure, potential);
 }
 
 }  // namespace liquid

@@ -2,8 +2,10 @@
 // passes before the grid pass. The first writes every cell's pressure P (pressure.frag); the second
 // smooths it with the splat's own kernel into Phi = W^T P (potential.frag), whose gradient the grid
 // pass takes instead of P's. That makes the pressure force the gradient of the liquid's internal
-// energy, which the chapter's gradient of P is not (docs/physics.md).
-// Shaders: shaders/liquid/solver/pressure.frag and potential.frag.
+// energy, which the chapter's gradient of P is not (docs/physics.md). With the separable splat the
+// smoothing is that splat's own kernel too: one pass per axis (separable_blur.h) instead of
+// potential.frag's gather over every cell within r.
+// Shaders: shaders/liquid/solver/pressure.frag, potential.frag and separable_blur.frag.
 #pragma once
 
 #include "engine/vk/image.h"
@@ -13,8 +15,10 @@
 #include "liquid/physics/setup.h"
 #include "liquid/solver/grid_layout.h"
 #include "liquid/solver/images.h"
+#include "liquid/solver/separable_blur.h"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace liquid {
@@ -24,19 +28,22 @@ constexpr VkFormat k_pressure_format = VK_FORMAT_R32_SFLOAT;
 
 class PressurePass {
  public:
-  PressurePass(engine::vk::Context& context, const GridLayout& layout, const std::vector<int32_t>& specialization);
+  PressurePass(engine::vk::Context& context, const GridLayout& layout, SplatMode splat,
+               const std::vector<int32_t>& specialization);
 
   // Grid-sized descriptions of the two intermediate images (the node creates them as transients).
   engine::vk::ImageDesc image_desc() const { return desc_; }
 
-  // Reads `splat`, writes P into `pressure` and Phi into `potential` (both handles are advanced to
-  // their new versions); returns Phi.
+  // Reads `splat`, writes P into `pressure` and smooths it into Phi (both handles are advanced to
+  // their new versions); returns Phi, which is in `potential`, or in `pressure` for the separable
+  // splat's spread in 2D (its passes alternate between the two images).
   ImageHandle add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle splat,
                      ImageHandle& pressure, ImageHandle& potential) const;
 
  private:
   engine::vk::GraphicsPipeline pressure_;
-  engine::vk::GraphicsPipeline potential_;
+  std::optional<engine::vk::GraphicsPipeline> potential_;  // the point-sprite splat's gather
+  std::optional<SeparableBlur> spread_;                     // the separable splat's passes
   engine::vk::Sampler nearest_;
   engine::vk::ImageDesc desc_;
 };

@@ -69,9 +69,12 @@ Simulation::Simulation(engine::vk::Context& context, const Scene& scene, const L
     if (format.fell_back) options.log("liquid: the device cannot blend into RGBA32F; the splat uses RGBA16F");
   }
   const std::vector<int32_t> specialization = scene_specialization(scene_, setup_);
-  splat_ = std::make_unique<SplatPass>(context, setup_, layout_, splat_format_, specialization);
+  if (setup_.splat == SplatMode::Separable)
+    separable_splat_ = std::make_unique<SeparableSplatPass>(context, layout_, splat_format_, specialization);
+  else
+    splat_ = std::make_unique<SplatPass>(context, setup_, layout_, splat_format_, specialization);
   grid_ = std::make_unique<GridPass>(context, setup_, layout_, specialization);
-  if (setup_.splat_adjoint_pressure) pressure_ = std::make_unique<PressurePass>(context, layout_, specialization);
+  if (setup_.splat_adjoint_pressure) pressure_ = std::make_unique<PressurePass>(context, layout_, setup_.splat, specialization);
   particle_update_ = std::make_unique<ParticleUpdatePass>(context, layout_, specialization);
   state_ = std::make_unique<LiquidState>(context, setup_, layout_, splat_format_);
   max_steps_per_frame_ = options.max_steps_per_frame > 0 ? options.max_steps_per_frame : scene.substeps;
@@ -155,6 +158,12 @@ Simulation::PressureImages Simulation::create_pressure_images(engine::graph::Ren
           graph.create_image("liquid.potential", pressure_->image_desc())};
 }
 
+ImageHandle Simulation::add_splat(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
+                                  const ParticleImages& particles, ImageHandle splat, int active) const {
+  if (separable_splat_) return separable_splat_->add_to(graph, slice, particles, splat, active);
+  return splat_->add_to(graph, slice, particles, splat, active);
+}
+
 GridImages Simulation::add_grid(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
                                 ImageHandle splat, const GridImages& grids, PressureImages& pressure) const {
   if (!pressure_) return grid_->add_to(graph, slice, splat, grids);
@@ -191,7 +200,7 @@ LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
     const engine::vk::UniformSlice slice = uniforms_->push(uniforms_for(step));
 
     const int cur = s.current, next = 1 - s.current;
-    splat = splat_->add_to(graph, slice, particles[cur], splat, active_);
+    splat = add_splat(graph, slice, particles[cur], splat, active_);
     grids = add_grid(graph, slice, splat, grids, pressure);
     particles[next] = particle_update_->add_to(graph, slice, particles[cur], splat, grids, particles[next],
                                                step.active_after);
@@ -212,7 +221,7 @@ LiquidImages Simulation::add_grids_to(engine::graph::RenderGraph& graph, const L
   step.brushes = brushes_;
   const engine::vk::UniformSlice slice = grid_uniforms_->push(uniforms_for(step));
   const ParticleImages particles{images.positions, images.velocities};
-  const ImageHandle splat = splat_->add_to(graph, slice, particles, images.splat, active_);
+  const ImageHandle splat = add_splat(graph, slice, particles, images.splat, active_);
   PressureImages pressure = create_pressure_images(graph);
   const GridImages grids = add_grid(graph, slice, splat, GridImages{images.grid_velocity, images.density}, pressure);
   return {images.positions, images.velocities, splat, grids.velocity, grids.density};

@@ -13,6 +13,7 @@
 #include "liquid/solver/grid.h"
 #include "liquid/solver/particle_update.h"
 #include "liquid/solver/pressure.h"
+#include "liquid/solver/separable_splat.h"
 #include "liquid/solver/splat.h"
 #include "liquid/solver/state.h"
 #include "liquid/solver/uniforms.h"
@@ -82,6 +83,9 @@ class Simulation {
   };
   PressureImages create_pressure_images(engine::graph::RenderGraph& graph) const;
   // One step's grid pass, after the splat-adjoint pressure passes when the scene uses them.
+  // The scene's splat of the first `active` particles into `splat`.
+  ImageHandle add_splat(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
+                        const ParticleImages& particles, ImageHandle splat, int active) const;
   GridImages add_grid(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice, ImageHandle splat,
                       const GridImages& grids, PressureImages& pressure) const;
   // make_uniforms() with the grid layout's atlas tiles.
@@ -95,7 +99,8 @@ class Simulation {
   GridLayout layout_;
   VkFormat splat_format_ = VK_FORMAT_UNDEFINED;
   uint32_t frames_in_flight_ = 2;
-  std::unique_ptr<SplatPass> splat_;
+  std::unique_ptr<SplatPass> splat_;                     // the scene's splat: the chapter's point sprites,
+  std::unique_ptr<SeparableSplatPass> separable_splat_;  // or the separable deposit and spread
   std::unique_ptr<GridPass> grid_;
   std::unique_ptr<PressurePass> pressure_;  // only with the splat-adjoint pressure
   std::unique_ptr<ParticleUpdatePass> particle_update_;

@@ -88,6 +88,9 @@ vec4 fetch_grid(GRID_SAMPLER s, ivec3 c) {
 #endif
 }
 
+// Index of the cell that mirrors i about the walls of an axis of n cells (-1 -> 0, n -> n - 1).
+int mirror_index(int i, int n) { return i < 0 ? -1 - i : (i >= n ? 2 * n - 1 - i : i); }
+
 // Hydrostatic ghost cells beyond the walls (splat-adjoint pressure): a cell c outside the grid
 // stands for its mirror image inside, whose pressure it takes, plus the rise of still water's
 // pressure over the distance between the two, g.n d on a wall gravity points into. Mirroring alone

@@ -34,6 +34,8 @@
 // Splat-adjoint pressure passes: the splat (pressure.frag), the cells' pressure (potential.frag).
 #define LIQUID_BINDING_PRESSURE_SPLAT 1
 #define LIQUID_BINDING_POTENTIAL_PRESSURE 1
+// The separable splat's and potential's passes along one axis: the grid they spread.
+#define LIQUID_BINDING_BLUR_SOURCE 1
 // Particle update: the particles, the splatted grid (u for FLIP) and the grid pass's u'.
 #define LIQUID_BINDING_PARTICLE_POSITIONS 1
 #define LIQUID_BINDING_PARTICLE_VELOCITIES 2

@@ -18,9 +18,6 @@ layout(set = 0, binding = LIQUID_BINDING_POTENTIAL_PRESSURE) uniform GRID_SAMPLE
 
 layout(location = 0) out float out_potential;
 
-// Index of the cell that mirrors i about the walls of an axis of n cells (-1 -> 0, n -> n - 1).
-int mirror_index(int i, int n) { return i < 0 ? -1 - i : (i >= n ? 2 * n - 1 - i : i); }
-
 void main() {
   ivec3 c;
   if (!grid_fragment_cell(c)) {

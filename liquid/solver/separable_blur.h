@@ -1,0 +1,41 @@
+// One full-screen grid pass per axis that spreads a grid with the splat kernel's 1D taps
+// (shaders/liquid/solver/separable_blur.frag): the separable splat's second stage, and the separable
+// splat's adjoint potential (with the walls' hydrostatic ghost rise, normalised).
+#pragma once
+
+#include "engine/vk/pipeline.h"
+#include "engine/vk/sampler.h"
+#include "engine/vk/uniform_arena.h"
+#include "liquid/solver/grid_layout.h"
+#include "liquid/solver/images.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace liquid {
+
+class SeparableBlur {
+ public:
+  enum class Kind {
+    Splat,      // (sum w u, sum w) spread unnormalised
+    Potential,  // Phi = W^T P: normalised, hydrostatic ghost cells beyond the walls
+  };
+  SeparableBlur(engine::vk::Context& context, const GridLayout& layout, Kind kind, VkFormat format,
+                const std::vector<int32_t>& specialization);
+
+  // Spreads `source` along x, then y (then z), each pass reading the other's output: source ->
+  // scratch -> source (-> scratch). Both handles are advanced to their newest versions; returns the
+  // one that holds the result: scratch in 3D, source in 2D. Both must be grid images of the blur's
+  // format.
+  ImageHandle add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle& source,
+                     ImageHandle& scratch) const;
+
+  // How many passes add_to declares: one per axis.
+  int passes() const { return int(axes_.size()); }
+
+ private:
+  std::vector<engine::vk::GraphicsPipeline> axes_;
+  engine::vk::Sampler nearest_;
+};
+
+}  // namespace liquid
