@@ -4,9 +4,9 @@ line cannot make.
 
   benchmark_checks.py CHECK --tool PATH --results FIXTURE --work DIR [--viewer PATH]
 
-CHECK: roundtrip | reference | alternating | live | viewer | viewer_skipped.
+CHECK: roundtrip | reference | alternating | live | splat | viewer | viewer_skipped.
 roundtrip, reference and alternating work on saved JSON (FIXTURE, a real run's output, and copies
-of it with one pass made slower): no device. live and viewer run the GPU, with --validation.
+of it with one pass made slower): no device. live, splat and viewer run the GPU, with --validation.
 No check asserts anything about real speed.
 """
 import argparse
@@ -191,6 +191,21 @@ def live(args):
           "the table has a verdict per measure")
 
 
+def splat(args):
+    # Both splat modes side by side: paper_2d_16k/sim is the chapter's point sprites, as before,
+    # and paper_2d_16k:separable/sim the separable splat's passes, from the scene key "splat".
+    json_path = os.path.join(args.work, "splat", "benchmark.json")
+    run(args, "--only", "paper_2d_16k/sim", "--only", "paper_2d_16k:separable/sim", "--quick", "--validation",
+        "-o", json_path)
+    results = {r["name"]: r for r in load(json_path)["results"]}
+    check(sorted(results) == ["paper_2d_16k/sim", "paper_2d_16k:separable/sim"], f"the two rows: {sorted(results)}")
+    plain, separable = results["paper_2d_16k/sim"], results["paper_2d_16k:separable/sim"]
+    check(plain["splat"] == "point_sprite" and "liquid.splat" in plain["gpu_ms_per_frame"]
+          and "liquid.deposit" not in plain["gpu_ms_per_frame"], "the plain name runs the chapter's point sprites")
+    check(separable["splat"] == "separable" and "liquid.deposit" in separable["gpu_ms_per_frame"]
+          and "liquid.splat" not in separable["gpu_ms_per_frame"], "the :separable row runs the separable splat")
+
+
 def viewer(args):
     # The viewer's frame rate on both dam breaks at 1024x768, as lines of the table and the JSON.
     json_path = os.path.join(args.work, "viewer", "benchmark.json")
@@ -221,7 +236,7 @@ def viewer_skipped(args):
 
 def main():
     p = argparse.ArgumentParser()
-    p.add_argument("check", choices=["roundtrip", "reference", "alternating", "live", "viewer", "viewer_skipped"])
+    p.add_argument("check", choices=["roundtrip", "reference", "alternating", "live", "splat", "viewer", "viewer_skipped"])
     p.add_argument("--tool", required=True)
     p.add_argument("--results", required=True)
     p.add_argument("--work", required=True)

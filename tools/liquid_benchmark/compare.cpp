@@ -14,6 +14,16 @@ namespace tools::benchmark {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
+const std::vector<std::string>& pipeline_order() {
+  static const std::vector<std::string> order = {
+      "liquid.splat",          "liquid.deposit",        "liquid.splat_spread_x", "liquid.splat_spread_y",
+      "liquid.splat_spread_z", "liquid.pressure",       "liquid.potential",      "liquid.potential_x",
+      "liquid.potential_y",    "liquid.potential_z",    "liquid.grid",           "liquid.particle",
+      "liquid.occupancy",      "liquid.raymarch",       "liquid.view2d",         "liquid.height_field",
+      "fxaa"};
+  return order;
+}
+
 std::string short_pass_name(const std::string& name) {
   return name.rfind("liquid.", 0) == 0 ? name.substr(7) : name;
 }
@@ -119,10 +129,8 @@ double median_of(std::vector<double> v) {
 
 // "frame" first, then the passes in pipeline order (as the pass table), unknown ones at the end.
 std::vector<std::string> measure_order(const std::map<std::string, double>& measures) {
-  const std::vector<std::string> pipeline = {"frame",           "liquid.splat",     "liquid.pressure",
-                                             "liquid.potential", "liquid.grid",      "liquid.particle",
-                                             "liquid.occupancy", "liquid.raymarch",  "liquid.view2d",
-                                             "liquid.height_field", "fxaa"};
+  std::vector<std::string> pipeline = {"frame"};
+  pipeline.insert(pipeline.end(), pipeline_order().begin(), pipeline_order().end());
   std::vector<std::string> order;
   for (const std::string& name : pipeline)
     if (measures.count(name)) order.push_back(name);

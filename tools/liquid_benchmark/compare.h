@@ -91,6 +91,11 @@ void print_comparison(const Comparison& c, const std::string& old_name, const st
 
 nlohmann::json comparison_json(const Comparison& c, const std::string& old_name, const std::string& new_name);
 
+// The passes in pipeline order, for the tables' columns and rows: the solver's (the chapter's
+// splat, or the separable splat's deposit and spreads; the pressure and potential passes; grid;
+// particle), then the views, then FXAA.
+const std::vector<std::string>& pipeline_order();
+
 // "splat" for "liquid.splat": the tables' column names.
 std::string short_pass_name(const std::string& name);
 

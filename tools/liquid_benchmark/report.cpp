@@ -66,9 +66,7 @@ void print_paper_table(const std::vector<Result>& results, const Options& o) {
 
 // Pass columns in pipeline order: the solver's three passes, then the views, then FXAA.
 std::vector<std::string> pass_columns(const std::vector<Result>& results) {
-  const std::vector<std::string> order = {"liquid.splat",     "liquid.pressure", "liquid.potential",
-                                          "liquid.grid",      "liquid.particle", "liquid.occupancy",
-                                          "liquid.raymarch",  "liquid.view2d",   "liquid.height_field", "fxaa"};
+  const std::vector<std::string>& order = pipeline_order();
   std::vector<std::string> seen;
   for (const Result& r : results)
     for (const std::string& name : r.pass_order)
