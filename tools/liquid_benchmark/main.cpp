@@ -334,7 +334,7 @@ int main(int argc, char** argv) {
     }
     if (!cmp.old_results.empty()) return compare_saved(cmp);
     if (cmp.from) return run_from_file(cmp, join_arguments(argc, argv));
-    if (cmp.baseline_binary) return run_alternating(o, cmp, argc, argv);
+    if (cmp.baseline_binary && !o.list) return run_alternating(o, cmp, argc, argv);
     return run(o, cmp, join_arguments(argc, argv));
   });
 }
