@@ -3,6 +3,7 @@
 #include "tools/liquid_benchmark/plan.h"
 
 #include "liquid/physics/setup.h"
+#include "liquid/scene/override.h"
 
 #include <algorithm>
 #include <cmath>
@@ -87,21 +88,84 @@ Configuration make_configuration(std::string name, std::string group, std::strin
   return c;
 }
 
-std::vector<Configuration> paper_configurations(const Options& o) {
+// The scene of `name` with its "splat" key set to `mode` through the scene's JSON before it is
+// read (as liquid_capture's --set does), so the reader checks the value like one in the file.
+// When this build's scenes have no such key, the chapter's point_sprite is the file as it is and
+// any other mode is nothing.
+std::optional<liquid::Scene> scene_in_splat_mode(const Options& o, const std::string& name, const std::string& mode) {
+  const std::filesystem::path file = o.scenes_dir / (name + ".json");
+  const std::string set = "splat=" + mode;
+  try {
+    return liquid::parse_scene(liquid::scene_document(file, {liquid::parse_scene_override(set)}),
+                               file.string() + " with " + set);
+  } catch (const liquid::SceneError& e) {
+    const std::string message = e.what();
+    const std::string unknown = ": splat: unknown key";
+    const bool key_unknown = message.size() >= unknown.size() &&
+                             message.compare(message.size() - unknown.size(), unknown.size(), unknown) == 0;
+    if (!key_unknown) throw;
+    if (mode == k_default_splat_mode) return load_named_scene(o, name);
+    return std::nullopt;
+  }
+}
+
+// "paper_2d_64k/sim" for the chapter's point sprites, "paper_2d_64k:separable/sim" for another mode.
+std::string paper_label(const std::string& name, const std::string& mode, Mode m) {
+  return name + (mode == k_default_splat_mode ? "" : ":" + mode) + "/" + mode_name(m);
+}
+
+std::vector<Configuration> paper_configurations(const Options& o, std::vector<Skipped>& skipped) {
   std::vector<Configuration> out;
   for (const char* name : {"paper_2d_16k", "paper_2d_32k", "paper_2d_64k", "shallow_water", "paper_3d"}) {
-    const liquid::Scene scene = load_named_scene(o, name);
-    for (Mode mode : {Mode::Simulation, Mode::SimulationAndRender}) {
-      const std::string label = std::string(name) + "/" + mode_name(mode);
-      if (scene.dimension == 2 || o.paths_3d.empty()) {
-        out.push_back(make_configuration(label, "paper", name, scene, mode, o.runs));
+    const bool paper_scene = std::string(name).rfind("paper_", 0) == 0;
+    const std::vector<std::string> modes = paper_scene ? o.splat_modes : std::vector<std::string>{""};
+    for (const std::string& splat : modes) {
+      std::optional<liquid::Scene> scene =
+          splat.empty() ? load_named_scene(o, name) : scene_in_splat_mode(o, name, splat);
+      if (!scene) {
+        const std::string reason = "this build's scenes have no \"splat\" key, so only the chapter's " +
+                                   std::string(k_default_splat_mode) + " splat runs";
+        if (o.splat_modes_given) throw std::invalid_argument("--splat-modes " + splat + ": " + reason);
+        if (std::none_of(skipped.begin(), skipped.end(), [&](const Skipped& s) { return s.name == "paper_*:" + splat; }))
+          skipped.push_back({"paper_*:" + splat, reason});
         continue;
       }
-      for (liquid::GridPath path : o.paths_3d) {  // the path as a configuration axis
-        out.push_back(make_configuration(label + "/" + liquid::grid_path_name(path), "paper", name, scene, mode, o.runs));
-        out.back().grid_path = path;
+      for (Mode mode : {Mode::Simulation, Mode::SimulationAndRender}) {
+        const std::string label = paper_label(name, splat.empty() ? k_default_splat_mode : splat, mode);
+        if (scene->dimension == 2 || o.paths_3d.empty()) {
+          out.push_back(make_configuration(label, "paper", name, *scene, mode, o.runs));
+          out.back().splat_mode = splat;
+          continue;
+        }
+        for (liquid::GridPath path : o.paths_3d) {  // the path as a configuration axis
+          out.push_back(make_configuration(label + "/" + liquid::grid_path_name(path), "paper", name, *scene, mode, o.runs));
+          out.back().grid_path = path;
+          out.back().splat_mode = splat;
+        }
       }
     }
+  }
+  return out;
+}
+
+// liquid_viewer on the dam breaks as a user opens them (the file as it is, one step per frame,
+// the panel shown): its frame rate at the benchmark's frame size.
+std::vector<Configuration> viewer_configurations(const Options& o) {
+  std::vector<Configuration> out;
+  for (const char* name : {"dam_break_2d", "dam_break_3d"}) {
+    Configuration c;
+    c.name = std::string("viewer/") + name;
+    c.group = "viewer";
+    c.scene_name = name;
+    c.scene_file = o.scenes_dir / (std::string(name) + ".json");
+    c.scene = liquid::load_scene(c.scene_file);
+    c.mode = Mode::SimulationAndRender;
+    c.timed_frames = o.viewer_frames > 0 ? o.viewer_frames : c.scene.dimension == 3 ? 20 : 60;
+    c.note = "liquid_viewer " + c.scene_file.filename().string() + ", its frame rate over the frames after the first";
+    const liquid::SimulationSetup setup = liquid::make_setup(c.scene, liquid::DeviceLimits{});
+    c.particles = setup.initial_particles;
+    c.grid = setup.grid_cells;
+    out.push_back(std::move(c));
   }
   return out;
 }
@@ -142,23 +206,36 @@ bool matches(const std::string& name, const std::string& pattern, const std::vec
 
 }  // namespace
 
-std::vector<Configuration> make_plan(const Options& o) {
+Plan make_plan(const Options& o) {
+  for (const std::string& mode : o.splat_modes)
+    if (mode.empty() || mode.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") != std::string::npos)
+      throw std::invalid_argument("--splat-modes: '" + mode + "' is not a splat mode name (lower case, digits, _)");
+  for (size_t i = 0; i < o.splat_modes.size(); ++i)
+    if (std::count(o.splat_modes.begin(), o.splat_modes.begin() + i, o.splat_modes[i]))
+      throw std::invalid_argument("--splat-modes: '" + o.splat_modes[i] + "' is given twice");
+  Plan result;
   std::vector<Configuration> all;
-  if (!o.scaling_only) all = paper_configurations(o);
+  if (!o.scaling_only) all = paper_configurations(o, result.skipped);
   if (!o.no_scaling) {
     auto scaling = scaling_configurations(o);
     all.insert(all.end(), scaling.begin(), scaling.end());
   }
+  if (o.viewer && !o.scaling_only) {
+    auto viewer = viewer_configurations(o);
+    all.insert(all.end(), viewer.begin(), viewer.end());
+  }
   for (const std::string& s : o.only)
-    if (std::none_of(all.begin(), all.end(), [&](const Configuration& c) { return matches(c.name, s, all); }))
-      throw std::invalid_argument("--only " + s + ": matches no configuration (see --list)");
+    if (std::none_of(all.begin(), all.end(), [&](const Configuration& c) { return matches(c.name, s, all); })) {
+      std::string why = "--only " + s + ": matches no configuration (see --list)";
+      for (const Skipped& k : result.skipped) why += "; skipped " + k.name + ": " + k.reason;
+      throw std::invalid_argument(why);
+    }
   std::vector<bool> keep(all.size(), o.only.empty());
   for (size_t i = 0; i < all.size(); ++i)
     for (const std::string& s : o.only) keep[i] = keep[i] || matches(all[i].name, s, all);
-  std::vector<Configuration> plan;
   for (size_t i = 0; i < all.size(); ++i)
-    if (keep[i]) plan.push_back(std::move(all[i]));
-  return plan;
+    if (keep[i]) result.configurations.push_back(std::move(all[i]));
+  return result;
 }
 
 }  // namespace tools::benchmark

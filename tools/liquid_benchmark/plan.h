@@ -37,7 +37,17 @@ struct Options {
   // --3d-path: each 3D configuration once per path, named ".../<path>"; empty: once, on the
   // device's choice.
   std::vector<liquid::GridPath> paths_3d;
+  // --splat-modes: each paper_* configuration once per splat mode (the scene's "splat" key), named
+  // "paper_2d_64k:<mode>/sim" except the chapter's point_sprite, which keeps the plain name.
+  std::vector<std::string> splat_modes = {"point_sprite", "separable"};
+  bool splat_modes_given = false;  // asked for on the command line: a mode that cannot run is an error
+  // --viewer: liquid_viewer's frame rate on the dam breaks, as configurations "viewer/<scene>".
+  std::optional<std::filesystem::path> viewer;
+  int viewer_frames = 0;  // per viewer run; 0: 60 in 2D, 20 in 3D
 };
+
+// The chapter's splat mode: the current behaviour, and a paper_* configuration's plain name.
+inline constexpr const char* k_default_splat_mode = "point_sprite";
 
 enum class Mode { Simulation, SimulationAndRender };
 
@@ -54,6 +64,18 @@ struct Configuration {
   int particles = 0;                 // active at the start (no configuration here emits)
   glm::ivec3 grid{1};
   std::optional<liquid::GridPath> grid_path;  // 3D: the path forced by --3d-path
+  std::string splat_mode;                     // paper_* rows: the splat mode it runs; else empty
+  std::filesystem::path scene_file;           // group "viewer": the file liquid_viewer opens
+};
+
+// Something the plan leaves out, and why (printed, and kept in the JSON's "skipped").
+struct Skipped {
+  std::string name, reason;
+};
+
+struct Plan {
+  std::vector<Configuration> configurations;
+  std::vector<Skipped> skipped;
 };
 
 // "sim" or "sim+render", as in the configuration names and the JSON's "mode".
@@ -66,7 +88,9 @@ std::string view_name(const Configuration& c);
 std::string grid_label(glm::ivec3 grid);
 
 // The configurations the options select, in run order; every scene is loaded and validated here,
-// before any GPU work. Throws when a scene is bad or an --only value matches nothing.
-std::vector<Configuration> make_plan(const Options& o);
+// before any GPU work. Throws when a scene is bad, an --only value matches nothing, or a splat
+// mode asked for by --splat-modes cannot run; a default splat mode this build's scenes do not
+// know is skipped instead.
+Plan make_plan(const Options& o);
 
 }  // namespace tools::benchmark

@@ -80,7 +80,10 @@ def median(stats):
 
 
 def paper_2d_chart(data, path):
-    rows = [r for r in data["results"] if r["group"] == "paper" and r["scene"].startswith("paper_2d")]
+    all_rows = [r for r in data["results"] if r["group"] == "paper" and r["scene"].startswith("paper_2d")]
+    # The chapter's point-sprite splat (no "splat" in JSON of older runs); other modes get series of their own.
+    rows = [r for r in all_rows if r.get("splat") in (None, "point_sprite")]
+    other_modes = sorted({r["splat"] for r in all_rows if r.get("splat") not in (None, "point_sprite")})
     if not rows:
         return False
     render = [r for r in rows if r["mode"] == "sim+render"]
@@ -97,6 +100,12 @@ def paper_2d_chart(data, path):
 
     series(ax, "ours: simulation + 2D view + FXAA (bar: min..max)", measured(render), "#d62728")
     series(ax, "ours: simulation only", measured(sim), "#1f77b4", "s")
+    for mode in other_modes:
+        mode_rows = [r for r in all_rows if r.get("splat") == mode]
+        series(ax, f"ours, {mode} splat: simulation + 2D view + FXAA",
+               measured([r for r in mode_rows if r["mode"] == "sim+render"]), "#ff9896", "o", (0, (5, 2)))
+        series(ax, f"ours, {mode} splat: simulation only",
+               measured([r for r in mode_rows if r["mode"] == "sim"]), "#aec7e8", "s", (0, (5, 2)))
     series(ax, "paper, Quadro 2000M: this method (sim + render)",
            [(r["particles"], r["paper"]["frame_ms"]) for r in render], "#d62728", "D", (0, (3, 2)))
     series(ax, "paper, Quadro 2000M: DX11 SDK SPH (sim + render)",

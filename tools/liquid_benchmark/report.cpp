@@ -1,6 +1,8 @@
 // The terminal tables and the JSON document of a benchmark run.
 #include "tools/liquid_benchmark/report.h"
 
+#include "tools/liquid_benchmark/compare.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -24,10 +26,6 @@ void print_plan(const std::vector<Configuration>& plan, const Options& o) {
 }
 
 namespace {
-
-std::string short_pass_name(const std::string& name) {
-  return name.rfind("liquid.", 0) == 0 ? name.substr(7) : name;
-}
 
 void print_wall_table(const std::vector<Result>& results, const Options& o) {
   std::printf("\nWall time (recording to fence, one submission per frame, %d step(s) per frame)\n", o.steps_per_frame);
@@ -68,9 +66,7 @@ void print_paper_table(const std::vector<Result>& results, const Options& o) {
 
 // Pass columns in pipeline order: the solver's three passes, then the views, then FXAA.
 std::vector<std::string> pass_columns(const std::vector<Result>& results) {
-  const std::vector<std::string> order = {"liquid.splat",     "liquid.pressure", "liquid.potential",
-                                          "liquid.grid",      "liquid.particle", "liquid.occupancy",
-                                          "liquid.raymarch",  "liquid.view2d",   "liquid.height_field", "fxaa"};
+  const std::vector<std::string>& order = pipeline_order();
   std::vector<std::string> seen;
   for (const Result& r : results)
     for (const std::string& name : r.pass_order)
@@ -89,6 +85,7 @@ void print_pass_table(const std::vector<Result>& results) {
   for (const std::string& name : columns) std::printf(" %12s", short_pass_name(name).c_str());
   std::printf(" %12s\n", "sum");
   for (const Result& r : results) {
+    if (r.pass_ms.empty()) continue;  // the viewer's rows: frame rate only
     std::printf("%-34s", r.config->name.c_str());
     double sum = 0.0;
     for (const std::string& name : columns) {
@@ -102,6 +99,24 @@ void print_pass_table(const std::vector<Result>& results) {
       std::printf(" %12.3f", ms);
     }
     std::printf(" %12.3f\n", sum);
+  }
+}
+
+void print_viewer_table(const std::vector<Result>& results) {
+  bool any = false;
+  for (const Result& r : results) any = any || r.viewer.has_value();
+  if (!any) return;
+  std::printf("\nliquid_viewer's frame rate (the window, panel shown, one step per frame by default; over the frames "
+              "after the first)\n");
+  std::printf("%-34s %8s %9s %7s %10s %12s  %s\n", "configuration", "fps", "ms/frame", "frames", "window",
+              "present", "display");
+  for (const Result& r : results) {
+    if (!r.viewer) continue;
+    const ViewerRun& v = *r.viewer;
+    const std::string window = std::to_string(v.width) + "x" + std::to_string(v.height);
+    std::printf("%-34s %8.2f %9.1f %7d %10s %12s  %s%s\n", r.config->name.c_str(), v.average_fps,
+                1000.0 / v.average_fps, v.frames, window.c_str(), v.present_mode.c_str(), v.display.c_str(),
+                r.stability == "stable" ? "" : "  UNSTABLE");
   }
 }
 
@@ -138,7 +153,14 @@ json result_json(const Result& r, const Options& o) {
             {"frame_wall_ms_samples", r.frame_ms},
             {"setup_s", r.setup_s},
             {"stability", r.stability},
-            {"note", c.note}};
+            {"note", c.note},
+            {"splat", c.splat_mode.empty() ? json(nullptr) : json(c.splat_mode)}};
+  if (r.viewer)
+    j["viewer"] = {{"binary", r.viewer->binary},         {"display", r.viewer->display},
+                   {"average_fps", r.viewer->average_fps}, {"frames", r.viewer->frames},
+                   {"width", r.viewer->width},             {"height", r.viewer->height},
+                   {"present_mode", r.viewer->present_mode},
+                   {"measure", "liquid_viewer --frames N --report: frames per second over the frames after the first"}};
   if (c.paper)
     j["paper"] = {{"fps", c.paper->fps},
                   {"frame_ms", 1000.0 / c.paper->fps},
@@ -163,6 +185,7 @@ std::string utc_now() {
 void print_tables(const std::vector<Result>& results, const Options& o) {
   print_wall_table(results, o);
   print_paper_table(results, o);
+  print_viewer_table(results);
   print_pass_table(results);
 }
 
@@ -170,6 +193,7 @@ json benchmark_json(const std::vector<Result>& results, const Options& o, const 
   const char* lp_threads = std::getenv("LP_NUM_THREADS");
   json document = {
       {"tool", "liquid_benchmark"},
+      {"kind", "results"},
       {"date", utc_now()},
       {"command", info.command_line},
       {"device", {{"name", info.device_name}, {"driver", info.driver}, {"cpu_device", info.cpu_device}}},
@@ -181,9 +205,11 @@ json benchmark_json(const std::vector<Result>& results, const Options& o, const 
       {"paper_reference", {{"source", k_paper_source}, {"device", k_paper_device},
                            {"measure", "frames per second, one solver step plus rendering per frame"}}},
       {"results", json::array()},
+      {"skipped", json::array()},
       {"wall_time_s", info.wall_time_s},
       {"validation_messages", info.validation_messages}};
   for (const Result& r : results) document["results"].push_back(result_json(r, o));
+  for (const Skipped& k : info.skipped) document["skipped"].push_back({{"name", k.name}, {"reason", k.reason}});
   return document;
 }
 

@@ -20,7 +20,7 @@ void list_plan(const std::vector<Configuration>& plan);
 void print_plan(const std::vector<Configuration>& plan, const Options& o);
 
 // The tables after a run: wall time, the comparison with the paper (sim+render rows of its
-// scenes, when any ran) and the GPU time of each pass.
+// scenes, when any ran), the viewer's frame rate (when it ran) and the GPU time of each pass.
 void print_tables(const std::vector<Result>& results, const Options& o);
 
 // What the JSON records about the run besides its results.
@@ -30,6 +30,7 @@ struct RunInfo {
   bool cpu_device = false;
   double wall_time_s = 0.0;
   uint32_t validation_messages = 0;
+  std::vector<Skipped> skipped;  // what the plan or the run left out, and why
 };
 
 // The whole JSON document: tool, date, command, device, host, settings, the paper's reference,

@@ -46,10 +46,12 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// The splat-adjoint pressure's two passes are the solver's too.
+// The splat-adjoint pressure's passes are the solver's too, and so are the separable splat's
+// deposit and spreads (and its potential's spreads).
 bool is_solver_pass(const std::string& name) {
   return name == "liquid.splat" || name == "liquid.pressure" || name == "liquid.potential" || name == "liquid.grid" ||
-         name == "liquid.particle";
+         name == "liquid.particle" || name == "liquid.deposit" || name.rfind("liquid.splat_spread_", 0) == 0 ||
+         name.rfind("liquid.potential_", 0) == 0;
 }
 
 // The node, its renderer and a frame loop, as a host engine would hold them.

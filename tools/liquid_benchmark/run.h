@@ -7,6 +7,7 @@
 #include "engine/vk/context.h"
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,16 @@ struct Stats {
 
 Stats stats_of(std::vector<double> samples);
 
+// What a run of liquid_viewer reported (the viewer group).
+struct ViewerRun {
+  std::string binary, display;
+  double average_fps = 0.0;  // over the frames after the first
+  int frames = 0;
+  uint32_t width = 0, height = 0;
+  std::string present_mode;
+  uint32_t validation_messages = 0;
+};
+
 // What one configuration measured.
 struct Result {
   const Configuration* config = nullptr;
@@ -30,6 +41,7 @@ struct Result {
   double setup_s = 0.0, total_s = 0.0;
   std::string grid_path;             // 3D: the path the node ran on; empty in 2D
   std::string stability = "stable";  // else what went wrong
+  std::optional<ViewerRun> viewer;   // group "viewer": frame_ms holds the one average frame time
 };
 
 // The figures the tables and the JSON report, derived from a result.
