@@ -82,8 +82,10 @@ TEST_CASE("dam_break_2d gives the expected particles and grid", "[setup]") {
   CHECK(setup.domain.y == Approx(76.0 / 126.0));
   CHECK(setup.particle_texture == glm::ivec2(128, 125));
   CHECK(setup.particle_mass == Approx(1000.0 * 0.0029 * 0.0029));
+  // The shipped scene uses the separable splat: its kernel's integral, (sum of the taps)^2.
+  REQUIRE(setup.splat == SplatMode::Separable);
   CHECK(setup.density_scale ==
-        Approx(setup.particle_mass / (std::pow(setup.cell_size, 2) * kernel_integral_cells(2, 3.0))));
+        Approx(setup.particle_mass / (std::pow(setup.cell_size, 2) * splat_kernel_integral_cells(SplatMode::Separable, 2, 3.0))));
   CHECK(setup.stiffness == scene.stiffness);
   CHECK(setup.gamma == scene.gamma);
   CHECK(setup.gravity == glm::vec3(0.0f, -9.81f, 0.0f));

@@ -206,6 +206,18 @@ float march_liquid(vec3 origin, vec3 dir, float t_enter, float t_exit) {
   return k_no_hit;
 }
 
+// Where the ray enters the tank already inside the liquid, the surface seen is the tank's wall
+// (its glass): the normal is that face's, not the density's gradient, which runs along the wall
+// there and lit it as a grazing reflection (white streaks where liquid meets a wall).
+vec3 box_face_normal(vec3 p) {
+  vec3 to_low = p, to_high = u.domain - p;
+  vec3 distance = min(to_low, to_high);
+  int a = distance.x < distance.y ? (distance.x < distance.z ? 0 : 2) : (distance.y < distance.z ? 1 : 2);
+  vec3 n = vec3(0.0);
+  n[a] = to_low[a] < to_high[a] ? -1.0 : 1.0;
+  return n;
+}
+
 vec3 density_normal(vec3 p) {
   float e = cell_size();
   vec3 g = vec3(density_at(p + vec3(e, 0, 0)) - density_at(p - vec3(e, 0, 0)),
@@ -268,7 +280,8 @@ void main() {
   float depth_t;
   if (t_liquid < k_no_hit) {
     vec3 p = origin + dir * t_liquid;
-    vec3 n = density_normal(p);
+    bool through_wall = span.x > 0.0 && t_liquid <= span.x + 1e-3 * cell_size();
+    vec3 n = through_wall ? box_face_normal(p) : density_normal(p);
     float cos_theta = clamp(dot(-dir, n), 0.0, 1.0);
     float fresnel = 0.02 + 0.98 * pow(1.0 - cos_theta, 5.0);  // Schlick, water F0 = 0.02
     vec3 reflected = sky(reflect(dir, n));
