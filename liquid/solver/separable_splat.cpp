@@ -2,6 +2,7 @@
 
 #include "engine/passes/bindings.h"
 #include "engine/passes/fullscreen.h"
+#include "liquid/solver/splat.h"
 #include "liquid/solver/uniforms.h"
 #include "liquid_shaders.h"
 
@@ -16,23 +17,13 @@ std::span<const uint32_t> deposit_vertex_shader(const GridLayout& layout) {
   return layout.path == GridPath::GeometryShader ? liquid_shaders::deposit_vert_3d_gs : liquid_shaders::deposit_vert_3d;
 }
 
+// In 3D two targets of the same format: the lower slice's share and the upper one's.
 engine::vk::GraphicsPipelineDesc deposit_pipeline(const GridLayout& layout, VkFormat format,
                                                   const std::vector<int32_t>& specialization) {
-  const bool pair = layout.dimension == 3;  // the lower and upper slices' shares
-  engine::vk::GraphicsPipelineDesc d{
-      .name = "liquid.deposit",
-      .vertex = deposit_vertex_shader(layout),
-      .geometry = layout.layered() && layout.path == GridPath::GeometryShader
-                      ? std::span<const uint32_t>(liquid_shaders::splat_geom)
-                      : std::span<const uint32_t>{},
-      .fragment = pair ? liquid_shaders::deposit_frag_3d : liquid_shaders::deposit_frag_2d,
-      .topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST,
-      .color_formats = {format},
-      .blend = {engine::vk::BlendMode::Additive},
-      .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
-                   {LIQUID_BINDING_SPLAT_POSITIONS, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT},
-                   {LIQUID_BINDING_SPLAT_VELOCITIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
-      .specialization = specialization};
+  const bool pair = layout.dimension == 3;
+  engine::vk::GraphicsPipelineDesc d = particle_points_pipeline(
+      "liquid.deposit", layout, deposit_vertex_shader(layout),
+      pair ? liquid_shaders::deposit_frag_3d : liquid_shaders::deposit_frag_2d, format, specialization);
   if (pair) {
     d.color_formats.push_back(format);
     d.blend.push_back(engine::vk::BlendMode::Additive);

@@ -27,23 +27,32 @@ std::span<const uint32_t> splat_vertex_shader(const GridLayout& layout) {
 
 }  // namespace
 
+engine::vk::GraphicsPipelineDesc particle_points_pipeline(const char* name, const GridLayout& layout,
+                                                          std::span<const uint32_t> vertex,
+                                                          std::span<const uint32_t> fragment, VkFormat format,
+                                                          const std::vector<int32_t>& specialization) {
+  return engine::vk::GraphicsPipelineDesc{
+      .name = name,
+      .vertex = vertex,
+      .geometry = layout.layered() && layout.path == GridPath::GeometryShader
+                      ? std::span<const uint32_t>(liquid_shaders::splat_geom)
+                      : std::span<const uint32_t>{},
+      .fragment = fragment,
+      .topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST,
+      .color_formats = {format},
+      .blend = {engine::vk::BlendMode::Additive},
+      .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
+                   {LIQUID_BINDING_SPLAT_POSITIONS, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT},
+                   {LIQUID_BINDING_SPLAT_VELOCITIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
+      .specialization = specialization};
+}
+
 SplatPass::SplatPass(engine::vk::Context& context, const SimulationSetup& setup, const GridLayout& layout,
                      VkFormat splat_format, const std::vector<int32_t>& specialization)
-    : pipeline_(context,
-                engine::vk::GraphicsPipelineDesc{
-                    .name = "liquid.splat",
-                    .vertex = splat_vertex_shader(layout),
-                    .geometry = layout.layered() && layout.path == GridPath::GeometryShader
-                                    ? std::span<const uint32_t>(liquid_shaders::splat_geom)
-                                    : std::span<const uint32_t>{},
-                    .fragment = layout.atlas() ? liquid_shaders::splat_frag_atlas : liquid_shaders::splat_frag,
-                    .topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST,
-                    .color_formats = {splat_format},
-                    .blend = {engine::vk::BlendMode::Additive},
-                    .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
-                                 {LIQUID_BINDING_SPLAT_POSITIONS, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT},
-                                 {LIQUID_BINDING_SPLAT_VELOCITIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
-                    .specialization = specialization}),
+    : pipeline_(context, particle_points_pipeline(
+                             "liquid.splat", layout, splat_vertex_shader(layout),
+                             layout.atlas() ? liquid_shaders::splat_frag_atlas : liquid_shaders::splat_frag,
+                             splat_format, specialization)),
       nearest_(context, VK_FILTER_NEAREST),
       instances_(instances_per_particle(setup)) {}
 

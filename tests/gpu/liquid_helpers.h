@@ -17,6 +17,21 @@ inline liquid::Scene shipped_scene(const std::string& name) {
   return liquid::load_scene(std::string(LIQUID_ASSET_DIR) + "/scenes/" + name + ".json");
 }
 
+// A 0.32 m box of 16 cells with no gravity and one particle at `at` moving at (0.5, -0.25, 0.125)
+// m/s: the splat tests' scene.
+inline liquid::Scene single_particle_scene(int dimension, glm::vec3 at) {
+  liquid::Scene scene;
+  scene.name = "single_particle";
+  scene.dimension = dimension;
+  scene.domain = glm::vec3(0.32f);
+  scene.grid_resolution = 16;
+  scene.particle_spacing = 0.004f;
+  scene.gravity = glm::vec3(0.0f);
+  scene.substeps = 1;
+  scene.fluid_blocks.push_back({at - glm::vec3(0.0025f), at + glm::vec3(0.0025f), glm::vec3(0.5f, -0.25f, 0.125f)});
+  return scene;
+}
+
 // Runs `steps` steps in frames of the scene's substeps; returns the last diagnostics.
 inline liquid::Diagnostics run_steps(liquid::LiquidNode& node, int steps) {
   engine::vk::Context& context = node.context();

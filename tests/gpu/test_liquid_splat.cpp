@@ -32,19 +32,6 @@ std::vector<double> analytic_weights(const liquid::SimulationSetup& s, const std
   return w;
 }
 
-liquid::Scene single_particle_scene(int dimension, glm::vec3 at) {
-  liquid::Scene scene;
-  scene.name = "single_particle";
-  scene.dimension = dimension;
-  scene.domain = glm::vec3(0.32f);
-  scene.grid_resolution = 16;
-  scene.particle_spacing = 0.004f;
-  scene.gravity = glm::vec3(0.0f);
-  scene.substeps = 1;
-  scene.fluid_blocks.push_back({at - glm::vec3(0.0025f), at + glm::vec3(0.0025f), glm::vec3(0.5f, -0.25f, 0.125f)});
-  return scene;
-}
-
 // Runs one step (its splat is of the initial positions) and compares the grid's weights with the
 // analytic sum: the relative error of the total and the worst cell's absolute error.
 struct SplatError {
@@ -80,7 +67,7 @@ void check_splat_matches(liquid::LiquidNode& node) {
 }  // namespace
 
 TEST_CASE("splat of one 2D particle is the kernel's shape with its velocity", "[gpu][liquid][splat]") {
-  liquid::LiquidNode node(test::gpu(), single_particle_scene(2, {0.1313f, 0.1777f, 0.0f}));
+  liquid::LiquidNode node(test::gpu(), test::single_particle_scene(2, {0.1313f, 0.1777f, 0.0f}));
   REQUIRE(node.active_particles() == 1);
   check_splat_matches(node);
   // rgb = w u: the velocity recovered from any covered cell is the particle's.
@@ -97,14 +84,14 @@ TEMPLATE_TEST_CASE("splat of one 3D particle reaches every slice of the kernel",
                    test::GeometryPath, test::VertexLayerPath, test::AtlasPath) {
   for (const glm::vec3 at : {glm::vec3(0.1313f, 0.1777f, 0.1522f), glm::vec3(0.3071f, 0.2953f, 0.0117f)}) {
     INFO("particle at " << at.x << ", " << at.y << ", " << at.z);
-    liquid::LiquidNode node(test::gpu_for(TestType::path), single_particle_scene(3, at), test::options_for(TestType::path));
+    liquid::LiquidNode node(test::gpu_for(TestType::path), test::single_particle_scene(3, at), test::options_for(TestType::path));
     REQUIRE(node.active_particles() == 1);
     check_splat_matches(node);
   }
 }
 
 TEST_CASE("splat of a 2D block sums every particle's kernel", "[gpu][liquid][splat]") {
-  liquid::Scene scene = single_particle_scene(2, {});
+  liquid::Scene scene = test::single_particle_scene(2, {});
   scene.fluid_blocks = {{{0.05f, 0.03f, 0.0f}, {0.17f, 0.13f, 0.0f}, {}}};
   liquid::LiquidNode node(test::gpu(), scene);
   REQUIRE(node.active_particles() > 500);
@@ -113,7 +100,7 @@ TEST_CASE("splat of a 2D block sums every particle's kernel", "[gpu][liquid][spl
 
 TEMPLATE_TEST_CASE("splat of a 3D block sums every particle's kernel", "[gpu][liquid][splat][paths]", test::GeometryPath,
                    test::VertexLayerPath, test::AtlasPath) {
-  liquid::Scene scene = single_particle_scene(3, {});
+  liquid::Scene scene = test::single_particle_scene(3, {});
   scene.particle_spacing = 0.012f;
   scene.fluid_blocks = {{{0.05f, 0.03f, 0.07f}, {0.17f, 0.13f, 0.2f}, {}}};
   liquid::LiquidNode node(test::gpu_for(TestType::path), scene, test::options_for(TestType::path));
@@ -126,7 +113,7 @@ TEST_CASE("splat into RGBA16F (the paper's format) loses a bounded share of the 
   // bits (on lavapipe, toward zero), so the summed density reads low, against 1e-4 for RGBA32F
   // (the default). The loss grows with the particles per cell: measured 5.1% for this block (about
   // 25 particles per cell); this keeps it bounded and shows the rounding is real.
-  liquid::Scene scene = single_particle_scene(2, {});
+  liquid::Scene scene = test::single_particle_scene(2, {});
   scene.fluid_blocks = {{{0.05f, 0.03f, 0.0f}, {0.17f, 0.13f, 0.0f}, {}}};
   scene.splat_format = liquid::SplatFormat::Rgba16f;
   liquid::LiquidNode node(test::gpu(), scene);

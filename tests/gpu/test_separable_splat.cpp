@@ -40,18 +40,11 @@ std::vector<double> separable_weights(const liquid::SimulationSetup& s, const st
   return w;
 }
 
+// The splat tests' scene with the separable splat, particles allowed up to the walls.
 liquid::Scene separable_scene(int dimension, glm::vec3 at) {
-  liquid::Scene scene;
-  scene.name = "separable_splat";
-  scene.dimension = dimension;
-  scene.domain = glm::vec3(0.32f);
-  scene.grid_resolution = 16;
-  scene.particle_spacing = 0.004f;
-  scene.gravity = glm::vec3(0.0f);
-  scene.substeps = 1;
+  liquid::Scene scene = test::single_particle_scene(dimension, at);
   scene.wall_margin_cells = 0.0f;
   scene.splat = liquid::SplatMode::Separable;
-  scene.fluid_blocks.push_back({at - glm::vec3(0.0025f), at + glm::vec3(0.0025f), glm::vec3(0.5f, -0.25f, 0.125f)});
   return scene;
 }
 
