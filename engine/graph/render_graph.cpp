@@ -253,6 +253,31 @@ void RenderGraph::ensure_query_pool(uint32_t count) {
   info.queryCount = std::max(count, 64u);
   VK_CHECK(vkCreateQueryPool(context_->device(), &info, nullptr, &query_pool_));
   query_capacity_ = info.queryCount;
+  timing_results_ = vk::Buffer(*context_, VkDeviceSize(query_capacity_) * 2 * sizeof(uint64_t),
+                               VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUsage::HostVisible, "graph.timings");
+}
+
+// After the last pass: the timestamps and their availability into timing_results_, made visible
+// to the host. Availability is cleared first, so a read before the submission completed shows.
+void RenderGraph::copy_out_timings(VkCommandBuffer cmd, uint32_t queries) {
+  if (queries == 0) return;
+  auto* words = static_cast<uint64_t*>(timing_results_.mapped());
+  std::fill(words, words + size_t(queries) * 2, uint64_t(0));
+  timing_results_.flush();
+  vkCmdCopyQueryPoolResults(cmd, query_pool_, 0, queries, timing_results_.handle(), 0, 2 * sizeof(uint64_t),
+                            VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WITH_AVAILABILITY_BIT | VK_QUERY_RESULT_WAIT_BIT);
+  VkBufferMemoryBarrier2 to_host{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
+  to_host.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
+  to_host.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+  to_host.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+  to_host.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+  to_host.srcQueueFamilyIndex = to_host.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  to_host.buffer = timing_results_.handle();
+  to_host.size = VK_WHOLE_SIZE;
+  VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  dependency.bufferMemoryBarrierCount = 1;
+  dependency.pBufferMemoryBarriers = &to_host;
+  vkCmdPipelineBarrier2(cmd, &dependency);
 }
 
 void RenderGraph::execute(VkCommandBuffer cmd) {
@@ -333,6 +358,8 @@ void RenderGraph::execute(VkCommandBuffer cmd) {
                          static_cast<uint32_t>(2 * p + 1));
   }
 
+  copy_out_timings(cmd, static_cast<uint32_t>(passes_.size() * 2));
+
   // Persistent images remember where this graph left them, for the next graph's barriers.
   for (size_t i = 0; i < resources_.size(); ++i)
     if (resources_[i].image) resources_[i].image->sync_state() = final_states_[i];
@@ -350,10 +377,17 @@ void RenderGraph::reset() {
 std::vector<PassTiming> RenderGraph::read_timings() const {
   std::vector<PassTiming> timings;
   if (!context_ || timed_passes_.empty()) return timings;
+  // The frame's own copy (copy_out_timings): reading it waits for nothing, so a frame slot reads
+  // its timings while other frames are in flight. Before the submission completed the copy has not
+  // run: a misuse, said so.
+  timing_results_.invalidate();
+  const auto* words = static_cast<const uint64_t*>(timing_results_.mapped());
   std::vector<uint64_t> stamps(timed_passes_.size() * 2);
-  VK_CHECK(vkGetQueryPoolResults(context_->device(), query_pool_, 0, static_cast<uint32_t>(stamps.size()),
-                                 stamps.size() * sizeof(uint64_t), stamps.data(), sizeof(uint64_t),
-                                 VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+  for (size_t q = 0; q < stamps.size(); ++q) {
+    if (words[2 * q + 1] == 0)
+      throw std::logic_error("render graph: read_timings() before the frame's submission completed (wait for its fence)");
+    stamps[q] = words[2 * q];
+  }
   const double period_ns = context_->limits().timestampPeriod;
   for (size_t p = 0; p < timed_passes_.size(); ++p)
     timings.push_back({timed_passes_[p], double(stamps[2 * p + 1] - stamps[2 * p]) * period_ns * 1e-6});

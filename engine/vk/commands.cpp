@@ -59,4 +59,12 @@ void CommandBuffer::wait() {
   pending_ = false;
 }
 
+bool CommandBuffer::finished() const {
+  if (!pending_) return true;
+  const VkResult status = vkGetFenceStatus(context_.device(), fence_);
+  if (status == VK_NOT_READY) return false;
+  VK_CHECK(status);
+  return true;
+}
+
 }  // namespace engine::vk

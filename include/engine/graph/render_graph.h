@@ -6,6 +6,7 @@
 
 #include "engine/graph/access.h"
 #include "engine/graph/plan.h"
+#include "engine/vk/buffer.h"
 #include "engine/vk/image.h"
 
 #include <vulkan/vulkan.h>
@@ -119,7 +120,9 @@ class RenderGraph {
   // Forgets passes and handles for the next frame; keeps transient images for reuse.
   void reset();
 
-  // GPU time of each pass of the last execute(); call after its submission has completed.
+  // GPU time of each pass of the last execute(); call after its submission has completed (its
+  // fence waited on; before that it throws std::logic_error). It waits for nothing, so a frame slot
+  // reads its own timings while other frames are in flight.
   std::vector<PassTiming> read_timings() const;
 
   const Plan& plan() const { return plan_; }
@@ -178,8 +181,13 @@ class RenderGraph {
     bool in_use = false;
   };
   std::vector<PooledImage> pool_;
+  void copy_out_timings(VkCommandBuffer cmd, uint32_t queries);
   VkQueryPool query_pool_ = VK_NULL_HANDLE;
   uint32_t query_capacity_ = 0;
+  // The timestamps copied out by the frame's own command buffer (value, availability per query),
+  // so read_timings() reads memory instead of asking the driver, which on lavapipe waits for the
+  // whole queue.
+  vk::Buffer timing_results_;
   std::vector<std::string> timed_passes_;
 };
 

@@ -22,6 +22,8 @@ class CommandBuffer {
   // Ends recording and submits; wait() blocks until the GPU has finished it.
   void submit();
   void wait();
+  // Whether the last submission has finished (true when nothing is pending); does not block.
+  bool finished() const;
   void submit_and_wait() {
     submit();
     wait();
