@@ -22,14 +22,22 @@ if(TARGET rasterliquids_vdb)
   export(EXPORT RasterLiquidsVdbTargets NAMESPACE RasterLiquids:: FILE "${PROJECT_BINARY_DIR}/RasterLiquidsVdbTargets.cmake")
 endif()
 
+# The shipped scenes (assets/scenes/*.json), for hosts and tools: RasterLiquids_SCENES_DIR.
+set(RASTERLIQUIDS_SCENES_DIR "${CMAKE_INSTALL_DATADIR}/rasterliquids/scenes")
+install(DIRECTORY assets/scenes/ DESTINATION ${RASTERLIQUIDS_SCENES_DIR} FILES_MATCHING PATTERN "*.json")
+
 configure_package_config_file(cmake/RasterLiquidsConfig.cmake.in
-  "${PROJECT_BINARY_DIR}/RasterLiquidsConfig.cmake" INSTALL_DESTINATION ${package_dir})
+  "${PROJECT_BINARY_DIR}/RasterLiquidsConfig.cmake" INSTALL_DESTINATION ${package_dir}
+  PATH_VARS RASTERLIQUIDS_SCENES_DIR)
 write_basic_package_version_file("${PROJECT_BINARY_DIR}/RasterLiquidsConfigVersion.cmake"
   COMPATIBILITY SameMinorVersion)
 install(FILES "${PROJECT_BINARY_DIR}/RasterLiquidsConfig.cmake" "${PROJECT_BINARY_DIR}/RasterLiquidsConfigVersion.cmake"
               cmake/EmbedShaders.cmake
         DESTINATION ${package_dir})
 
-# The build tree as a package too (find_package with RasterLiquids_DIR=<build>).
+# The build tree as a package too (find_package with RasterLiquids_DIR=<build>); its scenes are the
+# source tree's (this file is not installed).
+file(WRITE "${PROJECT_BINARY_DIR}/RasterLiquidsBuildTree.cmake"
+     "set(RasterLiquids_SCENES_DIR \"${PROJECT_SOURCE_DIR}/assets/scenes\")\n")
 export(EXPORT RasterLiquidsTargets NAMESPACE RasterLiquids:: FILE "${PROJECT_BINARY_DIR}/RasterLiquidsTargets.cmake")
 file(COPY cmake/EmbedShaders.cmake DESTINATION "${PROJECT_BINARY_DIR}")

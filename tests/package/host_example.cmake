@@ -1,5 +1,6 @@
 # Installs the build tree into a fresh prefix, builds examples/host against it with find_package,
 # runs it with the validation layer (any message fails it) and compares its last frame.
+include(GNUInstallDirs)
 set(prefix "${WORK_DIR}/prefix")
 set(example_build "${WORK_DIR}/host-build")
 set(frames "${WORK_DIR}/host-frames")
@@ -17,7 +18,12 @@ run(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}")
 run(${CMAKE_COMMAND} -S "${SOURCE_DIR}/examples/host" -B "${example_build}" -G "${GENERATOR}"
     -DCMAKE_BUILD_TYPE=Release "-DCMAKE_PREFIX_PATH=${prefix}")
 run(${CMAKE_COMMAND} --build "${example_build}")
+# The shipped scenes are installed with the package (RasterLiquids_SCENES_DIR).
+set(scene "${prefix}/${CMAKE_INSTALL_DATADIR}/rasterliquids/scenes/dam_break_3d.json")
+if(NOT EXISTS "${scene}")
+  message(FATAL_ERROR "the install holds no shipped scenes: ${scene} is missing")
+endif()
 # 8 frames of 10 steps (0.18 s) of the 3D dam break at 160x120: the front reaches the box.
-run("${example_build}/liquid_host" "${SOURCE_DIR}/assets/scenes/dam_break_3d.json" --frames 8 --steps-per-frame 10
+run("${example_build}/liquid_host" "${scene}" --frames 8 --steps-per-frame 10
     --width 160 --height 120 --out "${frames}" --validation)
 run("${COMPARE}" "${frames}/frame_0007.png" host_example)
