@@ -38,6 +38,7 @@ class RaymarchPass {
   GridLayout bricks_;  // the occupancy grid, stored like the node's grids
   engine::vk::GraphicsPipeline occupancy_;
   engine::vk::GraphicsPipeline raymarch_;
+  engine::vk::GraphicsPipeline background_;  // BACKGROUND_ONLY, for pixels whose rays miss the box; not when compositing
   engine::vk::Sampler linear_;
   engine::vk::Sampler nearest_;
   ViewUniforms uniforms_;

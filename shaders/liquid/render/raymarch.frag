@@ -22,6 +22,10 @@ layout(set = 0, binding = LIQUID_BINDING_RAYMARCH_OCCUPANCY) uniform GRID_SAMPLE
 // own; the liquid is blended over the host's colour with its coverage in alpha, and pixels that
 // show no liquid are left to the host.
 layout(constant_id = LIQUID_RAYMARCH_COMPOSITE_ID) const bool COMPOSITE = false;
+// For the pixels outside the domain box's screen rectangle (raymarch.cpp): their rays cannot reach
+// the liquid, so the march and the liquid's shading are left out, not merely skipped (lavapipe runs
+// both sides of every branch).
+layout(constant_id = LIQUID_RAYMARCH_BACKGROUND_ONLY_ID) const bool BACKGROUND_ONLY = false;
 
 layout(location = 0) in vec2 v_uv;
 layout(location = 0) out vec4 out_color;
@@ -247,7 +251,7 @@ void main() {
 
   vec2 span = intersect_box(origin, 1.0 / dir, vec3(0.0), u.domain);
   float t_liquid = k_no_hit;
-  if (span.x <= span.y && span.y > 0.0) {
+  if (!BACKGROUND_ONLY && span.x <= span.y && span.y > 0.0) {
     // Do not march past an obstacle in front of the liquid.
     int ignored;
     float t_obstacle = trace_obstacles(origin, dir, ignored);
