@@ -31,7 +31,7 @@ class RaymarchPass {
   Outputs add_to(engine::graph::RenderGraph& graph, const LiquidImages& images, const RenderSettings& settings,
                  const CameraView& camera, const HostTargets* targets = nullptr);
 
-  static constexpr int k_brick_cells = 4;  // occupancy block edge, in grid cells
+  static constexpr int k_brick_cells = 8;  // occupancy block edge, in grid cells
 
  private:
   const LiquidNode& node_;
