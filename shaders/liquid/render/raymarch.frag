@@ -267,6 +267,8 @@ void main() {
     float fresnel = 0.02 + 0.98 * pow(1.0 - cos_theta, 5.0);  // Schlick, water F0 = 0.02
     vec3 reflected = sky(reflect(dir, n));
     // Refraction: thickness along the refracted ray (a few coarse steps), then what lies behind.
+    // Each step asks the nearest cell, not a trilinear lookup (eight texels): the loop runs to
+    // the slowest ray of each group of pixels, and a coarse count needs no more.
     vec3 refracted_dir = refract(dir, n, 1.0 / 1.33);
     if (dot(refracted_dir, refracted_dir) < 1e-6) refracted_dir = dir;
     float thickness = 0.0, step_length = 2.0 * cell_size();
@@ -274,7 +276,7 @@ void main() {
     for (int k = 0; k < 16; ++k) {
       q += refracted_dir * step_length;
       if (any(lessThan(q, vec3(0.0))) || any(greaterThan(q, u.domain))) break;
-      if (density_at(q) > r.iso_level) thickness += step_length;
+      if (fetch_grid(u_density, ivec3(q / cell_size())).r > r.iso_level) thickness += step_length;
     }
     float spec = pow(max(dot(n, normalize(r.sun_direction - dir)), 0.0), 180.0);
     vec3 scattered = vec3(0.01, 0.05, 0.08) * (1.0 - exp(-2.0 * thickness));
