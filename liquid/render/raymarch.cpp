@@ -17,12 +17,69 @@ namespace {
 
 constexpr float k_fine_step_cells = 0.6f;
 
-// The scene's constants plus the raymarch's own (constant_id LIQUID_RAYMARCH_COMPOSITE_ID).
-std::vector<int32_t> raymarch_specialization(const LiquidNode& node, bool composite) {
-  static_assert(LIQUID_RAYMARCH_COMPOSITE_ID == specialization_id::count, "the raymarch's constant follows the scene's");
+// The scene's constants plus the raymarch's own (LIQUID_RAYMARCH_COMPOSITE_ID, then
+// LIQUID_RAYMARCH_BACKGROUND_ONLY_ID).
+std::vector<int32_t> raymarch_specialization(const LiquidNode& node, bool composite, bool background_only) {
+  static_assert(LIQUID_RAYMARCH_COMPOSITE_ID == specialization_id::count, "the raymarch's constants follow the scene's");
+  static_assert(LIQUID_RAYMARCH_BACKGROUND_ONLY_ID == LIQUID_RAYMARCH_COMPOSITE_ID + 1);
   std::vector<int32_t> constants = scene_specialization(node.scene(), node.simulation().setup());
   constants.push_back(composite ? 1 : 0);
+  constants.push_back(background_only ? 1 : 0);
   return constants;
+}
+
+engine::vk::GraphicsPipelineDesc raymarch_pipeline_desc(const LiquidNode& node, const GridLayout& bricks,
+                                                       bool composite, bool background_only) {
+  return engine::vk::GraphicsPipelineDesc{
+      .name = background_only ? "liquid.raymarch.background" : "liquid.raymarch",
+      .vertex = engine::passes::fullscreen_vertex_shader(),
+      .fragment = bricks.atlas() ? liquid_shaders::raymarch_frag_atlas : liquid_shaders::raymarch_frag,
+      .color_formats = {k_color_format},
+      // Composited: blended over the host's colour (the shader writes the liquid's coverage in alpha).
+      .blend = {composite ? engine::vk::BlendMode::Alpha : engine::vk::BlendMode::None},
+      .depth_format = k_depth_format,
+      .depth_test = true,
+      .depth_write = true,
+      .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
+                   {LIQUID_BINDING_VIEW_UNIFORMS, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
+                   {LIQUID_BINDING_RAYMARCH_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
+                   {LIQUID_BINDING_RAYMARCH_OCCUPANCY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
+      .specialization = raymarch_specialization(node, composite, background_only)};
+}
+
+// The pixels (half-open, clamped to the frame) that rays into the domain box can cover: the bounds
+// of its eight corners projected, a pixel wider each side for rounding; the whole frame when a
+// corner lies behind the camera. The pixel at (x, y) shows the ray through NDC 2 (x + 0.5) / width - 1
+// (fullscreen.vert and raymarch.frag).
+VkRect2D domain_screen_rect(const glm::mat4& view_projection, glm::vec3 domain, uint32_t width, uint32_t height) {
+  const VkRect2D frame{{0, 0}, {width, height}};
+  glm::vec2 lo(1e30f), hi(-1e30f);
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec3 p = domain * glm::vec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
+    const glm::vec4 clip = view_projection * glm::vec4(p, 1.0f);
+    if (clip.w <= 1e-6f) return frame;
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    lo = glm::min(lo, ndc);
+    hi = glm::max(hi, ndc);
+  }
+  const glm::vec2 size{float(width), float(height)};
+  const glm::vec2 first = glm::clamp(glm::floor((lo * 0.5f + 0.5f) * size) - 1.0f, glm::vec2(0.0f), size);
+  const glm::vec2 end = glm::clamp(glm::ceil((hi * 0.5f + 0.5f) * size) + 1.0f, glm::vec2(0.0f), size);
+  if (end.x <= first.x || end.y <= first.y) return {{0, 0}, {0, 0}};
+  return {{int32_t(first.x), int32_t(first.y)}, {uint32_t(end.x - first.x), uint32_t(end.y - first.y)}};
+}
+
+// The frame outside `inner`, as up to four bands: above, below, left and right of it.
+std::vector<VkRect2D> frame_around(VkRect2D inner, uint32_t width, uint32_t height) {
+  if (inner.extent.width == 0 || inner.extent.height == 0) return {VkRect2D{{0, 0}, {width, height}}};
+  const uint32_t x0 = uint32_t(inner.offset.x), y0 = uint32_t(inner.offset.y);
+  const uint32_t x1 = x0 + inner.extent.width, y1 = y0 + inner.extent.height;
+  std::vector<VkRect2D> bands;
+  if (y0 > 0) bands.push_back({{0, 0}, {width, y0}});
+  if (y1 < height) bands.push_back({{0, int32_t(y1)}, {width, height - y1}});
+  if (x0 > 0) bands.push_back({{0, int32_t(y0)}, {x0, inner.extent.height}});
+  if (x1 < width) bands.push_back({{int32_t(x1), int32_t(y0)}, {width - x1, inner.extent.height}});
+  return bands;
 }
 
 }  // namespace
@@ -44,26 +101,14 @@ RaymarchPass::RaymarchPass(engine::vk::Context& context, const LiquidNode& node,
                               .color_formats = {VK_FORMAT_R16_SFLOAT},
                               .bindings = {{LIQUID_BINDING_OCCUPANCY_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
                               .push_constant_size = sizeof(gpu::OccupancyPush)}),
-      raymarch_(context, engine::vk::GraphicsPipelineDesc{
-                             .name = "liquid.raymarch",
-                             .vertex = engine::passes::fullscreen_vertex_shader(),
-                             .fragment = bricks_.atlas() ? liquid_shaders::raymarch_frag_atlas : liquid_shaders::raymarch_frag,
-                             .color_formats = {k_color_format},
-                             // Composited: blended over the host's colour (the shader writes the
-                             // liquid's coverage in alpha).
-                             .blend = {composite ? engine::vk::BlendMode::Alpha : engine::vk::BlendMode::None},
-                             .depth_format = k_depth_format,
-                             .depth_test = true,
-                             .depth_write = true,
-                             .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
-                                          {LIQUID_BINDING_VIEW_UNIFORMS, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
-                                          {LIQUID_BINDING_RAYMARCH_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
-                                          {LIQUID_BINDING_RAYMARCH_OCCUPANCY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
-                             .specialization = raymarch_specialization(node, composite)}),
+      raymarch_(context, raymarch_pipeline_desc(node, bricks_, composite, false)),
       linear_(context, VK_FILTER_LINEAR),
       nearest_(context, VK_FILTER_NEAREST),
       uniforms_(context, node, sizeof(gpu::RaymarchUniforms)),
-      composite_(composite) {}
+      composite_(composite) {
+  // Composited, pixels outside the box show the host's frame: nothing to draw there.
+  if (!composite) background_ = engine::vk::GraphicsPipeline(context, raymarch_pipeline_desc(node, bricks_, false, true));
+}
 
 RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
                                            const RenderSettings& settings, const CameraView& camera,
@@ -119,18 +164,32 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
                                          k_color_format, 0};
   const engine::vk::ImageDesc depth_desc{engine::vk::ImageKind::Image2D, settings.width, settings.height, 1,
                                          k_depth_format, 0};
+  // The march runs only where rays can reach the domain box; the rest of the frame, a cheaper
+  // specialization without the liquid (same image there: those rays miss the box).
   struct RaymarchData {
     engine::passes::PassBindings bindings;
+    engine::passes::PassBindings background_bindings;
+    VkRect2D box{};
+    std::vector<VkRect2D> around;
     Outputs out;
   };
   return graph.add_pass<RaymarchData>(
       "liquid.raymarch",
       [&](PassBuilder& b, RaymarchData& d) {
-        d.bindings = engine::passes::PassBindings(raymarch_);
-        d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, solver);
-        d.bindings.bind_uniform(LIQUID_BINDING_VIEW_UNIFORMS, view);
-        d.bindings.bind_image(b, LIQUID_BINDING_RAYMARCH_DENSITY, density, linear_.handle());
-        d.bindings.bind_image(b, LIQUID_BINDING_RAYMARCH_OCCUPANCY, occupancy, nearest_.handle());
+        const auto bind = [&](const engine::vk::GraphicsPipeline& pipeline) {
+          engine::passes::PassBindings bindings(pipeline);
+          bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, solver);
+          bindings.bind_uniform(LIQUID_BINDING_VIEW_UNIFORMS, view);
+          bindings.bind_image(b, LIQUID_BINDING_RAYMARCH_DENSITY, density, linear_.handle());
+          bindings.bind_image(b, LIQUID_BINDING_RAYMARCH_OCCUPANCY, occupancy, nearest_.handle());
+          return bindings;
+        };
+        d.bindings = bind(raymarch_);
+        d.box = domain_screen_rect(vp, setup.domain, settings.width, settings.height);
+        if (!composite_) {
+          d.background_bindings = bind(background_);
+          d.around = frame_around(d.box, settings.width, settings.height);
+        }
         Outputs& out = d.out;
         if (targets) {  // over the host's colour, tested against and written into its depth
           out.color = b.write(targets->color, Access::ColorAttachmentBlend);
@@ -142,8 +201,17 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
         }
       },
       [](PassContext& ctx, const RaymarchData& d) {
-        d.bindings.bind_and_push(ctx);
-        engine::passes::draw_fullscreen(ctx.cmd);
+        if (d.box.extent.width > 0 && d.box.extent.height > 0) {
+          d.bindings.bind_and_push(ctx);
+          vkCmdSetScissor(ctx.cmd, 0, 1, &d.box);
+          engine::passes::draw_fullscreen(ctx.cmd);
+        }
+        if (d.around.empty()) return;
+        d.background_bindings.bind_and_push(ctx);
+        for (const VkRect2D& band : d.around) {
+          vkCmdSetScissor(ctx.cmd, 0, 1, &band);
+          engine::passes::draw_fullscreen(ctx.cmd);
+        }
       }).out;
 }
 

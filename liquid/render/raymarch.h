@@ -31,13 +31,14 @@ class RaymarchPass {
   Outputs add_to(engine::graph::RenderGraph& graph, const LiquidImages& images, const RenderSettings& settings,
                  const CameraView& camera, const HostTargets* targets = nullptr);
 
-  static constexpr int k_brick_cells = 4;  // occupancy block edge, in grid cells
+  static constexpr int k_brick_cells = 8;  // occupancy block edge, in grid cells
 
  private:
   const LiquidNode& node_;
   GridLayout bricks_;  // the occupancy grid, stored like the node's grids
   engine::vk::GraphicsPipeline occupancy_;
   engine::vk::GraphicsPipeline raymarch_;
+  engine::vk::GraphicsPipeline background_;  // BACKGROUND_ONLY, for pixels whose rays miss the box; not when compositing
   engine::vk::Sampler linear_;
   engine::vk::Sampler nearest_;
   ViewUniforms uniforms_;

@@ -2,6 +2,18 @@
 // FXAA (Lottes, "FXAA 3.11", quality path): find the local contrast, the edge direction, walk
 // along the edge to both ends, and blend across it by where this pixel sits on the edge, plus a
 // sub-pixel term for thin features. Input is display-encoded colour; luma is computed from it.
+//
+// Written for lavapipe, where every texture read runs for every pixel, on both sides of the
+// contrast test (docs/lavapipe-performance.md), so the win is fewer reads:
+// - The 3x3 neighbourhood costs four single-texel reads per pixel, not nine filtered ones. A 2x2
+//   quad of pixels needs the 4x4 texels around it: each pixel reads its own and the three on its
+//   outer side, and takes the others from its quad neighbours through fine derivatives (the
+//   neighbour's value is v -+ dFdxFine(v)); llvmpipe computes derivatives per quad, as a GPU does.
+// - The edge search's first step comes from the neighbourhood, and the rest is a loop kept rolled,
+//   so a group of pixels with no edge runs one trip of two reads instead of all twelve unrolled.
+// - The final blend mixes the centre with the neighbour across the edge, both texels at hand,
+//   instead of a filtered read between them.
+#extension GL_EXT_control_flow_attributes : require
 layout(location = 0) in vec2 v_uv;
 layout(location = 0) out vec4 out_color;
 layout(set = 0, binding = 0) uniform sampler2D u_input;  // linear filtering, clamp to edge
@@ -18,16 +30,49 @@ const float k_step_sizes[12] = float[](1.0, 1.0, 1.0, 1.0, 1.0, 1.5, 2.0, 2.0, 2
 
 float luma(vec3 c) { return dot(c, vec3(0.299, 0.587, 0.114)); }
 float luma_at(vec2 uv) { return luma(textureLod(u_input, uv, 0.0).rgb); }
-float luma_offset(vec2 uv, ivec2 offset) { return luma_at(uv + vec2(offset) * pc.inverse_size); }
+
+// A single texel, clamped to the edge as the sampler is.
+vec3 texel(ivec2 p, ivec2 last) { return texelFetch(u_input, clamp(p, ivec2(0), last), 0).rgb; }
+
+// The value v of this pixel's neighbour across the quad: horizontally (side.x: -1 for the left
+// pixel of its quad, +1 for the right one, so the neighbour is at -side.x), vertically, diagonally.
+float across_x(float v, ivec2 side) { return v - float(side.x) * dFdxFine(v); }
+float across_y(float v, ivec2 side) { return v - float(side.y) * dFdyFine(v); }
+vec3 across_x(vec3 v, ivec2 side) { return v - float(side.x) * dFdxFine(v); }
+vec3 across_y(vec3 v, ivec2 side) { return v - float(side.y) * dFdyFine(v); }
 
 void main() {
   vec2 uv = v_uv;
-  vec4 center_color = textureLod(u_input, uv, 0.0);
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  ivec2 last = textureSize(u_input, 0) - 1;
+  vec4 center_color = texelFetch(u_input, pixel, 0);
   float l_center = luma(center_color.rgb);
-  float l_down = luma_offset(uv, ivec2(0, 1));
-  float l_up = luma_offset(uv, ivec2(0, -1));
-  float l_left = luma_offset(uv, ivec2(-1, 0));
-  float l_right = luma_offset(uv, ivec2(1, 0));
+
+  // The 3x3 neighbourhood, in offsets along `side`, the outer side of this pixel in its quad.
+  ivec2 side = 2 * (pixel & 1) - 1;
+  vec3 outer_x_color = texel(pixel + ivec2(side.x, 0), last);   // read here
+  vec3 outer_y_color = texel(pixel + ivec2(0, side.y), last);
+  float outer_x = luma(outer_x_color);
+  float outer_y = luma(outer_y_color);
+  float outer_xy = luma(texel(pixel + side, last));
+  // The quad neighbours' centres (their colours serve the final blend too) and what they read on
+  // their outer sides. Derivatives only here, in uniform control flow, before the contrast test.
+  vec3 inner_x_color = across_x(center_color.rgb, side);
+  vec3 inner_y_color = across_y(center_color.rgb, side);
+  float inner_x = luma(inner_x_color);
+  float inner_y = luma(inner_y_color);
+  float inner_xy = across_x(inner_y, side);
+  float inner_x_outer_y = across_x(outer_y, side);
+  float outer_x_inner_y = across_y(outer_x, side);
+  bool left_outer = side.x < 0, up_outer = side.y < 0;
+  float l_left = left_outer ? outer_x : inner_x;
+  float l_right = left_outer ? inner_x : outer_x;
+  float l_up = up_outer ? outer_y : inner_y;
+  float l_down = up_outer ? inner_y : outer_y;
+  float l_up_left = left_outer ? (up_outer ? outer_xy : outer_x_inner_y) : (up_outer ? inner_x_outer_y : inner_xy);
+  float l_up_right = left_outer ? (up_outer ? inner_x_outer_y : inner_xy) : (up_outer ? outer_xy : outer_x_inner_y);
+  float l_down_left = left_outer ? (up_outer ? outer_x_inner_y : outer_xy) : (up_outer ? inner_xy : inner_x_outer_y);
+  float l_down_right = left_outer ? (up_outer ? inner_xy : inner_x_outer_y) : (up_outer ? outer_x_inner_y : outer_xy);
 
   float l_min = min(l_center, min(min(l_down, l_up), min(l_left, l_right)));
   float l_max = max(l_center, max(max(l_down, l_up), max(l_left, l_right)));
@@ -36,11 +81,6 @@ void main() {
     out_color = center_color;
     return;
   }
-
-  float l_down_left = luma_offset(uv, ivec2(-1, 1));
-  float l_up_right = luma_offset(uv, ivec2(1, -1));
-  float l_up_left = luma_offset(uv, ivec2(-1, -1));
-  float l_down_right = luma_offset(uv, ivec2(1, 1));
 
   float l_down_up = l_down + l_up;
   float l_left_right = l_left + l_right;
@@ -78,13 +118,18 @@ void main() {
   else current.x += step_length * 0.5;
   vec2 offset = horizontal ? vec2(pc.inverse_size.x, 0.0) : vec2(0.0, pc.inverse_size.y);
 
+  // The first step each way lies between two texels of the 3x3 neighbourhood: no read needed.
+  float l_across_neg = horizontal ? (neg_steeper ? l_up_left : l_down_left) : (neg_steeper ? l_up_left : l_up_right);
+  float l_across_pos = horizontal ? (neg_steeper ? l_up_right : l_down_right) : (neg_steeper ? l_down_left : l_down_right);
+  float l_along_neg = horizontal ? l_left : l_up;
+  float l_along_pos = horizontal ? l_right : l_down;
   vec2 uv1 = current - offset * k_step_sizes[0];
   vec2 uv2 = current + offset * k_step_sizes[0];
-  float l_end1 = luma_at(uv1) - l_local_average;
-  float l_end2 = luma_at(uv2) - l_local_average;
+  float l_end1 = 0.5 * (l_along_neg + l_across_neg) - l_local_average;
+  float l_end2 = 0.5 * (l_along_pos + l_across_pos) - l_local_average;
   bool reached1 = abs(l_end1) >= gradient_scaled;
   bool reached2 = abs(l_end2) >= gradient_scaled;
-  for (int i = 1; i < k_search_steps && !(reached1 && reached2); ++i) {
+  [[dont_unroll]] for (int i = 1; i < k_search_steps && !(reached1 && reached2); ++i) {
     if (!reached1) {
       uv1 -= offset * k_step_sizes[i];
       l_end1 = luma_at(uv1) - l_local_average;
@@ -116,8 +161,10 @@ void main() {
   float sub_offset = sub2 * sub2 * pc.subpixel_quality;
   final_offset = max(final_offset, sub_offset);
 
-  vec2 final_uv = uv;
-  if (horizontal) final_uv.y += final_offset * step_length;
-  else final_uv.x += final_offset * step_length;
-  out_color = vec4(textureLod(u_input, final_uv, 0.0).rgb, center_color.a);
+  // The filtered lookup final_offset (at most 1) of a pixel towards the steeper neighbour, as a
+  // blend of the two texels: that neighbour's colour comes from this pixel's reads or its quad's.
+  bool toward_outer = horizontal ? ((side.y < 0) == neg_steeper) : ((side.x < 0) == neg_steeper);
+  vec3 across_color = horizontal ? (toward_outer ? outer_y_color : inner_y_color)
+                                 : (toward_outer ? outer_x_color : inner_x_color);
+  out_color = vec4(mix(center_color.rgb, across_color, final_offset), center_color.a);
 }

@@ -1,6 +1,6 @@
 #version 450
 // Raymarch of the density volume (section 7, figure 3): the liquid surface is where rho / rho0
-// crosses the iso level. Rays skip empty bricks with a 3D DDA over the occupancy volume, march
+// crosses the iso level. Rays cross empty bricks of the occupancy volume in one step each, march
 // occupied bricks in sub-cell steps, refine the crossing by bisection, and take the normal from the
 // density gradient. Shading: Fresnel reflection of a sky, refraction onto the floor tinted by
 // Beer-Lambert absorption over the liquid's thickness, and a sun highlight. Obstacles (the solver's
@@ -22,6 +22,10 @@ layout(set = 0, binding = LIQUID_BINDING_RAYMARCH_OCCUPANCY) uniform GRID_SAMPLE
 // own; the liquid is blended over the host's colour with its coverage in alpha, and pixels that
 // show no liquid are left to the host.
 layout(constant_id = LIQUID_RAYMARCH_COMPOSITE_ID) const bool COMPOSITE = false;
+// For the pixels outside the domain box's screen rectangle (raymarch.cpp): their rays cannot reach
+// the liquid, so the march and the liquid's shading are left out, not merely skipped (lavapipe runs
+// both sides of every branch).
+layout(constant_id = LIQUID_RAYMARCH_BACKGROUND_ONLY_ID) const bool BACKGROUND_ONLY = false;
 
 layout(location = 0) in vec2 v_uv;
 layout(location = 0) out vec4 out_color;
@@ -31,6 +35,9 @@ const float k_no_hit = 1e30;
 // of a shader whose loop count is read from a uniform block on every draw and keeps every copy
 // (2.7 MB per frame of this shader; docs/memory.md).
 const int k_bisection_steps = 5;
+// A bound on the march's trips (an empty brick or a fine step each), far above what a ray through
+// the largest grid needs; the loop ends on t_exit first.
+const int k_max_march_trips = 4096;
 const vec3 k_absorption = vec3(6.0, 1.6, 0.9);  // 1/m: red is absorbed first, so depth reads blue-green
 
 float density_at(vec3 p) {
@@ -148,62 +155,49 @@ vec3 background(vec3 origin, vec3 dir, out float depth_t) {
 }
 
 // First crossing of the iso level inside [t_enter, t_exit], or k_no_hit.
+//
+// One loop with one density sample site. Lavapipe runs every line for all 8 lanes and a loop body
+// while any lane is active (docs/lavapipe-performance.md), so each sample site inside the loop costs
+// every trip of every lane: a trip either crosses an empty brick whole (its largest density, with a
+// one-cell border, is below the iso level, so no trilinear value inside it can exceed it) or takes
+// one fine step inside an occupied brick. The bisection runs once, after the loop.
 float march_liquid(vec3 origin, vec3 dir, float t_enter, float t_exit) {
   float h = cell_size();
   float iso = r.iso_level;
   float fine = r.fine_step_cells * h;
   float brick_size = r.brick_cells * h;
-  ivec3 bricks = r.bricks;
+  // Per axis: the t at which the ray leaves a brick is (its lower corner + exit_side - origin) / dir.
+  vec3 exit_side = step(0.0, dir) * brick_size;
+  vec3 inv_dir = 1.0 / mix(vec3(1e-20), dir, notEqual(dir, vec3(0.0)));
+  float nudge = 1e-3 * h;  // past a brick's face, so the next trip looks up the next brick
 
-  // 3D DDA over the bricks (Amanatides and Woo).
-  vec3 p = origin + dir * (t_enter + 1e-5);
-  ivec3 brick = clamp(ivec3(floor(p / brick_size)), ivec3(0), bricks - 1);
-  ivec3 step_dir = ivec3(sign(dir));
-  vec3 inv_dir = 1.0 / dir;
-  vec3 next_boundary = (vec3(brick) + max(vec3(step_dir), 0.0)) * brick_size;
-  vec3 t_max = mix(vec3(k_no_hit), (next_boundary - origin) * inv_dir, notEqual(dir, vec3(0.0)));
-  vec3 t_delta = abs(brick_size * inv_dir);
+  float outside_t = t_enter;  // the last point known to be below the iso level
   float t = t_enter;
-  float previous_t = -1.0, previous_d = 0.0;
-  for (int i = 0; i < 512; ++i) {
-    float t_leave = min(min(t_max.x, t_max.y), min(t_max.z, t_exit));
-    if (brick_max_density(brick) > iso) {
-      if (previous_t < 0.0 || previous_t < t - 1.5 * fine) {
-        previous_t = t;
-        previous_d = density_at(origin + dir * t);
-        if (previous_d > iso) return t;  // entered the box inside the liquid
-      }
-      for (float s = previous_t + fine; s <= t_leave + fine; s += fine) {
-        float d = density_at(origin + dir * s);
-        if (d > iso) {
-          // Bisection between the last sample outside and this one inside.
-          float a = previous_t, b = s;
-          for (int k = 0; k < k_bisection_steps; ++k) {
-            float m = 0.5 * (a + b);
-            if (density_at(origin + dir * m) > iso) b = m;
-            else a = m;
-          }
-          return b;
-        }
-        previous_t = s;
-        previous_d = d;
-      }
+  bool hit = false;
+  for (int i = 0; i < k_max_march_trips && t <= t_exit; ++i) {
+    vec3 p = origin + dir * t;
+    ivec3 brick = clamp(ivec3(floor(p / brick_size)), ivec3(0), r.bricks - 1);
+    vec3 leave = (vec3(brick) * brick_size + exit_side - origin) * inv_dir;
+    float brick_end = min(min(leave.x, leave.y), leave.z);
+    bool occupied = brick_max_density(brick) > iso;
+    float d = density_at(p);
+    if (occupied && d > iso) {
+      hit = true;
+      break;
     }
-    t = t_leave;
-    if (t >= t_exit) break;
-    if (t_max.x <= t_max.y && t_max.x <= t_max.z) {
-      brick.x += step_dir.x;
-      t_max.x += t_delta.x;
-    } else if (t_max.y <= t_max.z) {
-      brick.y += step_dir.y;
-      t_max.y += t_delta.y;
-    } else {
-      brick.z += step_dir.z;
-      t_max.z += t_delta.z;
-    }
-    if (any(lessThan(brick, ivec3(0))) || any(greaterThanEqual(brick, bricks))) break;
+    outside_t = occupied ? t : brick_end;
+    t = occupied ? t + fine : brick_end + nudge;
   }
-  return k_no_hit;
+  if (!hit) return k_no_hit;
+  // Bisection between the last point outside and the first inside (both t_enter when the ray
+  // enters the box inside the liquid).
+  float a = outside_t, b = t;
+  for (int k = 0; k < k_bisection_steps; ++k) {
+    float m = 0.5 * (a + b);
+    if (density_at(origin + dir * m) > iso) b = m;
+    else a = m;
+  }
+  return b;
 }
 
 // Where the ray enters the tank already inside the liquid, the surface seen is the tank's wall
@@ -269,7 +263,7 @@ void main() {
 
   vec2 span = intersect_box(origin, 1.0 / dir, vec3(0.0), u.domain);
   float t_liquid = k_no_hit;
-  if (span.x <= span.y && span.y > 0.0) {
+  if (!BACKGROUND_ONLY && span.x <= span.y && span.y > 0.0) {
     // Do not march past an obstacle in front of the liquid.
     int ignored;
     float t_obstacle = trace_obstacles(origin, dir, ignored);
@@ -286,6 +280,8 @@ void main() {
     float fresnel = 0.02 + 0.98 * pow(1.0 - cos_theta, 5.0);  // Schlick, water F0 = 0.02
     vec3 reflected = sky(reflect(dir, n));
     // Refraction: thickness along the refracted ray (a few coarse steps), then what lies behind.
+    // Each step asks the nearest cell, not a trilinear lookup (eight texels): the loop runs to
+    // the slowest ray of each group of pixels, and a coarse count needs no more.
     vec3 refracted_dir = refract(dir, n, 1.0 / 1.33);
     if (dot(refracted_dir, refracted_dir) < 1e-6) refracted_dir = dir;
     float thickness = 0.0, step_length = 2.0 * cell_size();
@@ -293,7 +289,7 @@ void main() {
     for (int k = 0; k < 16; ++k) {
       q += refracted_dir * step_length;
       if (any(lessThan(q, vec3(0.0))) || any(greaterThan(q, u.domain))) break;
-      if (density_at(q) > r.iso_level) thickness += step_length;
+      if (fetch_grid(u_density, ivec3(q / cell_size())).r > r.iso_level) thickness += step_length;
     }
     float spec = pow(max(dot(n, normalize(r.sun_direction - dir)), 0.0), 180.0);
     vec3 scattered = vec3(0.01, 0.05, 0.08) * (1.0 - exp(-2.0 * thickness));

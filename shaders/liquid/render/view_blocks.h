@@ -7,8 +7,10 @@
 #include "../shared.h"
 
 // Raymarch: the specialization constant that makes it draw the liquid alone over a host's targets
-// (its id follows the scene's constants of common.glsl; raymarch.cpp checks that).
+// (its id follows the scene's constants of common.glsl; raymarch.cpp checks that), and the one that
+// leaves out the march for pixels whose rays miss the domain box.
 #define LIQUID_RAYMARCH_COMPOSITE_ID 13
+#define LIQUID_RAYMARCH_BACKGROUND_ONLY_ID 14
 
 // Height field: which mesh a draw makes.
 #define LIQUID_HEIGHT_FIELD_GROUND 0
