@@ -17,8 +17,11 @@ namespace liquid {
 
 namespace {
 
-// How far up (cells) a liquid pixel looks for the surface; depth below this is the deepest blue.
+// How far up (cells) the depth pass looks for the surface; depth below this is the deepest blue.
 constexpr float k_depth_search_cells = 24.0f;
+
+// R16F: linear filtering is guaranteed for it, and 0 to 24 cells need no more precision.
+constexpr VkFormat k_view2d_depth_format = VK_FORMAT_R16_SFLOAT;
 
 using gpu::Particles2dPush;
 using gpu::View2dPush;
@@ -46,13 +49,23 @@ View2dLayout fit_view2d(glm::vec2 domain, uint32_t width, uint32_t height) {
 
 View2dPass::View2dPass(engine::vk::Context& context, const LiquidNode& node)
     : node_(require_2d(node)),
+      depth_(context, engine::vk::GraphicsPipelineDesc{
+                          .name = "liquid.view2d.depth",
+                          .vertex = engine::passes::fullscreen_vertex_shader(),
+                          .fragment = liquid_shaders::view2d_depth_frag,
+                          .color_formats = {k_view2d_depth_format},
+                          .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
+                                       {LIQUID_BINDING_VIEW2D_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
+                          .push_constant_size = sizeof(View2dPush),
+                          .specialization = scene_specialization(node.scene(), node.simulation().setup())}),
       liquid_(context, engine::vk::GraphicsPipelineDesc{
                            .name = "liquid.view2d",
                            .vertex = engine::passes::fullscreen_vertex_shader(),
                            .fragment = liquid_shaders::view2d_frag,
                            .color_formats = {k_color_format},
                            .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
-                                        {LIQUID_BINDING_VIEW2D_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
+                                        {LIQUID_BINDING_VIEW2D_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
+                                        {LIQUID_BINDING_VIEW2D_DEPTH, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
                            .push_constant_size = sizeof(View2dPush),
                            .specialization = scene_specialization(node.scene(), node.simulation().setup())}),
       particles_(context, engine::vk::GraphicsPipelineDesc{
@@ -85,6 +98,24 @@ ImageHandle View2dPass::add_to(engine::graph::RenderGraph& graph, const LiquidIm
   const ImageHandle density = images.density;
   const engine::vk::ImageDesc color_desc{engine::vk::ImageKind::Image2D, settings.width, settings.height, 1,
                                          k_color_format, 0};
+  const engine::vk::ImageDesc depth_desc{engine::vk::ImageKind::Image2D, uint32_t(setup.grid_cells.x),
+                                         uint32_t(setup.grid_cells.y), 1, k_view2d_depth_format, 0};
+  const ImageHandle depth =
+      graph
+          .add_pass<Data>(
+              "liquid.view2d.depth",
+              [&](PassBuilder& b, Data& d) {
+                d.bindings = engine::passes::PassBindings(depth_);
+                d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, solver);
+                d.bindings.bind_image(b, LIQUID_BINDING_VIEW2D_DENSITY, density, nearest_.handle());
+                d.color = b.write(b.create("liquid.view2d.depth", depth_desc), Access::ColorAttachmentWrite);
+              },
+              [this, push](PassContext& ctx, const Data& d) {
+                d.bindings.bind_and_push(ctx);
+                depth_.push_constants(ctx.cmd, push);
+                engine::passes::draw_fullscreen(ctx.cmd);
+              })
+          .color;
   ImageHandle color =
       graph
           .add_pass<Data>(
@@ -93,6 +124,7 @@ ImageHandle View2dPass::add_to(engine::graph::RenderGraph& graph, const LiquidIm
                 d.bindings = engine::passes::PassBindings(liquid_);
                 d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, solver);
                 d.bindings.bind_image(b, LIQUID_BINDING_VIEW2D_DENSITY, density, linear_.handle());
+                d.bindings.bind_image(b, LIQUID_BINDING_VIEW2D_DEPTH, depth, linear_.handle());
                 d.color = b.write(b.create("liquid.view2d", color_desc), Access::ColorAttachmentWrite);
               },
               [this, push](PassContext& ctx, const Data& d) {

@@ -40,6 +40,7 @@ class View2dPass {
 
  private:
   const LiquidNode& node_;
+  engine::vk::GraphicsPipeline depth_;   // the depth below the surface, per cell of the grid
   engine::vk::GraphicsPipeline liquid_;
   engine::vk::GraphicsPipeline particles_;
   engine::vk::Sampler linear_;

@@ -45,6 +45,7 @@
 // Views.
 #define LIQUID_BINDING_VIEW_UNIFORMS 1      // raymarch, height field: the view's own block
 #define LIQUID_BINDING_VIEW2D_DENSITY 1
+#define LIQUID_BINDING_VIEW2D_DEPTH 2        // view2d.frag: view2d_depth.frag's depth below the surface
 #define LIQUID_BINDING_HEIGHT_FIELD_DENSITY 2
 #define LIQUID_BINDING_RAYMARCH_DENSITY 2
 #define LIQUID_BINDING_RAYMARCH_OCCUPANCY 3

@@ -9,6 +9,8 @@
 #include "liquid/render/view_blocks.h"
 
 layout(set = 0, binding = LIQUID_BINDING_VIEW2D_DENSITY) uniform sampler2D u_density;  // rho / rho0, linear filtering
+// Depth below the surface in cells, per cell (view2d_depth.frag), linear filtering.
+layout(set = 0, binding = LIQUID_BINDING_VIEW2D_DEPTH) uniform sampler2D u_depth;
 
 layout(push_constant) uniform View2dPushBlock {
   View2dPush pc;
@@ -70,18 +72,8 @@ void main() {
 
   float liquid = clamp(f_pixels + 0.5, 0.0, 1.0) * in_domain;
   if (liquid > 0.0) {
-    // Depth below the surface: march up one cell at a time to the first cell under the iso level.
-    float depth = pc.depth_cells;
-    float below = rho;
-    for (float k = 1.0; k <= pc.depth_cells; k += 1.0) {
-      vec2 above = p + vec2(0.0, k * h);
-      float next = above.y > domain.y ? 0.0 : density_at(above);
-      if (next < pc.iso_level) {
-        depth = k - 1.0 + clamp((below - pc.iso_level) / max(below - next, 1e-4), 0.0, 1.0);
-        break;
-      }
-      below = next;
-    }
+    // Depth below the surface, from the per-cell march of view2d_depth.frag.
+    float depth = textureLod(u_depth, p / domain, 0.0).r;
     float deep = clamp(depth / pc.depth_cells, 0.0, 1.0);
     float compressed = clamp((rho - 1.0) * 2.0, 0.0, 1.0);  // rho above rho0: denser, darker
     vec3 water = mix(k_water_shallow, k_water_deep, clamp(0.85 * sqrt(deep) + 0.35 * compressed, 0.0, 1.0));
