@@ -120,6 +120,19 @@ Context::Context(const HostDevice& host, const ContextOptions& options)
       queue_family_(host.queue_family),
       print_messages_(options.print_validation_messages),
       owns_device_(false) {
+  // Only print_validation_messages applies to a host's device: the rest choose or create what the
+  // host has already made. Given anyway, they would be silently ignored, so they are refused.
+  const char* ignored = options.validation                    ? "validation"
+                        : !options.device.empty()             ? "device"
+                        : !options.instance_extensions.empty() ? "instance_extensions"
+                        : !options.device_extensions.empty()  ? "device_extensions"
+                        : options.enable_features             ? "enable_features"
+                        : options.queue_family_filter         ? "queue_family_filter"
+                                                              : nullptr;
+  if (ignored)
+    throw std::invalid_argument(std::string("engine: ContextOptions::") + ignored +
+                                " does not apply to a host's device (the host creates the instance and device; "
+                                "HostDevice::debug_utils adds the library's message counter)");
   try {
     if (!instance_ || !physical_device_ || !device_)
       throw NoDeviceError("the host device is incomplete (instance, physical device and device are required)");

@@ -186,6 +186,25 @@ TEST_CASE("a host's own device is adopted, not owned, and runs the node with zer
   CHECK(vkDeviceWaitIdle(host.device) == VK_SUCCESS);
 }
 
+TEST_CASE("options that choose or create a device are refused for a host's device, naming the option", "[host]") {
+  HostVulkan host(/*validation=*/false);
+  using engine::vk::ContextOptions;
+  const std::pair<ContextOptions, const char*> cases[] = {
+      {ContextOptions{.validation = true}, "ContextOptions::validation"},
+      {ContextOptions{.device = "cpu"}, "ContextOptions::device"},
+      {ContextOptions{.device_extensions = {"VK_KHR_swapchain"}}, "ContextOptions::device_extensions"},
+      {ContextOptions{.enable_features = [](engine::vk::DeviceFeatures&, const engine::vk::DeviceFeatures&) {}},
+       "ContextOptions::enable_features"},
+  };
+  for (const auto& [options, name] : cases) {
+    INFO(name);
+    CHECK_THROWS_WITH(engine::vk::Context(host.host_device(), options), Catch::Contains(name));
+  }
+  // The one that applies: messages counted, not printed.
+  engine::vk::Context quiet(host.host_device(), ContextOptions{.print_validation_messages = false});
+  CHECK_FALSE(quiet.owns_device());
+}
+
 TEST_CASE("a host device without a feature the library needs is refused, naming the feature", "[host]") {
   HostVulkan host(/*validation=*/false);
   // The same physical device, created without large points (which the splat needs).

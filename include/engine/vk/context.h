@@ -66,7 +66,11 @@ struct HostDevice {
 class Context {
  public:
   explicit Context(const ContextOptions& options = {});
-  // Adopts a host's device. Throws NoDeviceError naming every requirement the device lacks.
+  // Adopts a host's device. Throws NoDeviceError naming every requirement the device lacks. Of the
+  // options only print_validation_messages applies (any other set is refused with
+  // std::invalid_argument naming it); HostDevice::debug_utils adds the library's own messenger,
+  // beside any of the host's, which counts messages (validation_message_count()) and prints them
+  // unless print_validation_messages is false.
   explicit Context(const HostDevice& host, const ContextOptions& options = {});
   ~Context();
   Context(const Context&) = delete;
