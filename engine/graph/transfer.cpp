@@ -60,6 +60,36 @@ Readback add_readback(RenderGraph& graph, ImageHandle image, const std::string& 
   return readback;
 }
 
+ImageHandle add_copy(RenderGraph& graph, ImageHandle source, ImageHandle destination, const std::string& pass_name) {
+  const vk::ImageDesc& from = graph.image_desc(source);
+  const vk::ImageDesc& to = graph.image_desc(destination);
+  if (from.kind != to.kind || from.width != to.width || from.height != to.height ||
+      from.depth_or_layers != to.depth_or_layers || from.format != to.format)
+    throw std::logic_error("copy '" + pass_name + "': '" + graph.image_name(source) + "' and '" +
+                           graph.image_name(destination) + "' differ in kind, size or format");
+  struct Data {
+    ImageHandle written;
+  };
+  const Data& data = graph.add_pass<Data>(
+      pass_name,
+      [&](PassBuilder& builder, Data& d) {
+        builder.read(source, Access::TransferSource);
+        d.written = builder.write(destination, Access::TransferDestination);
+      },
+      [source](PassContext& ctx, const Data& d) {
+        const vk::Image& from_image = ctx.image(source);
+        const vk::Image& to_image = ctx.image(d.written);
+        VkImageCopy region{};
+        region.srcSubresource = {from_image.aspect(), 0, 0, from_image.full_range().layerCount};
+        region.dstSubresource = region.srcSubresource;
+        const vk::ImageDesc& desc = from_image.desc();
+        region.extent = {desc.width, desc.height, desc.kind == vk::ImageKind::Image3D ? desc.depth_or_layers : 1};
+        vkCmdCopyImage(ctx.cmd, from_image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, to_image.handle(),
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+      });
+  return data.written;
+}
+
 ImageHandle add_upload(RenderGraph& graph, ImageHandle image, std::span<const std::byte> bytes,
                        const std::string& pass_name) {
   vk::Context& context = require_context(graph, pass_name);

@@ -32,9 +32,19 @@ FxaaPass::FxaaPass(vk::Context& context, VkFormat format)
 graph::ImageHandle FxaaPass::add_to(graph::RenderGraph& graph, graph::ImageHandle input,
                                     const FxaaSettings& settings, const std::string& name) const {
   vk::ImageDesc desc = graph.image_desc(input);
-  if (desc.format != format_ || desc.kind != vk::ImageKind::Image2D)
-    throw std::logic_error("fxaa: input '" + graph.image_name(input) + "' is not a 2D image of the pass's format");
   desc.usage = 0;
+  return add_to(graph, input, graph.create_image(name + ".output", desc), settings, name);
+}
+
+graph::ImageHandle FxaaPass::add_to(graph::RenderGraph& graph, graph::ImageHandle input, graph::ImageHandle output,
+                                    const FxaaSettings& settings, const std::string& name) const {
+  const vk::ImageDesc& in = graph.image_desc(input);
+  const vk::ImageDesc& out = graph.image_desc(output);
+  if (in.format != format_ || in.kind != vk::ImageKind::Image2D)
+    throw std::logic_error("fxaa: input '" + graph.image_name(input) + "' is not a 2D image of the pass's format");
+  if (output.id == input.id || out.format != format_ || out.kind != vk::ImageKind::Image2D || out.width != in.width ||
+      out.height != in.height)
+    throw std::logic_error("fxaa: output '" + graph.image_name(output) + "' is not another 2D image of the input's size and format");
   struct Data {
     PassBindings bindings;
     graph::ImageHandle output;
@@ -44,7 +54,7 @@ graph::ImageHandle FxaaPass::add_to(graph::RenderGraph& graph, graph::ImageHandl
       [&](graph::PassBuilder& builder, Data& d) {
         d.bindings = PassBindings(pipeline_);
         d.bindings.bind_image(builder, 0, input, sampler_.handle());
-        d.output = builder.write(builder.create(name + ".output", desc), graph::Access::ColorAttachmentWrite);
+        d.output = builder.write(output, graph::Access::ColorAttachmentWrite);
       },
       [this, settings](graph::PassContext& ctx, const Data& d) {
         d.bindings.bind_and_push(ctx);

@@ -9,6 +9,7 @@
 #include "liquid/node.h"
 
 #include <memory>
+#include <optional>
 
 namespace engine::vk {
 class Context;
@@ -25,7 +26,11 @@ struct RenderSettings {
   uint32_t width = 1024;   // the paper's frame: 1024 x 768
   uint32_t height = 768;
   float iso_level = 0.5f;  // surface where rho / rho0 crosses this value
-  bool fxaa = true;
+  // FXAA after the view. Empty: on for the renderer's own frame, off when compositing into a
+  // host's targets (a host runs its own anti-aliasing after its whole scene, TAA for one); on when
+  // compositing, its output lands in the host's colour target, which then needs
+  // VK_IMAGE_USAGE_TRANSFER_SRC_BIT (the composite is copied out to be read).
+  std::optional<bool> fxaa;
   bool draw_particles = false;  // 2D views: the particles as points over the liquid
   // 3D: draw into the host's own colour and depth targets (add_to with HostTargets) instead of a
   // frame of the renderer's own with its floor, sky and tank.
@@ -45,7 +50,8 @@ struct HostTargets {
 struct RenderOutputs {
   engine::graph::ImageHandle color;  // RGBA8, before FXAA
   engine::graph::ImageHandle depth;  // D32 (3D views), metric depth of the first surface hit
-  engine::graph::ImageHandle final;  // RGBA8 after FXAA (== color when FXAA is off)
+  engine::graph::ImageHandle final;  // RGBA8 after FXAA (== color when FXAA is off, and when
+                                     // compositing, where both are the host's colour, after FXAA)
 };
 
 class RaymarchPass;
@@ -59,8 +65,8 @@ class LiquidRenderer {
   ~LiquidRenderer();
 
   RenderOutputs add_to(engine::graph::RenderGraph& graph, const LiquidImages& images, const CameraView& camera);
-  // Composites into the host's targets (3D scenes, RenderSettings::composite); `color` and `depth`
-  // of the result are the targets' new versions, `final` the FXAA output (or `color`).
+  // Composites into the host's targets (3D scenes, RenderSettings::composite); `color` (== `final`)
+  // and `depth` of the result are the targets' new versions, after FXAA where it is on.
   RenderOutputs add_to(engine::graph::RenderGraph& graph, const LiquidImages& images, const CameraView& camera,
                        const HostTargets& targets);
   const RenderSettings& settings() const { return settings_; }

@@ -1,5 +1,6 @@
 #include "liquid/renderer.h"
 
+#include "engine/graph/transfer.h"
 #include "engine/vk/context.h"
 #include "liquid/render/height_field.h"
 #include "liquid/render/raymarch.h"
@@ -26,7 +27,8 @@ LiquidRenderer::LiquidRenderer(engine::vk::Context& context, const LiquidNode& n
     view2d_ = std::make_unique<View2dPass>(context, node);
   if (settings.composite && !raymarch_)
     throw std::invalid_argument("liquid: compositing into host targets needs a 3D liquid scene");
-  if (settings.fxaa) fxaa_ = std::make_unique<engine::passes::FxaaPass>(context, k_color_format);
+  if (settings.fxaa.value_or(!settings.composite))
+    fxaa_ = std::make_unique<engine::passes::FxaaPass>(context, k_color_format);
 }
 
 glm::mat4 LiquidRenderer::view_projection(const CameraView& camera) const {
@@ -48,9 +50,20 @@ RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const Li
   };
   check(targets.color, k_color_format, "colour");
   check(targets.depth, k_depth_format, "depth");
+  engine::vk::ImageDesc copy_desc = graph.image_desc(targets.color);
+  if (fxaa_ && !(copy_desc.usage & VK_IMAGE_USAGE_TRANSFER_SRC_BIT))
+    throw std::invalid_argument("liquid: FXAA in the host's colour target '" + graph.image_name(targets.color) +
+                                "' needs VK_IMAGE_USAGE_TRANSFER_SRC_BIT on it (or RenderSettings::fxaa = false)");
   const RaymarchPass::Outputs r = raymarch_->add_to(graph, images, settings_, camera, &targets);
   RenderOutputs out{r.color, r.depth, r.color};
-  if (fxaa_) out.final = fxaa_->add_to(graph, out.color);
+  if (fxaa_) {
+    // FXAA reads what it writes around each pixel, so the composite is copied out and filtered
+    // back into the host's target.
+    copy_desc.usage = 0;
+    const engine::graph::ImageHandle composite =
+        engine::graph::add_copy(graph, r.color, graph.create_image("liquid.composite", copy_desc), "liquid.composite_copy");
+    out.color = out.final = fxaa_->add_to(graph, composite, graph.latest(r.color));
+  }
   return out;
 }
 

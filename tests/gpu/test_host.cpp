@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cstring>
+#include <optional>
 #include <memory>
 
 using engine::vk::Image;
@@ -123,10 +124,12 @@ struct Composite {
 constexpr int k_composite_steps = 4;
 
 Composite composite_frame(liquid::LiquidNode& node, HostTargets& targets, int steps,
-                          const std::vector<std::array<float, 3>>& depth_bands) {
+                          const std::vector<std::array<float, 3>>& depth_bands, std::optional<bool> fxaa = false,
+                          engine::graph::ImageHandle* final_color = nullptr,
+                          engine::graph::ImageHandle* imported_color = nullptr) {
   engine::vk::Context& context = test::gpu();
   liquid::LiquidRenderer renderer(context, node,
-                                  {.width = k_width, .height = k_height, .fxaa = false, .composite = true});
+                                  {.width = k_width, .height = k_height, .fxaa = fxaa, .composite = true});
   engine::graph::RenderGraph graph(&context);
   engine::vk::CommandBuffer cmd(context);
   VkCommandBuffer c = cmd.begin();
@@ -138,7 +141,9 @@ Composite composite_frame(liquid::LiquidNode& node, HostTargets& targets, int st
     depth = engine::graph::add_upload(graph, depth, std::as_bytes(std::span(values)), "host.depth_bands");
   }
   const liquid::LiquidImages images = node.add_to(graph, steps);
-  renderer.add_to(graph, images, liquid::default_camera(node), {color, depth});
+  const liquid::RenderOutputs rendered = renderer.add_to(graph, images, liquid::default_camera(node), {color, depth});
+  if (final_color) *final_color = rendered.final;
+  if (imported_color) *imported_color = color;
   graph.compile();
   graph.execute(c);
   cmd.submit_and_wait();
@@ -262,6 +267,42 @@ TEST_CASE("the liquid composites into a host's own images, which the host reads 
   INFO(golden.message);
   CHECK(golden.passed);
   REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("FXAA is off by default when compositing, and when on it writes into the host's colour target", "[host]") {
+  auto frame = [](std::optional<bool> fxaa, engine::graph::ImageHandle* final_color = nullptr,
+                  engine::graph::ImageHandle* imported = nullptr) {
+    liquid::LiquidNode node(test::gpu(), test::shipped_scene("small_3d"));
+    HostTargets targets(test::gpu());
+    return composite_frame(node, targets, k_composite_steps, {}, fxaa, final_color, imported);
+  };
+  const Composite off = frame(false);
+  const Composite by_default = frame(std::nullopt);
+  CHECK(by_default.color.pixels == off.color.pixels);  // off unless asked for
+  engine::graph::ImageHandle final_color, imported;
+  const Composite on = frame(true, &final_color, &imported);
+  CHECK(final_color.id == imported.id);  // the host's own target, not a transient
+  size_t changed = 0, liquid_pixels = 0;
+  for (size_t p = 0; p < size_t(k_width) * k_height; ++p) {
+    if (!is_magenta(off.color, p)) ++liquid_pixels;
+    if (std::memcmp(&on.color.pixels[p * 4], &off.color.pixels[p * 4], 4) != 0) ++changed;
+  }
+  INFO(changed << " pixels smoothed of " << liquid_pixels << " liquid pixels");
+  CHECK(changed > 0);                     // edges were smoothed in the host's image
+  CHECK(changed < liquid_pixels);         // and only edges
+  REQUIRE_NO_VALIDATION_MESSAGES();
+
+  // A host colour target that cannot be copied from is refused before anything runs.
+  liquid::LiquidNode node(test::gpu(), test::shipped_scene("small_3d"));
+  liquid::LiquidRenderer renderer(test::gpu(), node, {.width = k_width, .height = k_height, .fxaa = true, .composite = true});
+  engine::graph::RenderGraph graph(&test::gpu());
+  const auto import = [&](const char* name, VkFormat format, VkImageUsageFlags usage) {
+    return graph.import_image(name, ImageDesc{ImageKind::Image2D, k_width, k_height, 1, format, usage}, {});
+  };
+  const liquid::HostTargets targets{import("host.color", liquid::k_color_format, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT),
+                                    import("host.depth", liquid::k_depth_format, k_depth_usage)};
+  CHECK_THROWS_WITH(renderer.add_to(graph, node.add_to(graph, 1), liquid::default_camera(node), targets),
+                    Catch::Contains("host.color") && Catch::Contains("VK_IMAGE_USAGE_TRANSFER_SRC_BIT"));
 }
 
 TEST_CASE("host geometry in front of the liquid hides it, host geometry behind it is covered", "[host]") {

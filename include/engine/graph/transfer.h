@@ -33,6 +33,11 @@ Readback add_readback(RenderGraph& graph, ImageHandle image, const std::string& 
 ImageHandle add_upload(RenderGraph& graph, ImageHandle image, std::span<const std::byte> bytes,
                        const std::string& pass_name = "upload");
 
+// Adds a pass copying the whole of `source` into `destination` (same kind, size and format;
+// `source` needs VK_IMAGE_USAGE_TRANSFER_SRC_BIT); returns the destination's new version.
+ImageHandle add_copy(RenderGraph& graph, ImageHandle source, ImageHandle destination,
+                     const std::string& pass_name = "copy");
+
 // Blocking helpers for host code outside a frame: one graph, one submission.
 std::vector<std::byte> download_image(vk::Context& context, vk::Image& image);
 void upload_image(vk::Context& context, vk::Image& image, std::span<const std::byte> bytes);

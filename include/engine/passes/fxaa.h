@@ -24,6 +24,10 @@ class FxaaPass {
   // Reads `input` in the fragment shader, writes and returns a new transient image.
   graph::ImageHandle add_to(graph::RenderGraph& graph, graph::ImageHandle input,
                             const FxaaSettings& settings = {}, const std::string& name = "fxaa") const;
+  // The same into `output` (a 2D image of the pass's format and the input's size, not the input):
+  // a host's own target, for instance. Returns its new version.
+  graph::ImageHandle add_to(graph::RenderGraph& graph, graph::ImageHandle input, graph::ImageHandle output,
+                            const FxaaSettings& settings = {}, const std::string& name = "fxaa") const;
 
  private:
   vk::GraphicsPipeline pipeline_;
