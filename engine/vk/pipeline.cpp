@@ -107,7 +107,7 @@ GraphicsPipeline::GraphicsPipeline(Context& context, const GraphicsPipelineDesc&
   VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
   depth.depthTestEnable = desc.depth_test;
   depth.depthWriteEnable = desc.depth_write;
-  depth.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
+  depth.depthCompareOp = desc.depth_compare;
   std::vector<VkPipelineColorBlendAttachmentState> attachments;
   for (size_t i = 0; i < desc.color_formats.size(); ++i)
     attachments.push_back(blend_state(i < desc.blend.size() ? desc.blend[i] : BlendMode::None));

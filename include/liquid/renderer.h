@@ -47,6 +47,20 @@ struct HostTargets {
   engine::graph::ImageHandle depth;
 };
 
+// A host's own view of the liquid, for compositing: its view and projection matrices (the liquid's
+// frame is the world: metres, the domain [0, domain], y up; Vulkan clip space, y down, depth 0..1),
+// whatever projection the host uses: perspective or orthographic, a finite or an infinite far plane,
+// jittered for TAA. `reversed_z`: the projection maps the near plane to depth 1 (the host clears
+// depth to 0 and keeps the greater depth; the liquid tests and writes its depth the same way).
+// `viewport`: the rectangle of the targets the view fills (empty: all of it), so several views
+// (split screen) composite one simulation step into one target, one add_to each.
+struct HostView {
+  glm::mat4 view{1.0f};
+  glm::mat4 projection{1.0f};
+  bool reversed_z = false;
+  VkRect2D viewport{};
+};
+
 struct RenderOutputs {
   engine::graph::ImageHandle color;  // RGBA8, before FXAA
   engine::graph::ImageHandle depth;  // D32 (3D views), metric depth of the first surface hit
@@ -69,11 +83,15 @@ class LiquidRenderer {
   // and `depth` of the result are the targets' new versions, after FXAA where it is on.
   RenderOutputs add_to(engine::graph::RenderGraph& graph, const LiquidImages& images, const CameraView& camera,
                        const HostTargets& targets);
+  // The same from the host's own view (see HostView); the host draws its geometry with the same
+  // matrices. Throws std::invalid_argument for a viewport outside the targets.
+  RenderOutputs add_to(engine::graph::RenderGraph& graph, const LiquidImages& images, const HostView& view,
+                       const HostTargets& targets);
   const RenderSettings& settings() const { return settings_; }
 
   // The view-projection (Vulkan clip space, y down, depth 0..1) the 3D view uses for `camera` at
-  // the renderer's aspect ratio: a host compositing with depth draws its geometry with this matrix
-  // so that its depths and the liquid's agree.
+  // the renderer's aspect ratio: a host compositing with depth through the library's camera draws
+  // its geometry with this matrix so that its depths and the liquid's agree.
   glm::mat4 view_projection(const CameraView& camera) const;
 
  private:

@@ -29,7 +29,7 @@ std::vector<int32_t> raymarch_specialization(const LiquidNode& node, bool compos
 }
 
 engine::vk::GraphicsPipelineDesc raymarch_pipeline_desc(const LiquidNode& node, const GridLayout& bricks,
-                                                       bool composite, bool background_only) {
+                                                       bool composite, bool background_only, bool reversed_z = false) {
   return engine::vk::GraphicsPipelineDesc{
       .name = background_only ? "liquid.raymarch.background" : "liquid.raymarch",
       .vertex = engine::passes::fullscreen_vertex_shader(),
@@ -40,6 +40,7 @@ engine::vk::GraphicsPipelineDesc raymarch_pipeline_desc(const LiquidNode& node, 
       .depth_format = k_depth_format,
       .depth_test = true,
       .depth_write = true,
+      .depth_compare = reversed_z ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL,
       .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
                    {LIQUID_BINDING_VIEW_UNIFORMS, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
                    {LIQUID_BINDING_RAYMARCH_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
@@ -51,8 +52,9 @@ engine::vk::GraphicsPipelineDesc raymarch_pipeline_desc(const LiquidNode& node, 
 // of its eight corners projected, a pixel wider each side for rounding; the whole frame when a
 // corner lies behind the camera. The pixel at (x, y) shows the ray through NDC 2 (x + 0.5) / width - 1
 // (fullscreen.vert and raymarch.frag).
-VkRect2D domain_screen_rect(const glm::mat4& view_projection, glm::vec3 domain, uint32_t width, uint32_t height) {
-  const VkRect2D frame{{0, 0}, {width, height}};
+VkRect2D domain_screen_rect(const glm::mat4& view_projection, glm::vec3 domain, VkRect2D viewport) {
+  const VkRect2D frame = viewport;
+  const uint32_t width = viewport.extent.width, height = viewport.extent.height;
   glm::vec2 lo(1e30f), hi(-1e30f);
   for (int corner = 0; corner < 8; ++corner) {
     const glm::vec3 p = domain * glm::vec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
@@ -66,7 +68,8 @@ VkRect2D domain_screen_rect(const glm::mat4& view_projection, glm::vec3 domain, 
   const glm::vec2 first = glm::clamp(glm::floor((lo * 0.5f + 0.5f) * size) - 1.0f, glm::vec2(0.0f), size);
   const glm::vec2 end = glm::clamp(glm::ceil((hi * 0.5f + 0.5f) * size) + 1.0f, glm::vec2(0.0f), size);
   if (end.x <= first.x || end.y <= first.y) return {{0, 0}, {0, 0}};
-  return {{int32_t(first.x), int32_t(first.y)}, {uint32_t(end.x - first.x), uint32_t(end.y - first.y)}};
+  return {{viewport.offset.x + int32_t(first.x), viewport.offset.y + int32_t(first.y)},
+          {uint32_t(end.x - first.x), uint32_t(end.y - first.y)}};
 }
 
 // The frame outside `inner`, as up to four bands: above, below, left and right of it.
@@ -102,6 +105,9 @@ RaymarchPass::RaymarchPass(engine::vk::Context& context, const LiquidNode& node,
                               .bindings = {{LIQUID_BINDING_OCCUPANCY_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
                               .push_constant_size = sizeof(gpu::OccupancyPush)}),
       raymarch_(context, raymarch_pipeline_desc(node, bricks_, composite, false)),
+      raymarch_reversed_z_(composite ? engine::vk::GraphicsPipeline(
+                                           context, raymarch_pipeline_desc(node, bricks_, true, false, true))
+                                     : engine::vk::GraphicsPipeline()),
       linear_(context, VK_FILTER_LINEAR),
       nearest_(context, VK_FILTER_NEAREST),
       uniforms_(context, node, sizeof(gpu::RaymarchUniforms)),
@@ -111,7 +117,7 @@ RaymarchPass::RaymarchPass(engine::vk::Context& context, const LiquidNode& node,
 }
 
 RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
-                                           const RenderSettings& settings, const CameraView& camera,
+                                           const RenderSettings& settings, const RaymarchView& view_input,
                                            const HostTargets* targets) {
   if (bool(targets) != composite_)
     throw std::logic_error(composite_ ? "liquid.raymarch: a compositing pass draws into host targets"
@@ -121,11 +127,21 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
 
   const glm::ivec3 bricks = bricks_.cells;
   const GridLayout& grid = node_.simulation().grid_layout();
-  const glm::mat4 vp = raymarch_view_projection(setup, camera, float(settings.width) / float(settings.height));
+  const glm::mat4& vp = view_input.view_projection;
+  const VkRect2D viewport = view_input.viewport;
+  if (viewport.extent.width == 0 || viewport.extent.height == 0 || viewport.offset.x < 0 || viewport.offset.y < 0 ||
+      viewport.offset.x + viewport.extent.width > settings.width ||
+      viewport.offset.y + viewport.extent.height > settings.height)
+    throw std::invalid_argument("liquid: the view's viewport " + std::to_string(viewport.extent.width) + "x" +
+                                std::to_string(viewport.extent.height) + " at (" + std::to_string(viewport.offset.x) +
+                                ", " + std::to_string(viewport.offset.y) + ") is not inside the " +
+                                std::to_string(settings.width) + "x" + std::to_string(settings.height) + " targets");
+  if (view_input.reversed_z && !composite_)
+    throw std::logic_error("liquid.raymarch: reversed Z is for a host's targets; the renderer's own frame is forward");
   gpu::RaymarchUniforms render{};
   render.inverse_view_projection = glm::inverse(vp);
   render.view_projection = vp;
-  render.camera_position = camera.position;
+  render.near_depth = view_input.reversed_z ? 1.0f : 0.0f;
   render.iso_level = settings.iso_level;
   render.sun_direction = glm::normalize(glm::vec3(0.45f, 0.8f, 0.35f));
   render.fine_step_cells = k_fine_step_cells;
@@ -170,6 +186,7 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
     engine::passes::PassBindings bindings;
     engine::passes::PassBindings background_bindings;
     VkRect2D box{};
+    VkViewport viewport{};
     std::vector<VkRect2D> around;
     Outputs out;
   };
@@ -184,8 +201,10 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
           bindings.bind_image(b, LIQUID_BINDING_RAYMARCH_OCCUPANCY, occupancy, nearest_.handle());
           return bindings;
         };
-        d.bindings = bind(raymarch_);
-        d.box = domain_screen_rect(vp, setup.domain, settings.width, settings.height);
+        d.bindings = bind(view_input.reversed_z ? raymarch_reversed_z_ : raymarch_);
+        d.box = domain_screen_rect(vp, setup.domain, viewport);
+        d.viewport = {float(viewport.offset.x), float(viewport.offset.y), float(viewport.extent.width),
+                      float(viewport.extent.height), 0.0f, 1.0f};
         if (!composite_) {
           d.background_bindings = bind(background_);
           d.around = frame_around(d.box, settings.width, settings.height);
@@ -203,6 +222,7 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
       [](PassContext& ctx, const RaymarchData& d) {
         if (d.box.extent.width > 0 && d.box.extent.height > 0) {
           d.bindings.bind_and_push(ctx);
+          vkCmdSetViewport(ctx.cmd, 0, 1, &d.viewport);  // the full-screen triangle covers the view
           vkCmdSetScissor(ctx.cmd, 0, 1, &d.box);
           engine::passes::draw_fullscreen(ctx.cmd);
         }

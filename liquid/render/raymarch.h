@@ -18,6 +18,14 @@ namespace liquid {
 // The view-projection the raymarch uses (near plane 1 cm, far plane beyond the domain and camera).
 glm::mat4 raymarch_view_projection(const SimulationSetup& setup, const CameraView& camera, float aspect);
 
+// What the raymarch draws from: a view-projection (Vulkan clip space, depth 0..1), whether its
+// near plane is at depth 1 (reversed Z), and the part of the targets the view covers.
+struct RaymarchView {
+  glm::mat4 view_projection{1.0f};
+  bool reversed_z = false;
+  VkRect2D viewport{};  // in the targets' pixels; its extent must not be empty
+};
+
 class RaymarchPass {
  public:
   // `composite`: draw the liquid alone into host targets (see HostTargets) instead of a full frame.
@@ -29,7 +37,7 @@ class RaymarchPass {
   };
   // With `targets` (a compositing pass), draws into them; otherwise into new images.
   Outputs add_to(engine::graph::RenderGraph& graph, const LiquidImages& images, const RenderSettings& settings,
-                 const CameraView& camera, const HostTargets* targets = nullptr);
+                 const RaymarchView& view, const HostTargets* targets = nullptr);
 
   static constexpr int k_brick_cells = 8;  // occupancy block edge, in grid cells
 
@@ -38,6 +46,7 @@ class RaymarchPass {
   GridLayout bricks_;  // the occupancy grid, stored like the node's grids
   engine::vk::GraphicsPipeline occupancy_;
   engine::vk::GraphicsPipeline raymarch_;
+  engine::vk::GraphicsPipeline raymarch_reversed_z_;  // compositing only: the host's reversed depth test
   engine::vk::GraphicsPipeline background_;  // BACKGROUND_ONLY, for pixels whose rays miss the box; not when compositing
   engine::vk::Sampler linear_;
   engine::vk::Sampler nearest_;

@@ -39,6 +39,11 @@ LiquidRenderer::~LiquidRenderer() = default;
 
 RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
                                      const CameraView& camera, const HostTargets& targets) {
+  return add_to(graph, images, HostView{.projection = view_projection(camera)}, targets);
+}
+
+RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
+                                     const HostView& view, const HostTargets& targets) {
   if (!settings_.composite) throw std::logic_error("liquid: add_to with host targets needs RenderSettings::composite");
   const auto check = [&](engine::graph::ImageHandle image, VkFormat format, const char* what) {
     const engine::vk::ImageDesc& d = graph.image_desc(image);
@@ -54,7 +59,11 @@ RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const Li
   if (fxaa_ && !(copy_desc.usage & VK_IMAGE_USAGE_TRANSFER_SRC_BIT))
     throw std::invalid_argument("liquid: FXAA in the host's colour target '" + graph.image_name(targets.color) +
                                 "' needs VK_IMAGE_USAGE_TRANSFER_SRC_BIT on it (or RenderSettings::fxaa = false)");
-  const RaymarchPass::Outputs r = raymarch_->add_to(graph, images, settings_, camera, &targets);
+  const VkRect2D whole{{0, 0}, {settings_.width, settings_.height}};
+  const RaymarchView raymarch_view{view.projection * view.view, view.reversed_z,
+                                   view.viewport.extent.width == 0 && view.viewport.extent.height == 0 ? whole
+                                                                                                      : view.viewport};
+  const RaymarchPass::Outputs r = raymarch_->add_to(graph, images, settings_, raymarch_view, &targets);
   RenderOutputs out{r.color, r.depth, r.color};
   if (fxaa_) {
     // FXAA reads what it writes around each pixel, so the composite is copied out and filtered
@@ -72,7 +81,8 @@ RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const Li
   if (settings_.composite) throw std::logic_error("liquid: a compositing renderer draws into host targets");
   RenderOutputs out;
   if (raymarch_) {
-    const RaymarchPass::Outputs r = raymarch_->add_to(graph, images, settings_, camera);
+    const RaymarchView own{view_projection(camera), false, {{0, 0}, {settings_.width, settings_.height}}};
+    const RaymarchPass::Outputs r = raymarch_->add_to(graph, images, settings_, own);
     out.color = r.color;
     out.depth = r.depth;
   } else if (height_field_) {

@@ -176,6 +176,7 @@ LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
     throw std::invalid_argument("liquid: " + std::to_string(steps) + " steps in one frame, at most " +
                                 std::to_string(max_steps_per_frame_) + " (LiquidOptions::max_steps_per_frame)");
   uniforms_->begin_frame();
+  ++frames_declared_;
   LiquidState& s = *state_;
   std::array<ParticleImages, 2> particles;
   for (int i = 0; i < 2; ++i)

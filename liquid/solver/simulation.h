@@ -71,6 +71,8 @@ class Simulation {
   // The solver's uniform block for the current state with no step in progress: what the views
   // read (obstacle poses at the node's time).
   gpu::SolverUniforms current_uniforms() const;
+  // How many frames add_to() has declared: the views start their uniform space once per frame.
+  uint64_t frames_declared() const { return frames_declared_; }
   // The state textures (particles, splat, grids).
   LiquidState& state() { return *state_; }
 
@@ -108,6 +110,7 @@ class Simulation {
   std::unique_ptr<engine::vk::UniformArena> uniforms_;
   std::unique_ptr<engine::vk::UniformArena> grid_uniforms_;  // add_grids_to()'s block, one per frame
   int max_steps_per_frame_ = 0;
+  uint64_t frames_declared_ = 0;
   double energy_bound_ = 0.0;
 
   int active_ = 0;

@@ -12,6 +12,8 @@
 #include "tests/support/image_compare.h"
 
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <array>
 #include <cstring>
@@ -69,13 +71,13 @@ void to_transfer(VkCommandBuffer cmd, Image& image, VkImageLayout layout, VkAcce
 
 // The host's own pass, outside the graph: the colour cleared to magenta, the depth to 1 (the far
 // plane). Leaves both as transfer writes.
-void host_clear(VkCommandBuffer cmd, HostTargets& t) {
+void host_clear(VkCommandBuffer cmd, HostTargets& t, float far_depth = 1.0f) {
   to_transfer(cmd, t.color, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_ACCESS_2_TRANSFER_WRITE_BIT, false);
   to_transfer(cmd, t.depth, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_ACCESS_2_TRANSFER_WRITE_BIT, false);
   const VkClearColorValue magenta{{1.0f, 0.0f, 1.0f, 1.0f}};
   const VkImageSubresourceRange color_range = t.color.full_range();
   vkCmdClearColorImage(cmd, t.color.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &magenta, 1, &color_range);
-  const VkClearDepthStencilValue far{1.0f, 0};
+  const VkClearDepthStencilValue far{far_depth, 0};
   const VkImageSubresourceRange depth_range = t.depth.full_range();
   vkCmdClearDepthStencilImage(cmd, t.depth.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &far, 1, &depth_range);
   t.color.sync_state() = ImageSyncState::after_write(VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
@@ -85,8 +87,8 @@ void host_clear(VkCommandBuffer cmd, HostTargets& t) {
 
 // Host objects as depth: bands [x0, x1) of every row at depth d, the rest at the far plane
 // (uploaded into the host's depth through the graph).
-std::vector<float> banded_depth(const std::vector<std::array<float, 3>>& bands) {
-  std::vector<float> depth(size_t(k_width) * k_height, 1.0f);
+std::vector<float> banded_depth(const std::vector<std::array<float, 3>>& bands, float far_depth) {
+  std::vector<float> depth(size_t(k_width) * k_height, far_depth);
   for (const auto& [x0, x1, d] : bands)
     for (uint32_t y = 0; y < k_height; ++y)
       for (uint32_t x = uint32_t(x0); x < uint32_t(x1); ++x) depth[size_t(y) * k_width + x] = d;
@@ -123,25 +125,35 @@ struct Composite {
 // small_3d's first 14 ms: 30 of the chapter's steps, 4 of the shipped ones.
 constexpr int k_composite_steps = 4;
 
-Composite composite_frame(liquid::LiquidNode& node, HostTargets& targets, int steps,
-                          const std::vector<std::array<float, 3>>& depth_bands, std::optional<bool> fxaa = false,
+// How the host draws a frame around the liquid.
+struct FrameOptions {
+  std::vector<std::array<float, 3>> depth_bands;  // host objects as depth (banded_depth)
+  std::optional<bool> fxaa = false;
+  std::vector<liquid::HostView> views;  // the host's own views, one add_to each; none: the library's camera
+  float far_depth = 1.0f;               // the host's depth clear: 0 for reversed Z
+};
+
+Composite composite_frame(liquid::LiquidNode& node, HostTargets& targets, int steps, const FrameOptions& o = {},
                           engine::graph::ImageHandle* final_color = nullptr,
                           engine::graph::ImageHandle* imported_color = nullptr) {
   engine::vk::Context& context = test::gpu();
   liquid::LiquidRenderer renderer(context, node,
-                                  {.width = k_width, .height = k_height, .fxaa = fxaa, .composite = true});
+                                  {.width = k_width, .height = k_height, .fxaa = o.fxaa, .composite = true});
   engine::graph::RenderGraph graph(&context);
   engine::vk::CommandBuffer cmd(context);
   VkCommandBuffer c = cmd.begin();
-  host_clear(c, targets);
+  host_clear(c, targets, o.far_depth);
   const engine::graph::ImageHandle color = graph.import_image("host.color", targets.color);
   engine::graph::ImageHandle depth = graph.import_image("host.depth", targets.depth);
-  if (!depth_bands.empty()) {
-    const std::vector<float> values = banded_depth(depth_bands);
+  if (!o.depth_bands.empty()) {
+    const std::vector<float> values = banded_depth(o.depth_bands, o.far_depth);
     depth = engine::graph::add_upload(graph, depth, std::as_bytes(std::span(values)), "host.depth_bands");
   }
   const liquid::LiquidImages images = node.add_to(graph, steps);
-  const liquid::RenderOutputs rendered = renderer.add_to(graph, images, liquid::default_camera(node), {color, depth});
+  liquid::RenderOutputs rendered;
+  if (o.views.empty()) rendered = renderer.add_to(graph, images, liquid::default_camera(node), {color, depth});
+  for (const liquid::HostView& view : o.views)
+    rendered = renderer.add_to(graph, images, view, {graph.latest(color), graph.latest(depth)});
   if (final_color) *final_color = rendered.final;
   if (imported_color) *imported_color = color;
   graph.compile();
@@ -274,7 +286,7 @@ TEST_CASE("FXAA is off by default when compositing, and when on it writes into t
                   engine::graph::ImageHandle* imported = nullptr) {
     liquid::LiquidNode node(test::gpu(), test::shipped_scene("small_3d"));
     HostTargets targets(test::gpu());
-    return composite_frame(node, targets, k_composite_steps, {}, fxaa, final_color, imported);
+    return composite_frame(node, targets, k_composite_steps, {.fxaa = fxaa}, final_color, imported);
   };
   const Composite off = frame(false);
   const Composite by_default = frame(std::nullopt);
@@ -305,6 +317,152 @@ TEST_CASE("FXAA is off by default when compositing, and when on it writes into t
                     Catch::Contains("host.color") && Catch::Contains("VK_IMAGE_USAGE_TRANSFER_SRC_BIT"));
 }
 
+namespace {
+
+// A host's camera: the library's default one, with the host's own projection.
+liquid::HostView host_view(const liquid::LiquidNode& node, const glm::mat4& projection, bool reversed_z,
+                           VkRect2D viewport = {}) {
+  const liquid::CameraView camera = liquid::default_camera(node);
+  return {glm::lookAtRH(camera.position, camera.target, camera.up), projection, reversed_z, viewport};
+}
+
+// Vulkan clip space: y down.
+glm::mat4 flip_y(glm::mat4 projection) {
+  projection[1][1] *= -1.0f;
+  return projection;
+}
+
+// Reversed Z with an infinite far plane: depth near / -z, 1 at the near plane, 0 at infinity.
+glm::mat4 reversed_infinite(float fov_y, float aspect, float near_plane) {
+  const float f = 1.0f / std::tan(0.5f * fov_y);
+  glm::mat4 p(0.0f);
+  p[0][0] = f / aspect;
+  p[1][1] = -f;
+  p[2][3] = -1.0f;
+  p[3][2] = near_plane;
+  return p;
+}
+
+size_t differing_pixels(const engine::vk::Rgba8Image& a, const engine::vk::Rgba8Image& b, size_t& liquid) {
+  size_t differ = 0;
+  liquid = 0;
+  for (size_t p = 0; p < size_t(k_width) * k_height; ++p) {
+    if (!is_magenta(a, p)) ++liquid;
+    for (int c = 0; c < 4; ++c)
+      if (std::abs(int(a.pixels[p * 4 + c]) - int(b.pixels[p * 4 + c])) > 8) {
+        ++differ;
+        break;
+      }
+  }
+  return differ;
+}
+
+}  // namespace
+
+TEST_CASE("the host's own view and projection composite the liquid, with forward or reversed Z", "[host]") {
+  engine::vk::Context& context = test::gpu();
+  auto frame = [&](const FrameOptions& o) {
+    liquid::LiquidNode node(context, test::shipped_scene("small_3d"));
+    HostTargets targets(context);
+    return composite_frame(node, targets, k_composite_steps, o);
+  };
+  liquid::LiquidNode probe(context, test::shipped_scene("small_3d"));
+  const float fov = glm::radians(liquid::default_camera(probe).fov_y_degrees);
+  const float aspect = float(k_width) / float(k_height);
+  const Composite library = frame({});
+  // The host's forward projection, with near and far planes of its own: the same picture.
+  const Composite forward =
+      frame({.views = {host_view(probe, flip_y(glm::perspectiveRH_ZO(fov, aspect, 0.05f, 40.0f)), false)}});
+  size_t liquid = 0;
+  const size_t forward_differ = differing_pixels(library.color, forward.color, liquid);
+  INFO(forward_differ << " of " << liquid << " liquid pixels differ");
+  CHECK(forward_differ <= liquid / 100);
+  REQUIRE(liquid > 500);
+  // Reversed Z with an infinite far plane: the same picture; the host clears depth to 0.
+  const liquid::HostView reversed = host_view(probe, reversed_infinite(fov, aspect, 0.05f), true);
+  const Composite open = frame({.views = {reversed}, .far_depth = 0.0f});
+  const size_t reversed_differ = differing_pixels(library.color, open.color, liquid);
+  INFO(reversed_differ << " of " << liquid << " liquid pixels differ with reversed Z");
+  CHECK(reversed_differ <= liquid / 100);
+  // Host geometry in front (depth 1 is the near plane) hides the left half of the liquid; behind,
+  // over its right half, it is covered.
+  uint32_t x_min = k_width, x_max = 0;
+  for (uint32_t y = 0; y < k_height; ++y)
+    for (uint32_t x = 0; x < k_width; ++x)
+      if (!is_magenta(open.color, size_t(y) * k_width + x)) x_min = std::min(x_min, x), x_max = std::max(x_max, x);
+  const float middle = std::floor(0.5f * float(x_min + x_max));
+  const Composite banded = frame({.depth_bands = {{0.0f, middle, 1.0f}, {middle, float(k_width), 1e-6f}},
+                                  .views = {reversed},
+                                  .far_depth = 0.0f});
+  size_t hidden = 0, covered = 0;
+  for (uint32_t y = 0; y < k_height; ++y)
+    for (uint32_t x = 0; x < k_width; ++x) {
+      const size_t i = size_t(y) * k_width + x;
+      if (is_magenta(open.color, i)) continue;
+      CHECK(open.depth[i] > 0.0f);  // the liquid's reversed depth, written into the host's
+      if (float(x) < middle) {
+        CHECK(is_magenta(banded.color, i));
+        ++hidden;
+      } else {
+        CHECK_FALSE(is_magenta(banded.color, i));
+        CHECK(banded.depth[i] == open.depth[i]);
+        ++covered;
+      }
+    }
+  INFO(hidden << " hidden, " << covered << " covered");
+  CHECK(hidden > 50);
+  CHECK(covered > 50);
+  REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("two views of one step share a target side by side, and an orthographic view draws too", "[host]") {
+  engine::vk::Context& context = test::gpu();
+  liquid::LiquidNode probe(context, test::shipped_scene("small_3d"));
+  const float fov = glm::radians(liquid::default_camera(probe).fov_y_degrees);
+  const uint32_t half = k_width / 2;
+  const glm::mat4 projection = flip_y(glm::perspectiveRH_ZO(fov, float(half) / float(k_height), 0.05f, 40.0f));
+  liquid::LiquidNode node(context, test::shipped_scene("small_3d"));
+  HostTargets targets(context);
+  const Composite split = composite_frame(
+      node, targets, k_composite_steps,
+      {.views = {host_view(probe, projection, false, {{0, 0}, {half, k_height}}),
+                 host_view(probe, projection, false, {{int32_t(half), 0}, {half, k_height}})}});
+  size_t left = 0, right = 0, unequal = 0;
+  for (uint32_t y = 0; y < k_height; ++y)
+    for (uint32_t x = 0; x < half; ++x) {
+      const size_t l = size_t(y) * k_width + x, r = l + half;
+      left += !is_magenta(split.color, l);
+      right += !is_magenta(split.color, r);
+      unequal += std::memcmp(&split.color.pixels[l * 4], &split.color.pixels[r * 4], 4) != 0;
+    }
+  INFO(left << " liquid pixels left, " << right << " right, " << unequal << " unequal");
+  CHECK(left > 200);
+  CHECK(unequal == 0);  // the same view in both halves: the same pixels
+
+  // Orthographic: rays parallel, each from its own point of the near plane.
+  const glm::vec3 domain = node.simulation().setup().domain;
+  const float extent = 0.8f * glm::length(domain);
+  liquid::LiquidNode ortho_node(context, test::shipped_scene("small_3d"));
+  HostTargets ortho_targets(context);
+  const Composite ortho = composite_frame(
+      ortho_node, ortho_targets, k_composite_steps,
+      {.views = {host_view(probe, flip_y(glm::orthoRH_ZO(-extent, extent, -0.75f * extent, 0.75f * extent, 0.01f, 20.0f)),
+                           false)}});
+  size_t ortho_liquid = 0;
+  for (size_t p = 0; p < size_t(k_width) * k_height; ++p) ortho_liquid += !is_magenta(ortho.color, p);
+  CHECK(ortho_liquid > 200);
+  REQUIRE_NO_VALIDATION_MESSAGES();
+
+  // A viewport outside the targets is refused before anything runs.
+  liquid::LiquidRenderer renderer(context, node, {.width = k_width, .height = k_height, .composite = true});
+  engine::graph::RenderGraph graph(&context);
+  const liquid::HostTargets handles{graph.import_image("host.color", targets.color),
+                                    graph.import_image("host.depth", targets.depth)};
+  CHECK_THROWS_WITH(renderer.add_to(graph, node.add_to(graph, 0), host_view(probe, projection, false, {{int32_t(half) + 1, 0}, {half, k_height}}),
+                                    handles),
+                    Catch::Contains("viewport") && Catch::Contains("not inside"));
+}
+
 TEST_CASE("host geometry in front of the liquid hides it, host geometry behind it is covered", "[host]") {
   engine::vk::Context& context = test::gpu();
   liquid::LiquidNode plain_node(context, test::shipped_scene("small_3d"));
@@ -319,7 +477,8 @@ TEST_CASE("host geometry in front of the liquid hides it, host geometry behind i
   REQUIRE(x_min < x_max);
   const float x_front = 0.5f * float(x_min + x_max), x_behind = x_front;
   liquid::LiquidNode node(context, test::shipped_scene("small_3d"));
-  const Composite banded = composite_frame(node, targets, k_composite_steps, {{0.0f, x_front, 0.0f}, {x_behind, float(k_width), 0.99999f}});
+  const Composite banded = composite_frame(node, targets, k_composite_steps,
+                                           {.depth_bands = {{0.0f, x_front, 0.0f}, {x_behind, float(k_width), 0.99999f}}});
   size_t hidden = 0, covered = 0;
   for (uint32_t y = 0; y < k_height; ++y)
     for (uint32_t x = 0; x < k_width; ++x) {

@@ -41,6 +41,9 @@ struct GraphicsPipelineDesc {
   VkFormat depth_format = VK_FORMAT_UNDEFINED;
   bool depth_test = false;
   bool depth_write = false;
+  // Which fragment passes the depth test: LESS_OR_EQUAL for depth 0 at the near plane, the host's
+  // GREATER_OR_EQUAL for reversed Z (1 at the near plane).
+  VkCompareOp depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
   std::vector<DescriptorBinding> bindings;
   uint32_t push_constant_size = 0;  // bytes, at most 128 (lavapipe's limit)
   // Specialization constants for every stage: entry i sets constant_id i (32-bit int or bool).

@@ -256,10 +256,14 @@ float clip_depth(vec3 p) {
 }
 
 void main() {
+  // The ray through this pixel from the near plane, for any projection: perspective or
+  // orthographic, forward or reversed Z, a finite or an infinite far plane (the second point is
+  // halfway in clip depth, finite for all of them).
   vec2 ndc = v_uv * 2.0 - 1.0;
-  vec4 far_point = r.inverse_view_projection * vec4(ndc, 1.0, 1.0);
-  vec3 origin = r.camera_position;
-  vec3 dir = normalize(far_point.xyz / far_point.w - origin);
+  vec4 near_point = r.inverse_view_projection * vec4(ndc, r.near_depth, 1.0);
+  vec4 mid_point = r.inverse_view_projection * vec4(ndc, 0.5, 1.0);
+  vec3 origin = near_point.xyz / near_point.w;
+  vec3 dir = normalize(mid_point.xyz / mid_point.w - origin);
 
   vec2 span = intersect_box(origin, 1.0 / dir, vec3(0.0), u.domain);
   float t_liquid = k_no_hit;

@@ -24,14 +24,14 @@ namespace liquid::gpu {
 LIQUID_STRUCT(RaymarchUniforms) {
   mat4 inverse_view_projection;
   mat4 view_projection;
-  vec3 camera_position;    // m
-  float iso_level;         // the surface: rho / rho0 crosses this
   vec3 sun_direction;      // towards the sun, unit
-  float fine_step_cells;   // march step inside occupied bricks
+  float iso_level;         // the surface: rho / rho0 crosses this
   ivec3 bricks;            // occupancy volume size
   float brick_cells;       // occupancy brick edge, cells
+  float fine_step_cells;   // march step inside occupied bricks
   int brick_columns;       // the atlas path: the occupancy atlas's tiles (liquid/solver/grid_layout.h);
   int brick_rows;          // 1 and 1 otherwise
+  float near_depth;        // clip-space depth of the near plane: 0, or 1 for reversed Z
 };
 
 // Occupancy (occupancy.frag), push constants.
