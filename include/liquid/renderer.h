@@ -47,14 +47,17 @@ struct HostTargets {
   engine::graph::ImageHandle depth;
 };
 
-// A host's own view of the liquid, for compositing: its view and projection matrices (the liquid's
-// frame is the world: metres, the domain [0, domain], y up; Vulkan clip space, y down, depth 0..1),
-// whatever projection the host uses: perspective or orthographic, a finite or an infinite far plane,
-// jittered for TAA. `reversed_z`: the projection maps the near plane to depth 1 (the host clears
+// A host's own view of the liquid, for compositing: its view and projection matrices (Vulkan clip
+// space, y down, depth 0..1), whatever projection the host uses: perspective or orthographic, a
+// finite or an infinite far plane, jittered for TAA. `model` places the liquid's frame (metres, the
+// domain [0, domain], y up) in the host's world: a rotation, a translation and a uniform scale (the
+// tank of water somewhere in the level); the solver, obstacle poses, brushes and read-backs stay in
+// the liquid's frame (map them with glm::inverse(model)). `reversed_z`: the projection maps the near plane to depth 1 (the host clears
 // depth to 0 and keeps the greater depth; the liquid tests and writes its depth the same way).
 // `viewport`: the rectangle of the targets the view fills (empty: all of it), so several views
 // (split screen) composite one simulation step into one target, one add_to each.
 struct HostView {
+  glm::mat4 model{1.0f};
   glm::mat4 view{1.0f};
   glm::mat4 projection{1.0f};
   bool reversed_z = false;

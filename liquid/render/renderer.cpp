@@ -60,7 +60,7 @@ RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const Li
     throw std::invalid_argument("liquid: FXAA in the host's colour target '" + graph.image_name(targets.color) +
                                 "' needs VK_IMAGE_USAGE_TRANSFER_SRC_BIT on it (or RenderSettings::fxaa = false)");
   const VkRect2D whole{{0, 0}, {settings_.width, settings_.height}};
-  const RaymarchView raymarch_view{view.projection * view.view, view.reversed_z,
+  const RaymarchView raymarch_view{view.projection * view.view * view.model, view.reversed_z,
                                    view.viewport.extent.width == 0 && view.viewport.extent.height == 0 ? whole
                                                                                                       : view.viewport};
   const RaymarchPass::Outputs r = raymarch_->add_to(graph, images, settings_, raymarch_view, &targets);

@@ -323,7 +323,10 @@ namespace {
 liquid::HostView host_view(const liquid::LiquidNode& node, const glm::mat4& projection, bool reversed_z,
                            VkRect2D viewport = {}) {
   const liquid::CameraView camera = liquid::default_camera(node);
-  return {glm::lookAtRH(camera.position, camera.target, camera.up), projection, reversed_z, viewport};
+  return {.view = glm::lookAtRH(camera.position, camera.target, camera.up),
+          .projection = projection,
+          .reversed_z = reversed_z,
+          .viewport = viewport};
 }
 
 // Vulkan clip space: y down.
@@ -384,6 +387,18 @@ TEST_CASE("the host's own view and projection composite the liquid, with forward
   const size_t reversed_differ = differing_pixels(library.color, open.color, liquid);
   INFO(reversed_differ << " of " << liquid << " liquid pixels differ with reversed Z");
   CHECK(reversed_differ <= liquid / 100);
+  // The tank placed in the host's world (rotated, moved, scaled) and seen by a camera that moved
+  // with it: the same picture, so the placement reaches the march and the depth.
+  const glm::mat4 model = glm::translate(glm::mat4(1.0f), glm::vec3(12.0f, -3.0f, 40.0f)) *
+                          glm::rotate(glm::mat4(1.0f), 0.7f, glm::normalize(glm::vec3(0.3f, 1.0f, 0.2f))) *
+                          glm::scale(glm::mat4(1.0f), glm::vec3(2.5f));
+  liquid::HostView placed = reversed;
+  placed.model = model;
+  placed.view = reversed.view * glm::inverse(model);
+  const Composite moved = frame({.views = {placed}, .far_depth = 0.0f});
+  const size_t placed_differ = differing_pixels(open.color, moved.color, liquid);
+  INFO(placed_differ << " of " << liquid << " liquid pixels differ placed in the world");
+  CHECK(placed_differ <= liquid / 100);
   // Host geometry in front (depth 1 is the near plane) hides the left half of the liquid; behind,
   // over its right half, it is covered.
   uint32_t x_min = k_width, x_max = 0;
