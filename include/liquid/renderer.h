@@ -35,10 +35,16 @@ struct RenderSettings {
   // 3D: draw into the host's own colour and depth targets (add_to with HostTargets) instead of a
   // frame of the renderer's own with its floor, sky and tank.
   bool composite = false;
+  // Compositing into an HDR target (R16G16B16A16_SFLOAT, B10G11R11_UFLOAT_PACK32): the liquid's
+  // linear radiance is multiplied by this, in the host's units before its tone mapping.
+  float exposure = 1.0f;
 };
 
-// A host's own targets for compositing (RenderSettings::composite): its colour (RGBA8 UNORM) and
-// depth (D32_SFLOAT) images at the renderer's size, imported into the graph with their contents
+// A host's own targets for compositing (RenderSettings::composite): its colour and depth
+// (D32_SFLOAT) images at the renderer's size. The colour may be R8G8B8A8 or B8G8R8A8, UNORM (the
+// liquid's colour display-encoded) or SRGB (linear, the hardware encodes it), A2B10G10R10_UNORM, or
+// the HDR R16G16B16A16_SFLOAT and B10G11R11_UFLOAT (linear radiance times RenderSettings::exposure);
+// single-sampled, as every image the graph makes or imports is. Both are imported into the graph with their contents
 // (engine::vk::Image::wrap + RenderGraph::import_image). The liquid is blended over the colour
 // where its surface is nearer than the host's depth, and writes its own depth there, so host
 // geometry in front hides the liquid and the host's later passes see the liquid's depth.

@@ -18,23 +18,27 @@ namespace {
 constexpr float k_fine_step_cells = 0.6f;
 
 // The scene's constants plus the raymarch's own (LIQUID_RAYMARCH_COMPOSITE_ID, then
-// LIQUID_RAYMARCH_BACKGROUND_ONLY_ID).
-std::vector<int32_t> raymarch_specialization(const LiquidNode& node, bool composite, bool background_only) {
+// LIQUID_RAYMARCH_BACKGROUND_ONLY_ID and LIQUID_RAYMARCH_OUTPUT_ID).
+std::vector<int32_t> raymarch_specialization(const LiquidNode& node, bool composite, bool background_only,
+                                             int output) {
   static_assert(LIQUID_RAYMARCH_COMPOSITE_ID == specialization_id::count, "the raymarch's constants follow the scene's");
   static_assert(LIQUID_RAYMARCH_BACKGROUND_ONLY_ID == LIQUID_RAYMARCH_COMPOSITE_ID + 1);
+  static_assert(LIQUID_RAYMARCH_OUTPUT_ID == LIQUID_RAYMARCH_BACKGROUND_ONLY_ID + 1);
   std::vector<int32_t> constants = scene_specialization(node.scene(), node.simulation().setup());
   constants.push_back(composite ? 1 : 0);
   constants.push_back(background_only ? 1 : 0);
+  constants.push_back(output);
   return constants;
 }
 
 engine::vk::GraphicsPipelineDesc raymarch_pipeline_desc(const LiquidNode& node, const GridLayout& bricks,
-                                                       bool composite, bool background_only, bool reversed_z = false) {
+                                                       bool composite, bool background_only, bool reversed_z = false,
+                                                       VkFormat color_format = k_color_format) {
   return engine::vk::GraphicsPipelineDesc{
       .name = background_only ? "liquid.raymarch.background" : "liquid.raymarch",
       .vertex = engine::passes::fullscreen_vertex_shader(),
       .fragment = bricks.atlas() ? liquid_shaders::raymarch_frag_atlas : liquid_shaders::raymarch_frag,
-      .color_formats = {k_color_format},
+      .color_formats = {color_format},
       // Composited: blended over the host's colour (the shader writes the liquid's coverage in alpha).
       .blend = {composite ? engine::vk::BlendMode::Alpha : engine::vk::BlendMode::None},
       .depth_format = k_depth_format,
@@ -45,7 +49,8 @@ engine::vk::GraphicsPipelineDesc raymarch_pipeline_desc(const LiquidNode& node, 
                    {LIQUID_BINDING_VIEW_UNIFORMS, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
                    {LIQUID_BINDING_RAYMARCH_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
                    {LIQUID_BINDING_RAYMARCH_OCCUPANCY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
-      .specialization = raymarch_specialization(node, composite, background_only)};
+      .specialization = raymarch_specialization(node, composite, background_only,
+                                                composite ? composite_output_encoding(color_format).value_or(0) : 0)};
 }
 
 // The pixels (half-open, clamped to the frame) that rays into the domain box can cover: the bounds
@@ -87,6 +92,23 @@ std::vector<VkRect2D> frame_around(VkRect2D inner, uint32_t width, uint32_t heig
 
 }  // namespace
 
+std::optional<int> composite_output_encoding(VkFormat format) {
+  switch (format) {
+    case VK_FORMAT_R8G8B8A8_UNORM:
+    case VK_FORMAT_B8G8R8A8_UNORM:
+    case VK_FORMAT_A2B10G10R10_UNORM_PACK32:
+      return LIQUID_OUTPUT_DISPLAY;
+    case VK_FORMAT_R8G8B8A8_SRGB:
+    case VK_FORMAT_B8G8R8A8_SRGB:
+      return LIQUID_OUTPUT_LINEAR;
+    case VK_FORMAT_R16G16B16A16_SFLOAT:
+    case VK_FORMAT_B10G11R11_UFLOAT_PACK32:
+      return LIQUID_OUTPUT_HDR;
+    default:
+      return std::nullopt;
+  }
+}
+
 glm::mat4 raymarch_view_projection(const SimulationSetup& setup, const CameraView& camera, float aspect) {
   const float far_plane = 4.0f * glm::length(setup.domain) + glm::length(camera.position - camera.target) * 2.0f;
   return view_projection(camera, aspect, 0.01f, far_plane);
@@ -104,10 +126,10 @@ RaymarchPass::RaymarchPass(engine::vk::Context& context, const LiquidNode& node,
                               .color_formats = {VK_FORMAT_R16_SFLOAT},
                               .bindings = {{LIQUID_BINDING_OCCUPANCY_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
                               .push_constant_size = sizeof(gpu::OccupancyPush)}),
-      raymarch_(context, raymarch_pipeline_desc(node, bricks_, composite, false)),
-      raymarch_reversed_z_(composite ? engine::vk::GraphicsPipeline(
-                                           context, raymarch_pipeline_desc(node, bricks_, true, false, true))
-                                     : engine::vk::GraphicsPipeline()),
+      // Compositing takes a pipeline per host format instead (composite_pipelines_).
+      raymarch_(composite ? engine::vk::GraphicsPipeline()
+                          : engine::vk::GraphicsPipeline(context, raymarch_pipeline_desc(node, bricks_, false, false))),
+      context_(context),
       linear_(context, VK_FILTER_LINEAR),
       nearest_(context, VK_FILTER_NEAREST),
       uniforms_(context, node, sizeof(gpu::RaymarchUniforms)),
@@ -138,10 +160,21 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
                                 std::to_string(settings.width) + "x" + std::to_string(settings.height) + " targets");
   if (view_input.reversed_z && !composite_)
     throw std::logic_error("liquid.raymarch: reversed Z is for a host's targets; the renderer's own frame is forward");
+  // Compositing: the pipeline for the host's colour format and depth convention, made once.
+  const engine::vk::GraphicsPipeline* pipeline = &raymarch_;
+  if (composite_) {
+    const VkFormat format = graph.image_desc(targets->color).format;
+    auto& cached = composite_pipelines_[{format, view_input.reversed_z}];
+    if (!cached)
+      cached = std::make_unique<engine::vk::GraphicsPipeline>(
+          context_, raymarch_pipeline_desc(node_, bricks_, true, false, view_input.reversed_z, format));
+    pipeline = cached.get();
+  }
   gpu::RaymarchUniforms render{};
   render.inverse_view_projection = glm::inverse(vp);
   render.view_projection = vp;
   render.near_depth = view_input.reversed_z ? 1.0f : 0.0f;
+  render.exposure = settings.exposure;
   render.iso_level = settings.iso_level;
   render.sun_direction = glm::normalize(glm::vec3(0.45f, 0.8f, 0.35f));
   render.fine_step_cells = k_fine_step_cells;
@@ -201,7 +234,7 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
           bindings.bind_image(b, LIQUID_BINDING_RAYMARCH_OCCUPANCY, occupancy, nearest_.handle());
           return bindings;
         };
-        d.bindings = bind(view_input.reversed_z ? raymarch_reversed_z_ : raymarch_);
+        d.bindings = bind(*pipeline);
         d.box = domain_screen_rect(vp, setup.domain, viewport);
         d.viewport = {float(viewport.offset.x), float(viewport.offset.y), float(viewport.extent.width),
                       float(viewport.extent.height), 0.0f, 1.0f};

@@ -13,7 +13,17 @@
 #include "liquid/renderer.h"
 #include "liquid/solver/grid_layout.h"
 
+#include <map>
+#include <memory>
+#include <optional>
+#include <utility>
+
 namespace liquid {
+
+// How the raymarch writes a host's colour target of this format when compositing
+// (LIQUID_OUTPUT_DISPLAY, _LINEAR or _HDR of shaders/liquid/render/view_blocks.h); empty for a
+// format it cannot composite into.
+std::optional<int> composite_output_encoding(VkFormat format);
 
 // The view-projection the raymarch uses (near plane 1 cm, far plane beyond the domain and camera).
 glm::mat4 raymarch_view_projection(const SimulationSetup& setup, const CameraView& camera, float aspect);
@@ -46,7 +56,9 @@ class RaymarchPass {
   GridLayout bricks_;  // the occupancy grid, stored like the node's grids
   engine::vk::GraphicsPipeline occupancy_;
   engine::vk::GraphicsPipeline raymarch_;
-  engine::vk::GraphicsPipeline raymarch_reversed_z_;  // compositing only: the host's reversed depth test
+  engine::vk::Context& context_;
+  // Compositing: one pipeline per host colour format and depth convention, made on first use.
+  std::map<std::pair<VkFormat, bool>, std::unique_ptr<engine::vk::GraphicsPipeline>> composite_pipelines_;
   engine::vk::GraphicsPipeline background_;  // BACKGROUND_ONLY, for pixels whose rays miss the box; not when compositing
   engine::vk::Sampler linear_;
   engine::vk::Sampler nearest_;

@@ -45,16 +45,27 @@ RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const Li
 RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
                                      const HostView& view, const HostTargets& targets) {
   if (!settings_.composite) throw std::logic_error("liquid: add_to with host targets needs RenderSettings::composite");
-  const auto check = [&](engine::graph::ImageHandle image, VkFormat format, const char* what) {
+  const auto check = [&](engine::graph::ImageHandle image, const char* what) {
     const engine::vk::ImageDesc& d = graph.image_desc(image);
-    if (d.kind != engine::vk::ImageKind::Image2D || d.format != format || d.width != settings_.width ||
-        d.height != settings_.height)
+    if (d.kind != engine::vk::ImageKind::Image2D || d.width != settings_.width || d.height != settings_.height)
       throw std::invalid_argument(std::string("liquid: the host's ") + what + " target '" + graph.image_name(image) +
                                   "' must be a " + std::to_string(settings_.width) + "x" +
-                                  std::to_string(settings_.height) + " 2D image of the renderer's format");
+                                  std::to_string(settings_.height) + " 2D image");
+    return d.format;
   };
-  check(targets.color, k_color_format, "colour");
-  check(targets.depth, k_depth_format, "depth");
+  const VkFormat color_format = check(targets.color, "colour");
+  if (!composite_output_encoding(color_format) ||
+      !node_.context().format_supports(color_format, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT))
+    throw std::invalid_argument("liquid: the host's colour target '" + graph.image_name(targets.color) + "' has format " +
+                                std::to_string(int(color_format)) +
+                                ", which the liquid does not composite into (R8G8B8A8 or B8G8R8A8 UNORM or SRGB, "
+                                "A2B10G10R10_UNORM, R16G16B16A16_SFLOAT or B10G11R11_UFLOAT, blendable on the device)");
+  if (check(targets.depth, "depth") != k_depth_format)
+    throw std::invalid_argument("liquid: the host's depth target '" + graph.image_name(targets.depth) +
+                                "' must be D32_SFLOAT (other depth formats are not supported yet)");
+  if (fxaa_ && color_format != k_color_format)
+    throw std::invalid_argument("liquid: FXAA into the host's colour target '" + graph.image_name(targets.color) +
+                                "' needs R8G8B8A8_UNORM (or RenderSettings::fxaa = false)");
   engine::vk::ImageDesc copy_desc = graph.image_desc(targets.color);
   if (fxaa_ && !(copy_desc.usage & VK_IMAGE_USAGE_TRANSFER_SRC_BIT))
     throw std::invalid_argument("liquid: FXAA in the host's colour target '" + graph.image_name(targets.color) +

@@ -117,12 +117,14 @@ TEST_CASE("shaders declare the specialization ids the host fills in", "[shaders]
   for (const auto& [name, spirv] : modules) {
     INFO(name);
     std::map<std::string, uint32_t> found = specialization_ids(spirv);
-    // The raymarch has two of its own after the scene's (liquid/render/raymarch.cpp checks the id).
+    // The raymarch has three of its own after the scene's (liquid/render/raymarch.cpp checks the id).
     if (name == "raymarch" || name == "raymarch atlas") {
       CHECK(found["COMPOSITE"] == uint32_t(LIQUID_RAYMARCH_COMPOSITE_ID));
       CHECK(found["BACKGROUND_ONLY"] == uint32_t(LIQUID_RAYMARCH_BACKGROUND_ONLY_ID));
+      CHECK(found["OUTPUT_ENCODING"] == uint32_t(LIQUID_RAYMARCH_OUTPUT_ID));
       found.erase("COMPOSITE");
       found.erase("BACKGROUND_ONLY");
+      found.erase("OUTPUT_ENCODING");
     }
     // Each module declares all of them (they come from one include) and each with the host's id.
     CHECK(found == expected);
@@ -179,7 +181,8 @@ TEST_CASE("the views' uniform and push-constant blocks have the same layout in C
         MEMBER(RaymarchUniforms, iso_level), MEMBER(RaymarchUniforms, sun_direction),
         MEMBER(RaymarchUniforms, fine_step_cells), MEMBER(RaymarchUniforms, bricks),
         MEMBER(RaymarchUniforms, brick_cells), MEMBER(RaymarchUniforms, brick_columns),
-        MEMBER(RaymarchUniforms, brick_rows), MEMBER(RaymarchUniforms, near_depth)}},
+        MEMBER(RaymarchUniforms, brick_rows), MEMBER(RaymarchUniforms, near_depth),
+        MEMBER(RaymarchUniforms, exposure)}},
       {"raymarch atlas", {MEMBER(RaymarchUniforms, brick_columns), MEMBER(RaymarchUniforms, brick_rows)}},
       {"occupancy", {MEMBER(OccupancyPush, brick_cells)}},
       {"occupancy atlas",

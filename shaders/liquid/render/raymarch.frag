@@ -22,6 +22,7 @@ layout(set = 0, binding = LIQUID_BINDING_RAYMARCH_OCCUPANCY) uniform GRID_SAMPLE
 // own; the liquid is blended over the host's colour with its coverage in alpha, and pixels that
 // show no liquid are left to the host.
 layout(constant_id = LIQUID_RAYMARCH_COMPOSITE_ID) const bool COMPOSITE = false;
+layout(constant_id = LIQUID_RAYMARCH_OUTPUT_ID) const int OUTPUT_ENCODING = LIQUID_OUTPUT_DISPLAY;
 // For the pixels outside the domain box's screen rectangle (raymarch.cpp): their rays cannot reach
 // the liquid, so the march and the liquid's shading are left out, not merely skipped (lavapipe runs
 // both sides of every branch).
@@ -303,10 +304,16 @@ void main() {
       vec3 transmittance = exp(-k_absorption * (thickness + 0.02));
       float through = (1.0 - fresnel) * dot(transmittance, vec3(1.0 / 3.0));
       vec3 own = fresnel * reflected + (1.0 - fresnel) * scattered + vec3(1.0, 0.97, 0.9) * spec * 1.5;
-      own = own / (1.0 + 0.15 * own);
       float coverage = 1.0 - through;
       gl_FragDepth = clip_depth(p);
-      out_color = vec4(pow(clamp(own / max(coverage, 1e-3), 0.0, 1.0), vec3(1.0 / 2.2)), coverage);
+      // Blended as src * coverage + dst * (1 - coverage), so the colour is own / coverage.
+      if (OUTPUT_ENCODING == LIQUID_OUTPUT_HDR) {
+        out_color = vec4(own * r.exposure / max(coverage, 1e-3), coverage);  // linear radiance
+      } else {
+        own = own / (1.0 + 0.15 * own);  // a soft shoulder into [0, 1]
+        vec3 linear = clamp(own / max(coverage, 1e-3), 0.0, 1.0);
+        out_color = vec4(OUTPUT_ENCODING == LIQUID_OUTPUT_LINEAR ? linear : pow(linear, vec3(1.0 / 2.2)), coverage);
+      }
       return;
     }
     float behind_t;

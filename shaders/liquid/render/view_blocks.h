@@ -11,6 +11,13 @@
 // leaves out the march for pixels whose rays miss the domain box.
 #define LIQUID_RAYMARCH_COMPOSITE_ID 13
 #define LIQUID_RAYMARCH_BACKGROUND_ONLY_ID 14
+// Compositing: how the colour is written for the host's target format (LIQUID_RAYMARCH_OUTPUT_ID):
+// display-encoded (UNORM targets), linear for an sRGB target (the hardware encodes it), or linear
+// radiance times the exposure for an HDR float target.
+#define LIQUID_RAYMARCH_OUTPUT_ID 15
+#define LIQUID_OUTPUT_DISPLAY 0
+#define LIQUID_OUTPUT_LINEAR 1
+#define LIQUID_OUTPUT_HDR 2
 
 // Height field: which mesh a draw makes.
 #define LIQUID_HEIGHT_FIELD_GROUND 0
@@ -32,6 +39,7 @@ LIQUID_STRUCT(RaymarchUniforms) {
   int brick_columns;       // the atlas path: the occupancy atlas's tiles (liquid/solver/grid_layout.h);
   int brick_rows;          // 1 and 1 otherwise
   float near_depth;        // clip-space depth of the near plane: 0, or 1 for reversed Z
+  float exposure;          // compositing into an HDR target: the liquid's radiance times this
 };
 
 // Occupancy (occupancy.frag), push constants.
