@@ -70,6 +70,16 @@ struct HostView {
   VkRect2D viewport{};
 };
 
+// A rectangle of a host's colour target (R8G8B8A8_UNORM, imported into the graph) that a 2D liquid
+// is drawn into (RenderSettings::composite on a 2D scene): the domain fitted into the rectangle,
+// the liquid and the obstacles alone, blended by their coverage over what the host drew there (a
+// panel, a HUD element, a texture the host then samples). The host's pixels outside the rectangle,
+// and inside it where there is no liquid, are left as they were.
+struct HostPanel {
+  engine::graph::ImageHandle color;
+  VkRect2D rect{};
+};
+
 struct RenderOutputs {
   engine::graph::ImageHandle color;  // RGBA8, before FXAA
   engine::graph::ImageHandle depth;  // D32 (3D views), metric depth of the first surface hit
@@ -92,6 +102,10 @@ class LiquidRenderer {
   // and `depth` of the result are the targets' new versions, after FXAA where it is on.
   RenderOutputs add_to(engine::graph::RenderGraph& graph, const LiquidImages& images, const CameraView& camera,
                        const HostTargets& targets);
+  // A 2D scene's liquid into a rectangle of the host's colour target (see HostPanel); `color` and
+  // `final` of the result are the target's new version. Throws std::invalid_argument for a
+  // rectangle outside the target or a target of another format.
+  RenderOutputs add_to(engine::graph::RenderGraph& graph, const LiquidImages& images, const HostPanel& panel);
   // The same from the host's own view (see HostView); the host draws its geometry with the same
   // matrices. Throws std::invalid_argument for a viewport outside the targets.
   RenderOutputs add_to(engine::graph::RenderGraph& graph, const LiquidImages& images, const HostView& view,

@@ -24,9 +24,9 @@ LiquidRenderer::LiquidRenderer(engine::vk::Context& context, const LiquidNode& n
   else if (setup.dimension == 3)
     raymarch_ = std::make_unique<RaymarchPass>(context, node, settings.composite);
   else
-    view2d_ = std::make_unique<View2dPass>(context, node);
-  if (settings.composite && !raymarch_)
-    throw std::invalid_argument("liquid: compositing into host targets needs a 3D liquid scene");
+    view2d_ = std::make_unique<View2dPass>(context, node, settings.composite);
+  if (settings.composite && height_field_)
+    throw std::invalid_argument("liquid: shallow water is not composited into host targets (3D and 2D liquids are)");
   if (settings.fxaa.value_or(!settings.composite))
     fxaa_ = std::make_unique<engine::passes::FxaaPass>(context, k_color_format);
 }
@@ -43,8 +43,32 @@ RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const Li
 }
 
 RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
+                                     const HostPanel& panel) {
+  if (!settings_.composite || !view2d_)
+    throw std::logic_error("liquid: a host panel needs a compositing renderer of a 2D scene");
+  const engine::vk::ImageDesc& d = graph.image_desc(panel.color);
+  const VkRect2D r = panel.rect;
+  if (d.kind != engine::vk::ImageKind::Image2D || d.format != k_color_format)
+    throw std::invalid_argument("liquid: the host's panel target '" + graph.image_name(panel.color) +
+                                "' must be a 2D R8G8B8A8_UNORM image");
+  if (r.extent.width == 0 || r.extent.height == 0 || r.offset.x < 0 || r.offset.y < 0 ||
+      r.offset.x + r.extent.width > d.width || r.offset.y + r.extent.height > d.height)
+    throw std::invalid_argument("liquid: the panel " + std::to_string(r.extent.width) + "x" +
+                                std::to_string(r.extent.height) + " at (" + std::to_string(r.offset.x) + ", " +
+                                std::to_string(r.offset.y) + ") is not inside the host's target '" +
+                                graph.image_name(panel.color) + "'");
+  if (fxaa_)
+    throw std::invalid_argument("liquid: FXAA is not run on a host panel (RenderSettings::fxaa = false)");
+  RenderSettings frame = settings_;
+  frame.width = d.width;
+  frame.height = d.height;
+  const engine::graph::ImageHandle color = view2d_->add_to(graph, images, frame, &panel);
+  return {color, {}, color};
+}
+
+RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
                                      const HostView& view, const HostTargets& targets) {
-  if (!settings_.composite) throw std::logic_error("liquid: add_to with host targets needs RenderSettings::composite");
+  if (!settings_.composite || !raymarch_) throw std::logic_error("liquid: add_to with host targets needs RenderSettings::composite");
   const auto check = [&](engine::graph::ImageHandle image, const char* what) {
     const engine::vk::ImageDesc& d = graph.image_desc(image);
     if (d.kind != engine::vk::ImageKind::Image2D || d.width != settings_.width || d.height != settings_.height)

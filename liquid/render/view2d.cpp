@@ -27,6 +27,14 @@ using gpu::Particles2dPush;
 using gpu::View2dPush;
 static_assert(sizeof(View2dPush) == 32 && sizeof(Particles2dPush) == 32);
 
+// The scene's constants plus the view's own (LIQUID_VIEW2D_PANEL_ID).
+std::vector<int32_t> view2d_specialization(const LiquidNode& node, bool panel) {
+  static_assert(LIQUID_VIEW2D_PANEL_ID == specialization_id::count, "the view's constant follows the scene's");
+  std::vector<int32_t> constants = scene_specialization(node.scene(), node.simulation().setup());
+  constants.push_back(panel ? 1 : 0);
+  return constants;
+}
+
 const LiquidNode& require_2d(const LiquidNode& node) {
   if (node.dimension() != 2) throw std::invalid_argument("liquid: the 2D view needs a two-dimensional scene");
   return node;
@@ -47,7 +55,7 @@ View2dLayout fit_view2d(glm::vec2 domain, uint32_t width, uint32_t height) {
   return layout;
 }
 
-View2dPass::View2dPass(engine::vk::Context& context, const LiquidNode& node)
+View2dPass::View2dPass(engine::vk::Context& context, const LiquidNode& node, bool panel)
     : node_(require_2d(node)),
       depth_(context, engine::vk::GraphicsPipelineDesc{
                           .name = "liquid.view2d.depth",
@@ -63,11 +71,12 @@ View2dPass::View2dPass(engine::vk::Context& context, const LiquidNode& node)
                            .vertex = engine::passes::fullscreen_vertex_shader(),
                            .fragment = liquid_shaders::view2d_frag,
                            .color_formats = {k_color_format},
+                           .blend = {panel ? engine::vk::BlendMode::Alpha : engine::vk::BlendMode::None},
                            .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
                                         {LIQUID_BINDING_VIEW2D_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
                                         {LIQUID_BINDING_VIEW2D_DEPTH, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
                            .push_constant_size = sizeof(View2dPush),
-                           .specialization = scene_specialization(node.scene(), node.simulation().setup())}),
+                           .specialization = view2d_specialization(node, panel)}),
       particles_(context, engine::vk::GraphicsPipelineDesc{
                               .name = "liquid.view2d.particles",
                               .vertex = liquid_shaders::particles2d_vert,
@@ -82,11 +91,14 @@ View2dPass::View2dPass(engine::vk::Context& context, const LiquidNode& node)
       uniforms_(context, node, 0) {}
 
 ImageHandle View2dPass::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
-                               const RenderSettings& settings) {
+                               const RenderSettings& settings, const HostPanel* panel) {
   const SimulationSetup& setup = node_.simulation().setup();
   const engine::vk::UniformSlice solver = uniforms_.begin_frame();
 
-  const View2dLayout layout = fit_view2d(glm::vec2(setup.domain), settings.width, settings.height);
+  // The domain fitted into the frame, or into the host's rectangle (then moved to its place).
+  const VkRect2D area = panel ? panel->rect : VkRect2D{{0, 0}, {settings.width, settings.height}};
+  View2dLayout layout = fit_view2d(glm::vec2(setup.domain), area.extent.width, area.extent.height);
+  layout.origin += glm::vec2(area.offset.x, area.offset.y);
   const glm::vec2 frame{float(settings.width), float(settings.height)};
   const View2dPush push{layout.origin, layout.pixels_per_metre, settings.iso_level,
                         frame,         layout.wall_pixels,      k_depth_search_cells};
@@ -125,11 +137,13 @@ ImageHandle View2dPass::add_to(engine::graph::RenderGraph& graph, const LiquidIm
                 d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, solver);
                 d.bindings.bind_image(b, LIQUID_BINDING_VIEW2D_DENSITY, density, linear_.handle());
                 d.bindings.bind_image(b, LIQUID_BINDING_VIEW2D_DEPTH, depth, linear_.handle());
-                d.color = b.write(b.create("liquid.view2d", color_desc), Access::ColorAttachmentWrite);
+                d.color = panel ? b.write(panel->color, Access::ColorAttachmentBlend)
+                                : b.write(b.create("liquid.view2d", color_desc), Access::ColorAttachmentWrite);
               },
-              [this, push](PassContext& ctx, const Data& d) {
+              [this, push, area](PassContext& ctx, const Data& d) {
                 d.bindings.bind_and_push(ctx);
                 liquid_.push_constants(ctx.cmd, push);
+                vkCmdSetScissor(ctx.cmd, 0, 1, &area);
                 engine::passes::draw_fullscreen(ctx.cmd);
               })
           .color;

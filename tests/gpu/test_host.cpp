@@ -581,6 +581,76 @@ TEST_CASE("the liquid composites into the host's colour formats: UNORM, sRGB, 10
                     Catch::Contains("host.color") && Catch::Contains("does not composite into"));
 }
 
+TEST_CASE("a 2D liquid composites with alpha into a rectangle of the host's target", "[host]") {
+  engine::vk::Context& context = test::gpu();
+  const VkRect2D rect{{90, 10}, {64, 48}};
+  // The host's target, cleared to magenta, with the panel drawn into its corner.
+  liquid::LiquidNode node(context, test::shipped_scene("dam_break_2d"));
+  HostTargets targets(context);
+  liquid::LiquidRenderer panel_renderer(context, node, {.width = k_width, .height = k_height, .composite = true});
+  {
+    engine::graph::RenderGraph graph(&context);
+    engine::vk::CommandBuffer cmd(context);
+    VkCommandBuffer c = cmd.begin();
+    host_clear(c, targets);
+    const engine::graph::ImageHandle color = graph.import_image("host.color", targets.color);
+    const liquid::LiquidImages images = node.add_to(graph, 3);
+    const liquid::RenderOutputs out = panel_renderer.add_to(graph, images, liquid::HostPanel{color, rect});
+    CHECK(out.final.id == color.id);
+    graph.compile();
+    graph.execute(c);
+    cmd.submit_and_wait();
+  }
+  const std::vector<std::byte> bytes = host_read(context, targets.color, 4);
+  engine::vk::Rgba8Image panel{k_width, k_height, std::vector<uint8_t>(bytes.size())};
+  std::memcpy(panel.pixels.data(), bytes.data(), bytes.size());
+  // The same state drawn opaque at the rectangle's size, for the liquid's colours.
+  liquid::LiquidRenderer opaque_renderer(context, node, {.width = rect.extent.width, .height = rect.extent.height, .fxaa = false});
+  engine::graph::RenderGraph graph(&context);
+  engine::vk::CommandBuffer cmd(context);
+  const liquid::RenderOutputs out = opaque_renderer.add_to(graph, node.add_to(graph, 0), liquid::default_camera(node));
+  const engine::graph::Readback back = engine::graph::add_readback(graph, out.final);
+  graph.compile();
+  graph.execute(cmd.begin());
+  cmd.submit_and_wait();
+  const engine::vk::Rgba8Image opaque = back.rgba8();
+
+  size_t outside_changed = 0, inside_liquid = 0, inside_clear = 0, matching = 0;
+  for (uint32_t y = 0; y < k_height; ++y)
+    for (uint32_t x = 0; x < k_width; ++x) {
+      const size_t i = size_t(y) * k_width + x;
+      const bool inside = x >= uint32_t(rect.offset.x) && x < uint32_t(rect.offset.x) + rect.extent.width &&
+                          y >= uint32_t(rect.offset.y) && y < uint32_t(rect.offset.y) + rect.extent.height;
+      if (!inside) {
+        outside_changed += !is_magenta(panel, i);
+        continue;
+      }
+      if (is_magenta(panel, i)) {
+        ++inside_clear;
+        continue;
+      }
+      ++inside_liquid;
+      // Where the panel shows the liquid fully, its colour is the opaque view's.
+      const size_t j = (size_t(y) - rect.offset.y) * rect.extent.width + (x - rect.offset.x);
+      bool same = true;
+      for (int ch = 0; ch < 3; ++ch) same = same && std::abs(int(panel.pixels[i * 4 + ch]) - int(opaque.pixels[j * 4 + ch])) <= 8;
+      matching += same;
+    }
+  INFO(inside_liquid << " liquid pixels in the panel, " << matching << " as in the opaque view, " << inside_clear
+                     << " left to the host, " << outside_changed << " changed outside");
+  CHECK(outside_changed == 0);
+  CHECK(inside_liquid > 100);
+  CHECK(inside_clear > 100);  // no background: the host's pixels show where there is no liquid
+  CHECK(matching > inside_liquid * 8 / 10);
+  REQUIRE_NO_VALIDATION_MESSAGES();
+  // A rectangle outside the target is refused in one line.
+  engine::graph::RenderGraph refused(&context);
+  CHECK_THROWS_WITH(panel_renderer.add_to(refused, node.add_to(refused, 0),
+                                          liquid::HostPanel{refused.import_image("host.color", targets.color),
+                                                            {{120, 0}, {64, 48}}}),
+                    Catch::Contains("not inside"));
+}
+
 TEST_CASE("host geometry in front of the liquid hides it, host geometry behind it is covered", "[host]") {
   engine::vk::Context& context = test::gpu();
   liquid::LiquidNode plain_node(context, test::shipped_scene("small_3d"));

@@ -16,6 +16,10 @@ layout(push_constant) uniform View2dPushBlock {
   View2dPush pc;
 };
 
+// PANEL: the liquid and the obstacles alone, with their coverage in alpha, blended over a host's
+// target (no background, letterbox or tank walls).
+layout(constant_id = LIQUID_VIEW2D_PANEL_ID) const bool PANEL = false;
+
 layout(location = 0) in vec2 v_uv;
 layout(location = 0) out vec4 out_color;
 
@@ -68,7 +72,9 @@ void main() {
   // Half a pixel of softness at the domain's edge, where the liquid meets the walls.
   vec2 to_edge = min(q, domain * pc.pixels_per_metre - q);
   float in_domain = clamp(min(to_edge.x, to_edge.y) + 0.5, 0.0, 1.0);
-  vec3 color = mix(k_letterbox, k_background, in_domain);
+  // `color` is premultiplied by `alpha`: each layer below goes over it with mix().
+  vec3 color = PANEL ? vec3(0.0) : mix(k_letterbox, k_background, in_domain);
+  float alpha = PANEL ? 0.0 : 1.0;
 
   float liquid = clamp(f_pixels + 0.5, 0.0, 1.0) * in_domain;
   if (liquid > 0.0) {
@@ -82,6 +88,7 @@ void main() {
     float rim = 1.0 - smoothstep(0.5 * rim_width, 1.5 * rim_width, f_pixels);
     water = mix(water, k_water_rim, 0.75 * rim);
     color = mix(color, water, liquid);
+    alpha = mix(alpha, 1.0, liquid);
   }
 
   // Obstacles: solid grey with a darker outline, anti-aliased over one pixel of the distance.
@@ -91,8 +98,13 @@ void main() {
     float d_pixels = obstacle_distance_2d(i, p) * pc.pixels_per_metre;
     vec3 shade = mix(k_obstacle, k_obstacle_outline, smoothstep(-2.0, -1.0, d_pixels));
     color = mix(color, shade, coverage(d_pixels));
+    alpha = mix(alpha, 1.0, coverage(d_pixels));
   }
 
+  if (PANEL) {
+    out_color = vec4(color / max(alpha, 1e-4), alpha);  // blended with SRC_ALPHA, 1 - SRC_ALPHA
+    return;
+  }
   color = mix(color, k_wall, coverage(tank_distance(q)));
   out_color = vec4(color, 1.0);
 }

@@ -19,6 +19,10 @@
 #define LIQUID_OUTPUT_LINEAR 1
 #define LIQUID_OUTPUT_HDR 2
 
+// 2D view: the specialization constant that draws the liquid (and obstacles) alone, with alpha,
+// into a rectangle of a host's target (its id follows the scene's constants of common.glsl).
+#define LIQUID_VIEW2D_PANEL_ID 13
+
 // Height field: which mesh a draw makes.
 #define LIQUID_HEIGHT_FIELD_GROUND 0
 #define LIQUID_HEIGHT_FIELD_WATER 1
