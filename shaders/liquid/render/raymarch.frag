@@ -290,7 +290,11 @@ void main() {
     vec3 refracted_dir = refract(dir, n, 1.0 / 1.33);
     if (dot(refracted_dir, refracted_dir) < 1e-6) refracted_dir = dir;
     float thickness = 0.0, step_length = 2.0 * cell_size();
-    vec3 q = p;
+    // Each pixel starts its count at its own fraction of a step (interleaved gradient noise):
+    // the nearest-cell samples of neighbouring pixels would otherwise cross the cell layers
+    // together and band a face seen straight on (the tank's glass).
+    float jitter = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+    vec3 q = p + refracted_dir * step_length * (jitter - 1.0);
     for (int k = 0; k < 16; ++k) {
       q += refracted_dir * step_length;
       if (any(lessThan(q, vec3(0.0))) || any(greaterThan(q, u.domain))) break;
