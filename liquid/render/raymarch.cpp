@@ -175,6 +175,8 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
   render.view_projection = vp;
   render.near_depth = view_input.reversed_z ? 1.0f : 0.0f;
   render.exposure = settings.exposure;
+  render.viewport_x = float(viewport.offset.x);
+  render.viewport_y = float(viewport.offset.y);
   render.iso_level = settings.iso_level;
   render.sun_direction = glm::normalize(glm::vec3(0.45f, 0.8f, 0.35f));
   render.fine_step_cells = k_fine_step_cells;

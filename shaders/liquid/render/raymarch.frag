@@ -293,7 +293,8 @@ void main() {
     // Each pixel starts its count at its own fraction of a step (interleaved gradient noise):
     // the nearest-cell samples of neighbouring pixels would otherwise cross the cell layers
     // together and band a face seen straight on (the tank's glass).
-    float jitter = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+    vec2 pixel = gl_FragCoord.xy - vec2(r.viewport_x, r.viewport_y);
+    float jitter = fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
     vec3 q = p + refracted_dir * step_length * (jitter - 1.0);
     for (int k = 0; k < 16; ++k) {
       q += refracted_dir * step_length;

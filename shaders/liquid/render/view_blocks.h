@@ -44,6 +44,8 @@ LIQUID_STRUCT(RaymarchUniforms) {
   int brick_rows;          // 1 and 1 otherwise
   float near_depth;        // clip-space depth of the near plane: 0, or 1 for reversed Z
   float exposure;          // compositing into an HDR target: the liquid's radiance times this
+  float viewport_x;        // the view's viewport origin, pixels: per-pixel noise is placed relative
+  float viewport_y;        // to it, so a view draws the same pixels wherever its viewport lies
 };
 
 // Occupancy (occupancy.frag), push constants.
