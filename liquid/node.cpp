@@ -33,6 +33,11 @@ void LiquidNode::set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 vel
   simulation_->set_obstacle_pose(index, center, velocity);
 }
 std::vector<ObstaclePose> LiquidNode::obstacle_poses(double time) const { return simulation_->obstacle_poses(time); }
+void LiquidNode::set_body_force(size_t index, glm::vec3 force, glm::vec3 torque) {
+  simulation_->set_body_force(index, force, torque);
+}
+std::vector<BodyState> LiquidNode::read_bodies() { return simulation_->read_bodies(); }
+std::vector<BodyState> LiquidNode::latest_bodies() { return simulation_->latest_bodies(); }
 
 int LiquidNode::active_particles() const { return simulation_->active_particles(); }
 int LiquidNode::step_count() const { return simulation_->step_count(); }

@@ -71,8 +71,25 @@ class LiquidNode {
   // Places obstacle `index` (a host-driven obstacle): from now on it moves at `velocity` from
   // `center`, replacing the scene's scripted motion. The set of obstacles and their shapes are
   // fixed when the node is created (the shaders are specialized for them).
+  // Throws std::invalid_argument for a dynamic obstacle (the liquid moves it).
   void set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity);
+  // Every obstacle's pose at `time` (scripted or set); a dynamic obstacle's is its last known state
+  // (latest_bodies(), read_bodies() or diagnose()), whatever `time`.
   std::vector<ObstaclePose> obstacle_poses(double time) const;
+
+  // Dynamic obstacles (rigid bodies the liquid moves; README, "Bodies that float"). Their state lives
+  // on the GPU and is integrated there every step, so reading it is the host's choice of cost:
+  // A force (N) and torque (N m) of the host's, through the body's centre, added every following
+  // step until changed (zero to stop). Throws std::invalid_argument unless obstacle `index` is
+  // dynamic and the values finite.
+  void set_body_force(size_t index, glm::vec3 force, glm::vec3 torque = glm::vec3(0.0f));
+  // Blocking read (own submission; call when no frame of this node is in flight): the state after
+  // the last step declared.
+  std::vector<BodyState> read_bodies();
+  // Without waiting: every add_to() copies the state at the end of its frame into a host buffer,
+  // and this returns the newest copy whose frame has completed by the LiquidOptions contract, i.e.
+  // the frame declared frames_in_flight add_to() calls ago (one frame late with one frame in flight).
+  std::vector<BodyState> latest_bodies();
 
   int active_particles() const;
   int step_count() const;

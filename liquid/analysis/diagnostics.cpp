@@ -39,8 +39,8 @@ Diagnostics compute_diagnostics(const Scene& scene, const SimulationSetup& setup
         break;
       }
     for (size_t o = 0; o < scene.obstacles.size(); ++o) {
-      const glm::vec3 center = o < obstacle_poses.size() ? obstacle_poses[o].center : scene.obstacles[o].center;
-      if (obstacle_distance(scene.obstacles[o], center, x, setup.dimension) < 0.0f) {
+      const ObstaclePose pose = o < obstacle_poses.size() ? obstacle_poses[o] : scripted_pose(scene.obstacles[o], 0.0);
+      if (obstacle_distance(scene.obstacles[o], pose, x, setup.dimension) < 0.0f) {
         ++d.inside_obstacles;
         break;
       }
@@ -78,6 +78,16 @@ void check_stable(const Diagnostics& d, double energy_bound) {
     message << "simulation unstable at step " << d.step << " (t = " << d.time << " s): " << d.non_finite
             << " particle(s) with NaN or Inf";
     throw SimulationError(message.str());
+  }
+  for (const BodyState& b : d.bodies) {
+    const glm::vec3 v[] = {b.pose.center, b.pose.velocity, b.pose.angular_velocity, b.force, b.torque};
+    for (const glm::vec3& x : v)
+      if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z)) {
+        std::ostringstream message;
+        message << "simulation unstable at step " << d.step << " (t = " << d.time << " s): obstacle " << b.obstacle
+                << " (a dynamic body) has a NaN or Inf state";
+        throw SimulationError(message.str());
+      }
   }
   if (d.kinetic_energy > energy_bound) {
     std::ostringstream message;

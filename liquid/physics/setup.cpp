@@ -102,7 +102,7 @@ void check_grid_limits(const Scene& scene, const SimulationSetup& setup, const D
 bool inside_any_obstacle(const Scene& scene, glm::vec3 p, float band) {
   const float carved = scene.pressure_force == PressureForce::SplatAdjoint ? 1.5f : 0.75f;
   for (const Obstacle& o : scene.obstacles)
-    if (obstacle_distance(o, scripted_pose(o, 0.0).center, p, scene.dimension) < carved * band) return true;
+    if (obstacle_distance(o, scripted_pose(o, 0.0), p, scene.dimension) < carved * band) return true;
   return false;
 }
 

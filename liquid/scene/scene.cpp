@@ -17,6 +17,8 @@ constexpr double k_max_gravity = 1000.0;        // m/s^2 per component
 constexpr double k_max_speed = 1000.0;          // m/s per component
 constexpr double k_max_frequency = 1000.0;      // Hz
 constexpr int k_max_emitter_capacity = 1 << 24;  // 16M particles
+constexpr double k_max_body_density = 1e5;      // kg/m^3, past any solid (osmium: 22590)
+constexpr double k_max_body_mass = 1e9;         // kg
 
 // ---- Nested objects --------------------------------------------------------------------------
 
@@ -70,6 +72,44 @@ void read_oscillation(const Reader& r, const Json& value, const std::string& pat
       float(r.number_in(r.require(value, path, "frequency"), child(path, "frequency"), 0.0, k_max_frequency));
 }
 
+// "rotation": {"axis": [x, y, z], "degrees": a}; in 2D about z, so the axis may be left out (and
+// must be along z if given).
+glm::quat read_rotation(const Reader& r, const Json& value, const std::string& path) {
+  r.check_keys(value, path, {"axis", "degrees"});
+  const float degrees = float(r.number_in(r.require(value, path, "degrees"), child(path, "degrees"), -360.0, 360.0));
+  glm::vec3 axis(0.0f, 0.0f, 1.0f);
+  if (const Json* v = Reader::find(value, "axis")) {
+    axis = r.vector(*v, child(path, "axis"), 3);
+    if (!(glm::length(axis) > 0.0f)) r.fail(child(path, "axis"), "must be nonzero");
+    axis = glm::normalize(axis);
+    if (r.dimension() == 2 && (axis.x != 0.0f || axis.y != 0.0f))
+      r.fail(child(path, "axis"), "must be [0, 0, 1] in 2D (a 2D obstacle turns about z)");
+  } else if (r.dimension() == 3) {
+    r.fail(child(path, "axis"), "missing required key (3D rotations need an axis)");
+  }
+  return glm::angleAxis(glm::radians(degrees), axis);
+}
+
+// "dynamic": true with "density" (kg/m^3) or "mass" (kg; in 2D, kg per metre of depth).
+void read_body(const Reader& r, const Json& value, const std::string& path, Obstacle& obstacle) {
+  const Json* dynamic = Reader::find(value, "dynamic");
+  if (dynamic && !dynamic->is_boolean()) r.fail(child(path, "dynamic"), std::string("must be true or false, got ") + dynamic->type_name());
+  obstacle.dynamic = dynamic && dynamic->get<bool>();
+  const Json* density = Reader::find(value, "density");
+  const Json* mass = Reader::find(value, "mass");
+  if (!obstacle.dynamic) {
+    if (density || mass) r.fail(child(path, density ? "density" : "mass"), "only allowed with \"dynamic\": true");
+    return;
+  }
+  if (obstacle.shape == ObstacleShape::Metaballs)
+    r.fail(child(path, "dynamic"), "metaball obstacles cannot be dynamic (only spheres and boxes)");
+  if (Reader::find(value, "oscillation")) r.fail(child(path, "oscillation"), "not allowed on a dynamic obstacle (the liquid moves it)");
+  if (density && mass) r.fail(child(path, "mass"), "give density or mass, not both");
+  if (!density && !mass) r.fail(child(path, "density"), "missing required key (a dynamic obstacle needs density or mass)");
+  if (density) obstacle.density = float(r.number_in(*density, child(path, "density"), 0.0, k_max_body_density, true));
+  if (mass) obstacle.mass = float(r.number_in(*mass, child(path, "mass"), 0.0, k_max_body_mass, true));
+}
+
 Obstacle read_obstacle(const Reader& r, const Json& value, const std::string& path) {
   if (!value.is_object()) r.fail(path, std::string("must be an object, got ") + value.type_name());
   Obstacle obstacle;
@@ -77,13 +117,13 @@ Obstacle read_obstacle(const Reader& r, const Json& value, const std::string& pa
                                           {"sphere", "box", "metaballs"}));
   switch (obstacle.shape) {
     case ObstacleShape::Sphere:
-      r.check_keys(value, path, {"shape", "center", "radius", "velocity", "oscillation"});
+      r.check_keys(value, path, {"shape", "center", "radius", "velocity", "oscillation", "rotation", "dynamic", "density", "mass"});
       obstacle.center = r.scene_vector(r.require(value, path, "center"), child(path, "center"));
       obstacle.radius =
           float(r.number_in(r.require(value, path, "radius"), child(path, "radius"), 0.0, k_max_length, true));
       break;
     case ObstacleShape::Box: {
-      r.check_keys(value, path, {"shape", "center", "half_extent", "velocity", "oscillation"});
+      r.check_keys(value, path, {"shape", "center", "half_extent", "velocity", "oscillation", "rotation", "dynamic", "density", "mass"});
       obstacle.center = r.scene_vector(r.require(value, path, "center"), child(path, "center"));
       const std::string extent_path = child(path, "half_extent");
       obstacle.half_extent = r.scene_vector(r.require(value, path, "half_extent"), extent_path);
@@ -93,7 +133,7 @@ Obstacle read_obstacle(const Reader& r, const Json& value, const std::string& pa
       break;
     }
     case ObstacleShape::Metaballs: {
-      r.check_keys(value, path, {"shape", "balls", "threshold", "velocity", "oscillation"});
+      r.check_keys(value, path, {"shape", "balls", "threshold", "velocity", "oscillation", "dynamic", "density", "mass"});
       const std::string balls_path = child(path, "balls");
       const Json& balls = r.require(value, path, "balls");
       if (!balls.is_array() || balls.empty()) r.fail(balls_path, "must be a non-empty array of {center, radius}");
@@ -114,6 +154,8 @@ Obstacle read_obstacle(const Reader& r, const Json& value, const std::string& pa
   if (const Json* v = Reader::find(value, "velocity"))
     obstacle.velocity = r.scene_vector(*v, child(path, "velocity"), k_max_speed);
   if (const Json* v = Reader::find(value, "oscillation")) read_oscillation(r, *v, child(path, "oscillation"), obstacle);
+  if (const Json* v = Reader::find(value, "rotation")) obstacle.rotation = read_rotation(r, *v, child(path, "rotation"));
+  read_body(r, value, path, obstacle);
   return obstacle;
 }
 
@@ -253,6 +295,12 @@ void read_contents(const Reader& r, const Json& doc, Scene& scene) {
   scene.fluid_blocks = read_array<FluidBlock>(r, doc, "fluid_blocks", read_fluid_block);
   scene.emitters = read_array<Emitter>(r, doc, "emitters", read_emitter);
   scene.obstacles = read_array<Obstacle>(r, doc, "obstacles", read_obstacle);
+  // The body reaction pass repeats the chapter's grid update; the splat-adjoint pressure and
+  // shallow water's ground term are not in it.
+  for (size_t i = 0; i < scene.obstacles.size(); ++i)
+    if (scene.obstacles[i].dynamic && (shallow || scene.pressure_force == PressureForce::SplatAdjoint))
+      r.fail(element("obstacles", i) + ".dynamic",
+             shallow ? "not available in shallow_water mode" : "needs the chapter's pressure force (\"pressure_force\": \"chapter\")");
   if (!shallow && Reader::find(doc, "ground")) r.fail("ground", "only allowed in shallow_water mode");
   scene.ground = read_array<GroundHill>(r, doc, "ground", read_ground_hill);
   if (const Json* v = Reader::find(doc, "camera")) {

@@ -23,7 +23,8 @@ std::span<const uint32_t> grid_fragment_shader(const SimulationSetup& setup, con
 std::vector<engine::vk::DescriptorBinding> grid_bindings(const SimulationSetup& setup) {
   std::vector<engine::vk::DescriptorBinding> bindings{
       {LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
-      {LIQUID_BINDING_GRID_SPLAT, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}};
+      {LIQUID_BINDING_GRID_SPLAT, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
+      {LIQUID_BINDING_BODIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}};
   if (setup.splat_adjoint_pressure)
     bindings.push_back({LIQUID_BINDING_GRID_POTENTIAL, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
   return bindings;
@@ -47,7 +48,8 @@ GridPass::GridPass(engine::vk::Context& context, const SimulationSetup& setup, c
       splat_adjoint_(setup.splat_adjoint_pressure) {}
 
 GridImages GridPass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                            ImageHandle splat, const GridImages& grids, ImageHandle potential) const {
+                            ImageHandle splat, ImageHandle bodies, const GridImages& grids,
+                            ImageHandle potential) const {
   if (splat_adjoint_ != potential.valid())
     throw std::logic_error(splat_adjoint_ ? "liquid.grid: the splat-adjoint pressure needs the potential image"
                                           : "liquid.grid: a potential image was given to the chapter's grid pass");
@@ -62,6 +64,7 @@ GridImages GridPass::add_to(engine::graph::RenderGraph& graph, const engine::vk:
             d.bindings = engine::passes::PassBindings(pipeline_);
             d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
             d.bindings.bind_image(b, LIQUID_BINDING_GRID_SPLAT, splat, nearest_.handle());
+            d.bindings.bind_image(b, LIQUID_BINDING_BODIES, bodies, nearest_.handle());
             if (potential.valid()) d.bindings.bind_image(b, LIQUID_BINDING_GRID_POTENTIAL, potential, nearest_.handle());
             d.out.velocity = b.write(grids.velocity, Access::ColorAttachmentWrite);
             d.out.density = b.write(grids.density, Access::ColorAttachmentWrite);

@@ -21,10 +21,11 @@ class GridPass {
   GridPass(engine::vk::Context& context, const SimulationSetup& setup, const GridLayout& layout,
            const std::vector<int32_t>& specialization);
 
-  // Reads `splat` (and, with the splat-adjoint pressure, PressurePass's `potential`), writes the
-  // updated velocity (u', fluid flag) and rho / rho0 into `grids`.
+  // Reads `splat` (and, with the splat-adjoint pressure, PressurePass's `potential`) and the body
+  // state `bodies` (dynamic obstacles' poses), writes the updated velocity (u', fluid flag) and
+  // rho / rho0 into `grids`.
   GridImages add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle splat,
-                    const GridImages& grids, ImageHandle potential = {}) const;
+                    ImageHandle bodies, const GridImages& grids, ImageHandle potential = {}) const;
 
  private:
   engine::vk::GraphicsPipeline pipeline_;

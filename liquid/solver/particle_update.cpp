@@ -23,13 +23,14 @@ ParticleUpdatePass::ParticleUpdatePass(engine::vk::Context& context, const GridL
                                  {LIQUID_BINDING_PARTICLE_VELOCITIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
                                  {LIQUID_BINDING_PARTICLE_SPLAT, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
                                  {LIQUID_BINDING_PARTICLE_GRID_VELOCITY, DescriptorKind::SampledImage,
-                                  VK_SHADER_STAGE_FRAGMENT_BIT}},
+                                  VK_SHADER_STAGE_FRAGMENT_BIT},
+                                 {LIQUID_BINDING_BODIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
                     .specialization = specialization}),
       nearest_(context, VK_FILTER_NEAREST) {}
 
 ParticleImages ParticleUpdatePass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
                                           const ParticleImages& current, ImageHandle splat, const GridImages& grids,
-                                          const ParticleImages& next, int active_after) const {
+                                          ImageHandle bodies, const ParticleImages& next, int active_after) const {
   struct Data {
     engine::passes::PassBindings bindings;
     ParticleImages out;
@@ -45,6 +46,7 @@ ParticleImages ParticleUpdatePass::add_to(engine::graph::RenderGraph& graph, con
             d.bindings.bind_image(b, LIQUID_BINDING_PARTICLE_VELOCITIES, current.velocities, s);
             d.bindings.bind_image(b, LIQUID_BINDING_PARTICLE_SPLAT, splat, s);
             d.bindings.bind_image(b, LIQUID_BINDING_PARTICLE_GRID_VELOCITY, grids.velocity, s);
+            d.bindings.bind_image(b, LIQUID_BINDING_BODIES, bodies, s);
             d.out.positions = b.write(next.positions, Access::ColorAttachmentWrite);
             d.out.velocities = b.write(next.velocities, Access::ColorAttachmentWrite);
           },

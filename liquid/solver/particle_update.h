@@ -21,9 +21,9 @@ class ParticleUpdatePass {
   ParticleUpdatePass(engine::vk::Context& context, const GridLayout& layout, const std::vector<int32_t>& specialization);
 
   // From `current` into `next` (the other texture of the ping-pong pair), for the rows holding
-  // `active_after` particles.
+  // `active_after` particles; `bodies`: the dynamic obstacles' state at the end of the step.
   ParticleImages add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                        const ParticleImages& current, ImageHandle splat, const GridImages& grids,
+                        const ParticleImages& current, ImageHandle splat, const GridImages& grids, ImageHandle bodies,
                         const ParticleImages& next, int active_after) const;
 
  private:

@@ -6,10 +6,14 @@
 #pragma once
 
 #include "engine/graph/render_graph.h"
+#include "engine/graph/transfer.h"
 #include "engine/vk/uniform_arena.h"
 #include "liquid/analysis/diagnostics.h"
 #include "liquid/physics/setup.h"
 #include "liquid/scene.h"
+#include "liquid/solver/body_grid.h"
+#include "liquid/solver/body_integration.h"
+#include "liquid/solver/body_reaction.h"
 #include "liquid/solver/grid.h"
 #include "liquid/solver/particle_update.h"
 #include "liquid/solver/pressure.h"
@@ -49,6 +53,9 @@ class Simulation {
   void set_runtime_parameters(const RuntimeParameters& parameters);
   void set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity);
   std::vector<ObstaclePose> obstacle_poses(double time) const;
+  void set_body_force(size_t index, glm::vec3 force, glm::vec3 torque);
+  std::vector<BodyState> read_bodies();
+  std::vector<BodyState> latest_bodies();
   int active_particles() const { return active_; }
   int step_count() const { return step_; }
   double time() const { return time_; }
@@ -89,7 +96,11 @@ class Simulation {
   ImageHandle add_splat(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
                         const ParticleImages& particles, ImageHandle splat, int active) const;
   GridImages add_grid(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice, ImageHandle splat,
-                      const GridImages& grids, PressureImages& pressure) const;
+                      ImageHandle bodies, const GridImages& grids, PressureImages& pressure) const;
+  // The index of a dynamic obstacle, or std::out_of_range / std::invalid_argument naming it.
+  size_t dynamic_obstacle(size_t index) const;
+  // Keeps the newest per-frame read-back of the body state that has completed (latest_bodies()).
+  void collect_body_readbacks();
   // make_uniforms() with the grid layout's atlas tiles.
   gpu::SolverUniforms uniforms_for(const StepInputs& step) const;
   // This step's emission ranges, advancing the emitters' counts.
@@ -106,6 +117,9 @@ class Simulation {
   std::unique_ptr<GridPass> grid_;
   std::unique_ptr<PressurePass> pressure_;  // only with the splat-adjoint pressure
   std::unique_ptr<ParticleUpdatePass> particle_update_;
+  std::unique_ptr<BodyGridPass> body_grid_;                // only with dynamic obstacles
+  std::unique_ptr<BodyReactionPass> body_reaction_;
+  std::unique_ptr<BodyIntegrationPass> body_integration_;
   std::unique_ptr<LiquidState> state_;
   std::unique_ptr<engine::vk::UniformArena> uniforms_;
   std::unique_ptr<engine::vk::UniformArena> grid_uniforms_;  // add_grids_to()'s block, one per frame
@@ -125,6 +139,15 @@ class Simulation {
     double since;
   };
   std::vector<std::optional<PoseOverride>> pose_overrides_;
+  std::vector<BodyPush> body_pushes_;  // per obstacle
+  // The dynamic obstacles' state as last known on the host (a blocking read, or the newest
+  // completed per-frame read-back): what the views draw and obstacle_poses() reports for them.
+  std::vector<BodyState> bodies_;
+  struct BodyReadback {
+    uint64_t frame = 0;  // frames_declared_ of the frame that copied it
+    engine::graph::Readback readback;
+  };
+  std::vector<BodyReadback> body_readbacks_;  // one per frame slot
 };
 
 }  // namespace liquid

@@ -35,11 +35,15 @@ layout(constant_id = 12) const int GROUND_HILLS = 0;       // shallow water: hil
 
 int obstacle_count() { return OBSTACLE_COUNT; }
 
-int obstacle_kind(int index) {
+// The constant holds the shape's code (LIQUID_OBSTACLE_SPHERE ...) plus LIQUID_OBSTACLE_DYNAMIC for
+// a rigid body the liquid moves.
+int obstacle_code(int index) {
   return index == 0 ? OBSTACLE_KIND_0 : index == 1 ? OBSTACLE_KIND_1 : index == 2 ? OBSTACLE_KIND_2
        : index == 3 ? OBSTACLE_KIND_3 : index == 4 ? OBSTACLE_KIND_4 : index == 5 ? OBSTACLE_KIND_5
        : index == 6 ? OBSTACLE_KIND_6 : OBSTACLE_KIND_7;
 }
+int obstacle_kind(int index) { return obstacle_code(index) & LIQUID_OBSTACLE_SHAPE_MASK; }
+bool obstacle_dynamic(int index) { return (obstacle_code(index) & LIQUID_OBSTACLE_DYNAMIC) != 0; }
 
 bool shallow_water() { return SHALLOW_WATER; }
 
@@ -62,6 +66,9 @@ float density_ratio_power(float ratio) {
 #else
 #define GRID_SAMPLER sampler2D
 #endif
+
+// A cell holds liquid when its summed splat weight is above this.
+const float k_fluid_epsilon = 1e-6;
 
 ivec3 grid_cells() { return u.grid_cells; }
 ivec2 atlas_tiles() { return ivec2(u.atlas_columns, u.atlas_rows); }
@@ -132,13 +139,59 @@ float sd_metaballs(vec3 p, Obstacle o) {
   return (threshold - field) / max(length(gradient), 1e-4);
 }
 
-// p relative to obstacle `index`'s centre (in the plane in 2D).
+// Rotates v by the unit quaternion q = (x, y, z, w), and by its inverse.
+vec3 quat_rotate(vec4 q, vec3 v) { return v + 2.0 * cross(q.xyz, cross(q.xyz, v) + q.w * v); }
+vec3 quat_rotate_inverse(vec4 q, vec3 v) { return quat_rotate(vec4(-q.xyz, q.w), v); }
+
+// An obstacle's pose at the step's instant: centre, orientation (shape frame to world), velocity of
+// the centre and angular velocity. A scripted or host-placed obstacle's comes from the uniform
+// block; a dynamic one's from the body-state texture the integration pass writes (shared.h), in
+// shaders that declare it (LIQUID_BODIES: the solver's grid, particle and body passes). Elsewhere
+// (the views) a dynamic obstacle is drawn at the pose the node last read back.
+struct ObstacleFrame {
+  vec3 center;
+  vec4 orientation;
+  vec3 velocity;
+  vec3 angular_velocity;
+};
+
+#ifdef LIQUID_BODIES
+layout(set = 0, binding = LIQUID_BINDING_BODIES) uniform sampler2D u_bodies;
+vec4 body_texel(int index, int texel) { return texelFetch(u_bodies, ivec2(texel, index), 0); }
+#endif
+
+ObstacleFrame obstacle_frame(int index) {
+  ObstacleFrame f;
+#ifdef LIQUID_BODIES
+  if (obstacle_dynamic(index)) {
+    f.center = body_texel(index, LIQUID_BODY_POSITION).xyz;
+    f.orientation = body_texel(index, LIQUID_BODY_ORIENTATION);
+    f.velocity = body_texel(index, LIQUID_BODY_VELOCITY).xyz;
+    f.angular_velocity = body_texel(index, LIQUID_BODY_ANGULAR_VELOCITY).xyz;
+    return f;
+  }
+#endif
+  f.center = u.obstacles[index].center;
+  f.orientation = u.obstacles[index].orientation;
+  f.velocity = u.obstacles[index].velocity;
+  f.angular_velocity = u.obstacles[index].angular_velocity;
+  return f;
+}
+
+// p in obstacle `index`'s own frame: relative to its centre, unrotated (in the plane in 2D).
 vec3 obstacle_local(int index, vec3 p) {
-  vec3 local = p - u.obstacles[index].center;
+  ObstacleFrame f = obstacle_frame(index);
+  vec3 local = quat_rotate_inverse(f.orientation, p - f.center);
 #if DIM == 2
   local.z = 0.0;
 #endif
   return local;
+}
+
+// The velocity of the obstacle's material at p: v + w x (p - c).
+vec3 obstacle_velocity_at(int index, vec3 p) {
+  ObstacleFrame f = obstacle_frame(index);
+  return f.velocity + cross(f.angular_velocity, p - f.center);
 }
 
 float obstacle_distance(int index, vec3 p) {
@@ -146,14 +199,23 @@ float obstacle_distance(int index, vec3 p) {
   vec3 local = obstacle_local(index, p);
   int kind = obstacle_kind(index);
   if (kind == LIQUID_OBSTACLE_SPHERE) return length(local) - o.sphere_radius;
-  if (kind == LIQUID_OBSTACLE_BOX) return sd_box(local, o.box_half_extent);
+  if (kind == LIQUID_OBSTACLE_BOX) {
+#if DIM == 2
+    return sd_box(local, vec3(o.box_half_extent.xy, 1.0));  // the rectangle's distance in the plane
+#else
+    return sd_box(local, o.box_half_extent);
+#endif
+  }
   return sd_metaballs(local, o);
 }
 
 // Outward normal: exact for a sphere, by central differences for the other kinds.
 vec3 obstacle_normal(int index, vec3 p) {
   if (obstacle_kind(index) == LIQUID_OBSTACLE_SPHERE) {
-    vec3 local = obstacle_local(index, p);
+    vec3 local = p - obstacle_frame(index).center;
+#if DIM == 2
+    local.z = 0.0;
+#endif
     float len = length(local);
     return len > 1e-12 ? local / len : vec3(0.0, 1.0, 0.0);
   }
@@ -167,15 +229,45 @@ vec3 obstacle_normal(int index, vec3 p) {
   return len > 1e-12 ? n / len : vec3(0.0, 1.0, 0.0);
 }
 
-// Artificial obstacle density (section 6): rho0 at the surface, rising linearly inside and
-// falling to zero one band outside. Added to the fluid density before the pressure, so the
-// pressure gradient pushes liquid away from the obstacle.
-float obstacle_density(vec3 p) {
+// The share of the splat kernel's mass beyond a plane `d` metres from its centre, on the side away
+// from it (d > 0; 1 - that for d < 0): the wall table (liquid/physics/wall_coverage.h, entry k at
+// k + 0.5 cells) interpolated, 0.5 on the plane. Selected with comparisons (see kernel_mass_beyond).
+float kernel_share_beyond(float d) {
+  float x = abs(d) / cell_size() - 0.5;  // in table entries from the first
+  float below = 0.5, above = 0.0, t;
+  if (x >= 0.0) {
+    int k = int(floor(x));
+    t = x - float(k);
+    below = 0.0;
+    [[unroll]] for (int i = 0; i < LIQUID_WALL_TABLE_SIZE; ++i) {
+      below = k == i ? u.wall_kernel_beyond[i / 4][i % 4] : below;
+      above = k + 1 == i ? u.wall_kernel_beyond[i / 4][i % 4] : above;
+    }
+  } else {  // between the plane (0.5) and the first entry
+    t = 2.0 * (x + 0.5);
+    above = u.wall_kernel_beyond[0][0];
+  }
+  float share = mix(below, above, t);
+  return d >= 0.0 ? share : 1.0 - share;
+}
+
+// Artificial obstacle density (section 6), added to the fluid density before the pressure, so the
+// pressure gradient pushes liquid away from the obstacle. A scripted obstacle's: rho0 at the
+// surface, rising linearly inside and falling to zero one band outside. A dynamic one's: rho0 times
+// the kernel's share of a body shrunk by one band (the density that shrunk body would splat if it
+// were liquid), so it is zero on and outside the real surface. Why: the pressure is clamped at 0
+// below rho0 (pressure_from_density), so whatever density an obstacle adds where liquid is acts as
+// a wall one band further out, and a body riding on the scripted ramp floats a band too high; the
+// shrunk field leaves the no-inflow condition to hold the liquid at the surface itself
+// (docs/physics.md, "Bodies that float", with the measured drafts).
+// `excluded`: an obstacle left out (the body reaction pass's liquid without that body), or -1.
+float obstacle_density(vec3 p, int excluded) {
   float band = u.obstacle_band;
   float total = 0.0;
   [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
+    if (i == excluded) continue;
     float d = obstacle_distance(i, p);
-    total += clamp(1.0 - d / band, 0.0, 2.0);
+    total += obstacle_dynamic(i) ? kernel_share_beyond(d + band) : clamp(1.0 - d / band, 0.0, 2.0);
   }
   return total * u.rest_density;
 }

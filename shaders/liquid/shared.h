@@ -21,6 +21,25 @@
 #define LIQUID_OBSTACLE_SPHERE 0
 #define LIQUID_OBSTACLE_BOX 1
 #define LIQUID_OBSTACLE_METABALLS 2
+// Added to a kind for a dynamic obstacle (a rigid body the liquid moves): its pose is read from the
+// body-state texture, not from the uniform block (obstacle_frame() in common.glsl).
+#define LIQUID_OBSTACLE_DYNAMIC 8
+#define LIQUID_OBSTACLE_SHAPE_MASK 7
+
+// ---- Rigid bodies: the body-state texture (RGBA32F, one row per obstacle) ------------------------
+// Texel x of row i holds, for a dynamic obstacle i (rows of other obstacles are unused):
+#define LIQUID_BODY_POSITION 0          // xyz centre (m)
+#define LIQUID_BODY_ORIENTATION 1       // unit quaternion (x, y, z, w), body to world
+#define LIQUID_BODY_VELOCITY 2          // xyz m/s
+#define LIQUID_BODY_ANGULAR_VELOCITY 3  // xyz rad/s (world frame)
+#define LIQUID_BODY_FORCE 4             // xyz N: the liquid's force over the last step (reported)
+#define LIQUID_BODY_TORQUE 5            // xyz N m about the centre (reported)
+#define LIQUID_BODY_ACCELERATION 6      // xyz m/s^2 of the last step (the added-mass term)
+#define LIQUID_BODY_ANGULAR_ACCELERATION 7
+#define LIQUID_BODY_TEXELS 8
+// The reaction pass's two targets (one texel per obstacle): force (N) and torque (N m).
+#define LIQUID_BODY_REACTION_FORCE 0
+#define LIQUID_BODY_REACTION_TORQUE 1
 
 // ---- Descriptor bindings (set 0, push descriptors) ----------------------------------------------
 // Every pipeline that includes common.glsl has the solver's uniform block at binding 0.
@@ -42,6 +61,15 @@
 #define LIQUID_BINDING_PARTICLE_VELOCITIES 2
 #define LIQUID_BINDING_PARTICLE_SPLAT 3
 #define LIQUID_BINDING_PARTICLE_GRID_VELOCITY 4
+// The body-state texture, read where dynamic obstacles are evaluated (grid, particle, body passes).
+#define LIQUID_BINDING_BODIES 5
+// The body grid pass reads the splat at LIQUID_BINDING_GRID_SPLAT, as the grid pass does (it
+// repeats the grid pass's update without one body). The body reaction pass reads the particles'
+// positions and the grid pass's u' at the particle pass's bindings, and this one's u' without the
+// body at its own. The integration pass: the reaction's force and torque.
+#define LIQUID_BINDING_BODY_GRID_VELOCITY 6
+#define LIQUID_BINDING_BODY_FORCE 1
+#define LIQUID_BINDING_BODY_TORQUE 2
 // Views.
 #define LIQUID_BINDING_VIEW_UNIFORMS 1      // raymarch, height field: the view's own block
 #define LIQUID_BINDING_VIEW2D_DENSITY 1
@@ -79,6 +107,8 @@ constexpr int k_wall_table_size = LIQUID_WALL_TABLE_SIZE;
 constexpr int k_obstacle_sphere = LIQUID_OBSTACLE_SPHERE;
 constexpr int k_obstacle_box = LIQUID_OBSTACLE_BOX;
 constexpr int k_obstacle_metaballs = LIQUID_OBSTACLE_METABALLS;
+constexpr int k_obstacle_dynamic = LIQUID_OBSTACLE_DYNAMIC;
+constexpr int k_body_texels = LIQUID_BODY_TEXELS;
 }  // namespace liquid::gpu
 #define LIQUID_STRUCT(name) struct alignas(16) name
 #define LIQUID_ALIGN16 alignas(16)
@@ -98,9 +128,21 @@ LIQUID_STRUCT(Obstacle) {
   float sphere_radius;      // m
   vec3 box_half_extent;     // m
   float metaball_threshold; // surface where sum (1 - d^2/R^2)^2 reaches it
-  vec3 velocity;            // m/s
+  vec3 velocity;            // m/s, of the centre
   int first_ball;           // metaballs: first entry in balls[]
   int ball_count;
+  LIQUID_ALIGN16 vec4 orientation;  // unit quaternion (x, y, z, w), the shape's frame to world
+  vec3 angular_velocity;    // rad/s, world frame: a point p moves at velocity + w x (p - center)
+};
+
+// A dynamic obstacle's rigid-body constants, read by the integration pass (body.frag).
+LIQUID_STRUCT(Body) {
+  vec3 inertia;             // kg m^2, principal moments in the shape's frame (2D: per metre of depth)
+  float mass;               // kg (2D: per metre of depth)
+  vec3 external_force;      // N, the host's (LiquidNode::set_body_force), through the centre
+  float added_mass;         // kg, the integrator's added-mass term (docs/physics.md)
+  vec3 external_torque;     // N m
+  float added_inertia_ratio;  // the same for rotation, as a fraction of the inertia
 };
 
 LIQUID_STRUCT(Brush) {     // f_ext (eq. 2): acceleration falling smoothly to zero at the radius
@@ -146,6 +188,7 @@ LIQUID_STRUCT(SolverUniforms) {
   vec4 ground[LIQUID_MAX_GROUND_HILLS]; // hills: xy centre (m), z height (m), w width (m)
   Brush brushes[LIQUID_MAX_BRUSHES];
   EmitterRange emitters[LIQUID_MAX_EMITTERS];
+  Body bodies[LIQUID_MAX_OBSTACLES];
 };
 
 #ifdef __cplusplus

@@ -48,13 +48,8 @@ float tank_distance(vec2 q) {
   return min(min(left, right), bottom);
 }
 
-// Signed distance (m) to obstacle i in the plane. A box's half extent along z is 0 in a 2D scene,
-// which makes common.glsl's 3D box distance 0 everywhere inside; the 2D box distance avoids that.
-float obstacle_distance_2d(int i, vec2 p) {
-  Obstacle o = u.obstacles[i];
-  if (obstacle_kind(i) == LIQUID_OBSTACLE_BOX) return sd_box(vec3(p - o.center.xy, 0.0), vec3(o.box_half_extent.xy, 1.0));
-  return obstacle_distance(i, vec3(p, 0.0));
-}
+// Signed distance (m) to obstacle i in the plane.
+float obstacle_distance_2d(int i, vec2 p) { return obstacle_distance(i, vec3(p, 0.0)); }
 
 void main() {
   // Domain coordinates: q in pixels from the domain's bottom-left corner (y up), p in metres.

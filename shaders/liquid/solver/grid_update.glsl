@@ -1,0 +1,109 @@
+// The grid pass's update of one cell (section 4), shared by the grid pass (grid.frag) and the body
+// reaction pass (body_reaction.vert), which repeats it without one dynamic obstacle to measure what
+// that obstacle did to the liquid. Include after common.glsl; SPLAT_ADJOINT as in grid.frag.
+#ifndef LIQUID_GRID_UPDATE_GLSL
+#define LIQUID_GRID_UPDATE_GLSL
+#include "liquid/solver/pressure.glsl"
+
+#ifndef SPLAT_ADJOINT
+#define SPLAT_ADJOINT 0
+#endif
+
+layout(set = 0, binding = LIQUID_BINDING_GRID_SPLAT) uniform GRID_SAMPLER u_splat;
+#if SPLAT_ADJOINT
+layout(set = 0, binding = LIQUID_BINDING_GRID_POTENTIAL) uniform GRID_SAMPLER u_potential;
+#endif
+
+// Pressure at neighbour cell c (clamped into the grid, which makes the difference one-sided at the
+// walls) whose kernel share inside the domain is `coverage`: liquid plus obstacle or ground density,
+// without obstacle `excluded` (-1: with all).
+float pressure_at(ivec3 c, float coverage, int excluded) {
+  c = clamp(c, ivec3(0), grid_cells() - 1);
+  float rho = u.density_scale * fetch_grid(u_splat, c).a / coverage;
+  vec3 p = cell_center(c);
+  rho += obstacle_density(p, excluded);
+  if (shallow_water()) rho += u.rest_density * ground_height(p.xy) / u.rest_depth;
+  return pressure_from_density(rho);
+}
+
+#if SPLAT_ADJOINT
+// Phi at the neighbour `offset` (-1 or 1) cells from c along axis a; one cell beyond a wall, the
+// wall cell's (fetch_grid clamps to its mirror image) plus the hydrostatic rise, as potential.frag
+// gathers P. Only axis a can leave the grid, so only its part of the rise is taken.
+float potential_at(ivec3 c, int a, int offset) {
+  c[a] += offset;
+  return fetch_grid(u_potential, c).r + wall_ghost_rise_along(a, c[a]);
+}
+#endif
+
+// u' of cell c whose splat is `splat`, without obstacle `excluded` (-1: with all): the splatted
+// velocity, accelerated by -grad P + g + f_ext over dt, then no flow through the walls or into
+// obstacles.
+vec3 grid_update(ivec3 c, vec4 splat, int excluded) {
+  ivec3 n = grid_cells();
+  float h = cell_size();
+  float dt = u.dt;
+  bool fluid = splat.a > k_fluid_epsilon;
+  vec3 velocity = fluid ? splat.rgb / splat.a : vec3(0.0);
+
+#if SPLAT_ADJOINT
+  // Central differences of Phi, with the hydrostatic ghost cells beyond the walls.
+  vec3 grad_p = vec3(0.0);
+  [[unroll]] for (int a = 0; a < DIM; ++a) grad_p[a] = potential_at(c, a, 1) - potential_at(c, a, -1);
+#else
+  // Wall coverage is a product over the axes, so each neighbour's is the centre's with one factor
+  // swapped: 3 factors per axis instead of a full product per neighbour.
+  vec3 below = vec3(1.0), here = vec3(1.0), above = vec3(1.0);
+  [[unroll]] for (int a = 0; a < DIM; ++a) {
+    below[a] = axis_coverage(c[a] - 1, n[a]);
+    here[a] = axis_coverage(c[a], n[a]);
+    above[a] = axis_coverage(c[a] + 1, n[a]);
+  }
+
+  // Eq. 3: central differences of the pressure.
+  vec3 grad_p;
+  grad_p.x = pressure_at(c + ivec3(1, 0, 0), above.x * here.y * here.z, excluded) -
+             pressure_at(c - ivec3(1, 0, 0), below.x * here.y * here.z, excluded);
+  grad_p.y = pressure_at(c + ivec3(0, 1, 0), here.x * above.y * here.z, excluded) -
+             pressure_at(c - ivec3(0, 1, 0), here.x * below.y * here.z, excluded);
+  grad_p.z = 0.0;
+#if DIM == 3
+  grad_p.z = pressure_at(c + ivec3(0, 0, 1), here.x * here.y * above.z, excluded) -
+             pressure_at(c - ivec3(0, 0, 1), here.x * here.y * below.z, excluded);
+#endif
+#endif
+  grad_p /= 2.0 * h;
+
+  vec3 p = cell_center(c);
+  vec3 acceleration = -grad_p + u.gravity + external_acceleration(p);
+  velocity += dt * acceleration;
+
+  // Obstacles: inside, the liquid moves with the obstacle; near the surface, no relative
+  // velocity into it. The obstacle's velocity is its material's at p (v + w x r).
+  [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
+    if (i == excluded) continue;
+    float d = obstacle_distance(i, p);
+    if (d > h) continue;
+    vec3 v_obstacle = obstacle_velocity_at(i, p);
+    if (d < 0.0) {
+      velocity = v_obstacle;
+    } else {
+      vec3 normal = obstacle_normal(i, p);
+      float into = dot(velocity - v_obstacle, normal);
+      if (into < 0.0) velocity -= into * normal;
+    }
+  }
+
+  // Section 4's wall condition: in a cell next to a wall, the velocity component normal to that
+  // wall is zero.
+  if ((c.x == 0 && velocity.x < 0.0) || (c.x == n.x - 1 && velocity.x > 0.0)) velocity.x = 0.0;
+  if ((c.y == 0 && velocity.y < 0.0) || (c.y == n.y - 1 && velocity.y > 0.0)) velocity.y = 0.0;
+#if DIM == 3
+  if ((c.z == 0 && velocity.z < 0.0) || (c.z == n.z - 1 && velocity.z > 0.0)) velocity.z = 0.0;
+#else
+  velocity.z = 0.0;
+#endif
+  return velocity;
+}
+
+#endif
