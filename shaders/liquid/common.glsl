@@ -178,14 +178,13 @@ ObstacleFrame obstacle_frame(int index) {
   return f;
 }
 
-// p in obstacle `index`'s own frame: relative to its centre, unrotated (in the plane in 2D).
-vec3 obstacle_local(int index, vec3 p) {
-  ObstacleFrame f = obstacle_frame(index);
-  vec3 local = quat_rotate_inverse(f.orientation, p - f.center);
+// p relative to obstacle `index`'s centre (in the plane in 2D).
+vec3 obstacle_offset(int index, vec3 p) {
+  vec3 offset = p - obstacle_frame(index).center;
 #if DIM == 2
-  local.z = 0.0;
+  offset.z = 0.0;
 #endif
-  return local;
+  return offset;
 }
 
 // The velocity of the obstacle's material at p: v + w x (p - c).
@@ -194,30 +193,30 @@ vec3 obstacle_velocity_at(int index, vec3 p) {
   return f.velocity + cross(f.angular_velocity, p - f.center);
 }
 
+// Only a box turns its distance with its orientation (a sphere's does not change, and metaballs
+// take no rotation), so the others skip the quaternion.
 float obstacle_distance(int index, vec3 p) {
   Obstacle o = u.obstacles[index];
-  vec3 local = obstacle_local(index, p);
+  vec3 offset = obstacle_offset(index, p);
   int kind = obstacle_kind(index);
-  if (kind == LIQUID_OBSTACLE_SPHERE) return length(local) - o.sphere_radius;
+  if (kind == LIQUID_OBSTACLE_SPHERE) return length(offset) - o.sphere_radius;
   if (kind == LIQUID_OBSTACLE_BOX) {
+    vec3 local = quat_rotate_inverse(obstacle_frame(index).orientation, offset);  // the box's own frame
 #if DIM == 2
     return sd_box(local, vec3(o.box_half_extent.xy, 1.0));  // the rectangle's distance in the plane
 #else
     return sd_box(local, o.box_half_extent);
 #endif
   }
-  return sd_metaballs(local, o);
+  return sd_metaballs(offset, o);
 }
 
 // Outward normal: exact for a sphere, by central differences for the other kinds.
 vec3 obstacle_normal(int index, vec3 p) {
   if (obstacle_kind(index) == LIQUID_OBSTACLE_SPHERE) {
-    vec3 local = p - obstacle_frame(index).center;
-#if DIM == 2
-    local.z = 0.0;
-#endif
-    float len = length(local);
-    return len > 1e-12 ? local / len : vec3(0.0, 1.0, 0.0);
+    vec3 offset = obstacle_offset(index, p);
+    float len = length(offset);
+    return len > 1e-12 ? offset / len : vec3(0.0, 1.0, 0.0);
   }
   float e = 0.25 * cell_size();
   vec3 n = vec3(obstacle_distance(index, p + vec3(e, 0, 0)) - obstacle_distance(index, p - vec3(e, 0, 0)),

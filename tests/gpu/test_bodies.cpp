@@ -130,7 +130,7 @@ void check_floating_box(const Pool& pool, double settle_seconds, double measure_
 // [!mayfail]: the draft target (5 %) is not met yet; the measured draft is printed (docs/physics.md,
 // "Bodies that float", says why and by how much).
 TEST_CASE("a 2D box of half the water's density floats with half its height under water", "[gpu][liquid][bodies][!mayfail]") {
-  check_floating_box(Pool{}, 2.0, 0.4);
+  check_floating_box(Pool{}, 1.6, 0.4);
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
@@ -143,7 +143,7 @@ TEST_CASE("a 3D box of half the water's density floats with half its height unde
   pool.depth = 0.12f;
   pool.half_extent = {0.08f, 0.05f, 0.08f};
   pool.spacings_per_cell = 1.0f;
-  check_floating_box(pool, 1.0, 0.4);
+  check_floating_box(pool, 0.8, 0.4);
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
