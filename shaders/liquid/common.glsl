@@ -228,45 +228,21 @@ vec3 obstacle_normal(int index, vec3 p) {
   return len > 1e-12 ? n / len : vec3(0.0, 1.0, 0.0);
 }
 
-// The share of the splat kernel's mass beyond a plane `d` metres from its centre, on the side away
-// from it (d > 0; 1 - that for d < 0): the wall table (liquid/physics/wall_coverage.h, entry k at
-// k + 0.5 cells) interpolated, 0.5 on the plane. Selected with comparisons (see kernel_mass_beyond).
-float kernel_share_beyond(float d) {
-  float x = abs(d) / cell_size() - 0.5;  // in table entries from the first
-  float below = 0.5, above = 0.0, t;
-  if (x >= 0.0) {
-    int k = int(floor(x));
-    t = x - float(k);
-    below = 0.0;
-    [[unroll]] for (int i = 0; i < LIQUID_WALL_TABLE_SIZE; ++i) {
-      below = k == i ? u.wall_kernel_beyond[i / 4][i % 4] : below;
-      above = k + 1 == i ? u.wall_kernel_beyond[i / 4][i % 4] : above;
-    }
-  } else {  // between the plane (0.5) and the first entry
-    t = 2.0 * (x + 0.5);
-    above = u.wall_kernel_beyond[0][0];
-  }
-  float share = mix(below, above, t);
-  return d >= 0.0 ? share : 1.0 - share;
-}
-
-// Artificial obstacle density (section 6), added to the fluid density before the pressure, so the
-// pressure gradient pushes liquid away from the obstacle. A scripted obstacle's: rho0 at the
-// surface, rising linearly inside and falling to zero one band outside. A dynamic one's: rho0 times
-// the kernel's share of a body shrunk by one band (the density that shrunk body would splat if it
-// were liquid), so it is zero on and outside the real surface. Why: the pressure is clamped at 0
-// below rho0 (pressure_from_density), so whatever density an obstacle adds where liquid is acts as
-// a wall one band further out, and a body riding on the scripted ramp floats a band too high; the
-// shrunk field leaves the no-inflow condition to hold the liquid at the surface itself
-// (docs/physics.md, "Bodies that float", with the measured drafts).
-// `excluded`: an obstacle left out (the body reaction pass's liquid without that body), or -1.
+// Artificial obstacle density (section 6): rho0 at the surface, rising linearly inside and falling
+// to zero one band outside. Added to the fluid density before the pressure, so the pressure
+// gradient pushes liquid away from the obstacle. A dynamic obstacle adds none: the pressure is
+// clamped at 0 below rho0 (pressure_from_density), so any density an obstacle adds where liquid is
+// acts as a wall a band further out, and a body riding on that cushion floats a band too high; the
+// no-inflow condition and the particle pass hold the liquid at its surface instead
+// (docs/physics.md, "Bodies that float", with the drafts measured each way).
+// `excluded`: an obstacle left out (the body grid pass's liquid without that body), or -1.
 float obstacle_density(vec3 p, int excluded) {
   float band = u.obstacle_band;
   float total = 0.0;
   [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
-    if (i == excluded) continue;
+    if (i == excluded || obstacle_dynamic(i)) continue;
     float d = obstacle_distance(i, p);
-    total += obstacle_dynamic(i) ? kernel_share_beyond(d + band) : clamp(1.0 - d / band, 0.0, 2.0);
+    total += clamp(1.0 - d / band, 0.0, 2.0);
   }
   return total * u.rest_density;
 }
