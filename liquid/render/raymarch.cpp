@@ -33,7 +33,8 @@ std::vector<int32_t> raymarch_specialization(const LiquidNode& node, bool compos
 
 engine::vk::GraphicsPipelineDesc raymarch_pipeline_desc(const LiquidNode& node, const GridLayout& bricks,
                                                        bool composite, bool background_only, bool reversed_z = false,
-                                                       VkFormat color_format = k_color_format) {
+                                                       VkFormat color_format = k_color_format,
+                                                       VkFormat depth_format = k_depth_format) {
   return engine::vk::GraphicsPipelineDesc{
       .name = background_only ? "liquid.raymarch.background" : "liquid.raymarch",
       .vertex = engine::passes::fullscreen_vertex_shader(),
@@ -41,7 +42,7 @@ engine::vk::GraphicsPipelineDesc raymarch_pipeline_desc(const LiquidNode& node, 
       .color_formats = {color_format},
       // Composited: blended over the host's colour (the shader writes the liquid's coverage in alpha).
       .blend = {composite ? engine::vk::BlendMode::Alpha : engine::vk::BlendMode::None},
-      .depth_format = k_depth_format,
+      .depth_format = depth_format,
       .depth_test = true,
       .depth_write = true,
       .depth_compare = reversed_z ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL,
@@ -109,6 +110,11 @@ std::optional<int> composite_output_encoding(VkFormat format) {
   }
 }
 
+bool is_composite_depth_format(VkFormat format) {
+  return format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D24_UNORM_S8_UINT ||
+         format == VK_FORMAT_D32_SFLOAT_S8_UINT;
+}
+
 glm::mat4 raymarch_view_projection(const SimulationSetup& setup, const CameraView& camera, float aspect) {
   const float far_plane = 4.0f * glm::length(setup.domain) + glm::length(camera.position - camera.target) * 2.0f;
   return view_projection(camera, aspect, 0.01f, far_plane);
@@ -160,14 +166,15 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
                                 std::to_string(settings.width) + "x" + std::to_string(settings.height) + " targets");
   if (view_input.reversed_z && !composite_)
     throw std::logic_error("liquid.raymarch: reversed Z is for a host's targets; the renderer's own frame is forward");
-  // Compositing: the pipeline for the host's colour format and depth convention, made once.
+  // Compositing: the pipeline for the host's colour and depth formats and depth convention, made once.
   const engine::vk::GraphicsPipeline* pipeline = &raymarch_;
   if (composite_) {
-    const VkFormat format = graph.image_desc(targets->color).format;
-    auto& cached = composite_pipelines_[{format, view_input.reversed_z}];
+    const CompositeKey key{graph.image_desc(targets->color).format, graph.image_desc(targets->depth).format,
+                           view_input.reversed_z};
+    auto& cached = composite_pipelines_[key];
     if (!cached)
       cached = std::make_unique<engine::vk::GraphicsPipeline>(
-          context_, raymarch_pipeline_desc(node_, bricks_, true, false, view_input.reversed_z, format));
+          context_, raymarch_pipeline_desc(node_, bricks_, true, false, key.reversed_z, key.color, key.depth));
     pipeline = cached.get();
   }
   gpu::RaymarchUniforms render{};

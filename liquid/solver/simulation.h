@@ -45,6 +45,7 @@ class Simulation {
   double adapt_time_step(const Diagnostics& d);  // by liquid/physics/time_step.h's CFL conditions
   void set_time_step(double dt);
   void set_brushes(std::vector<ForceBrush> brushes) { brushes_ = std::move(brushes); }
+  const std::vector<ForceBrush>& brushes() const { return brushes_; }
   RuntimeParameters runtime_parameters() const { return {setup_.gravity, setup_.pic_ratio, setup_.stiffness}; }
   void set_runtime_parameters(const RuntimeParameters& parameters);
   void set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity);
