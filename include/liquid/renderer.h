@@ -8,6 +8,7 @@
 #include "liquid/camera.h"
 #include "liquid/node.h"
 
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -29,7 +30,8 @@ struct RenderSettings {
   // FXAA after the view. Empty: on for the renderer's own frame, off when compositing into a
   // host's targets (a host runs its own anti-aliasing after its whole scene, TAA for one); on when
   // compositing, its output lands in the host's colour target, which then needs
-  // VK_IMAGE_USAGE_TRANSFER_SRC_BIT (the composite is copied out to be read).
+  // VK_IMAGE_USAGE_TRANSFER_SRC_BIT (the composite is copied out to be read) and a display-referred
+  // format (not HDR: anti-aliasing belongs after the host's tone map).
   std::optional<bool> fxaa;
   bool draw_particles = false;  // 2D views: the particles as points over the liquid
   // 3D: draw into the host's own colour and depth targets (add_to with HostTargets) instead of a
@@ -128,7 +130,8 @@ class LiquidRenderer {
   std::unique_ptr<RaymarchPass> raymarch_;
   std::unique_ptr<View2dPass> view2d_;
   std::unique_ptr<HeightFieldPass> height_field_;
-  std::unique_ptr<engine::passes::FxaaPass> fxaa_;
+  std::unique_ptr<engine::passes::FxaaPass> fxaa_;  // the renderer's own frame; whether FXAA is on
+  std::map<VkFormat, std::unique_ptr<engine::passes::FxaaPass>> composite_fxaa_;  // per host colour format
 };
 
 }  // namespace liquid

@@ -6,6 +6,7 @@
 #include "liquid/render/raymarch.h"
 #include "liquid/render/view2d.h"
 #include "liquid/solver/simulation.h"
+#include "shaders/liquid/render/view_blocks.h"
 
 #include <stdexcept>
 #include <string>
@@ -98,9 +99,11 @@ RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const Li
                                 std::to_string(int(depth_format)) +
                                 ", which the liquid does not test against (D32_SFLOAT, D24_UNORM_S8_UINT or "
                                 "D32_SFLOAT_S8_UINT, a depth attachment on the device)");
-  if (fxaa_ && color_format != k_color_format)
-    throw std::invalid_argument("liquid: FXAA into the host's colour target '" + graph.image_name(targets.color) +
-                                "' needs R8G8B8A8_UNORM (or RenderSettings::fxaa = false)");
+  // FXAA works on display-referred colour: an HDR target is the host's to tone map first.
+  if (fxaa_ && composite_output_encoding(color_format) == LIQUID_OUTPUT_HDR)
+    throw std::invalid_argument("liquid: FXAA into the host's HDR colour target '" + graph.image_name(targets.color) +
+                                "' would smooth radiance before its tone map; run anti-aliasing after it "
+                                "(RenderSettings::fxaa = false)");
   engine::vk::ImageDesc copy_desc = graph.image_desc(targets.color);
   if (fxaa_ && !(copy_desc.usage & VK_IMAGE_USAGE_TRANSFER_SRC_BIT))
     throw std::invalid_argument("liquid: FXAA in the host's colour target '" + graph.image_name(targets.color) +
@@ -118,7 +121,9 @@ RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const Li
     copy_desc.usage = 0;
     const engine::graph::ImageHandle composite =
         engine::graph::add_copy(graph, r.color, graph.create_image("liquid.composite", copy_desc), "liquid.composite_copy");
-    out.color = out.final = fxaa_->add_to(graph, composite, graph.latest(r.color));
+    auto& pass = composite_fxaa_[color_format];  // a pipeline per host format, made once
+    if (!pass) pass = std::make_unique<engine::passes::FxaaPass>(node_.context(), color_format);
+    out.color = out.final = pass->add_to(graph, composite, graph.latest(r.color));
   }
   return out;
 }

@@ -352,9 +352,9 @@ TEST_CASE("the liquid composites into a host's own images, which the host reads 
 
 TEST_CASE("FXAA is off by default when compositing, and when on it writes into the host's colour target", "[host]") {
   auto frame = [](std::optional<bool> fxaa, engine::graph::ImageHandle* final_color = nullptr,
-                  engine::graph::ImageHandle* imported = nullptr) {
+                  engine::graph::ImageHandle* imported = nullptr, VkFormat format = liquid::k_color_format) {
     liquid::LiquidNode node(test::gpu(), test::shipped_scene("small_3d"));
-    HostTargets targets(test::gpu());
+    HostTargets targets(test::gpu(), format);
     return composite_frame(node, targets, k_composite_steps, {.fxaa = fxaa}, final_color, imported);
   };
   const Composite off = frame(false);
@@ -371,6 +371,18 @@ TEST_CASE("FXAA is off by default when compositing, and when on it writes into t
   INFO(changed << " pixels smoothed of " << liquid_pixels << " liquid pixels");
   CHECK(changed > 0);                     // edges were smoothed in the host's image
   CHECK(changed < liquid_pixels);         // and only edges
+  // The other display-referred formats too, each with a pipeline of its own.
+  for (const VkFormat format : {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_A2B10G10R10_UNORM_PACK32}) {
+    INFO("format " << int(format));
+    const Composite plain = frame(false, nullptr, nullptr, format);
+    const Composite smoothed = frame(true, nullptr, nullptr, format);
+    size_t format_changed = 0;
+    for (size_t p = 0; p < size_t(k_width) * k_height; ++p)
+      format_changed += std::memcmp(&plain.color.pixels[p * 4], &smoothed.color.pixels[p * 4], 4) != 0;
+    INFO(format_changed << " pixels smoothed");
+    CHECK(format_changed > 0);
+    CHECK(format_changed < liquid_pixels);
+  }
   REQUIRE_NO_VALIDATION_MESSAGES();
 
   // A host colour target that cannot be copied from is refused before anything runs.
@@ -384,6 +396,11 @@ TEST_CASE("FXAA is off by default when compositing, and when on it writes into t
                                     import("host.depth", liquid::k_depth_format, k_depth_usage)};
   CHECK_THROWS_WITH(renderer.add_to(graph, node.add_to(graph, 1), liquid::default_camera(node), targets),
                     Catch::Contains("host.color") && Catch::Contains("VK_IMAGE_USAGE_TRANSFER_SRC_BIT"));
+  // FXAA before a host's tone map is refused: it is for display-referred colour.
+  const liquid::HostTargets hdr{import("host.hdr", VK_FORMAT_R16G16B16A16_SFLOAT, k_color_usage),
+                                import("host.depth", liquid::k_depth_format, k_depth_usage)};
+  CHECK_THROWS_WITH(renderer.add_to(graph, node.add_to(graph, 0), liquid::default_camera(node), hdr),
+                    Catch::Contains("host.hdr") && Catch::Contains("tone map"));
 }
 
 namespace {
