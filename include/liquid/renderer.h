@@ -81,10 +81,12 @@ struct HostView {
 // is drawn into (RenderSettings::composite on a 2D scene): the domain fitted into the rectangle,
 // the liquid and the obstacles alone, blended by their coverage over what the host drew there (a
 // panel, a HUD element, a texture the host then samples). The host's pixels outside the rectangle,
-// and inside it where there is no liquid, are left as they were.
+// and inside it where there is no liquid, are left as they were. `background`: the library's own
+// background, letterbox and tank walls too, the rectangle opaque (the 2D view as in its own frame).
 struct HostPanel {
   engine::graph::ImageHandle color;
   VkRect2D rect{};
+  bool background = false;
 };
 
 struct RenderOutputs {

@@ -849,7 +849,7 @@ TEST_CASE("a host samples the node's density outside the graph, from the state t
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
-TEST_CASE("a 2D liquid composites with alpha into a rectangle of the host's target", "[host]") {
+TEST_CASE("a 2D liquid composites with alpha into a rectangle of the host's target, with or without its background", "[host]") {
   engine::vk::Context& context = test::gpu();
   const VkRect2D rect{{90, 10}, {64, 48}};
   // The host's target, cleared to magenta, with the panel drawn into its corner.
@@ -910,6 +910,43 @@ TEST_CASE("a 2D liquid composites with alpha into a rectangle of the host's targ
   CHECK(inside_liquid > 100);
   CHECK(inside_clear > 100);  // no background: the host's pixels show where there is no liquid
   CHECK(matching > inside_liquid * 8 / 10);
+
+  // With the background: the whole rectangle is the opaque view (its letterbox, background and
+  // walls too), and still nothing changes outside it.
+  {
+    engine::graph::RenderGraph with_background(&context);
+    engine::vk::CommandBuffer background_cmd(context);
+    VkCommandBuffer c = background_cmd.begin();
+    host_clear(c, targets);
+    panel_renderer.add_to(with_background, node.add_to(with_background, 0),
+                          liquid::HostPanel{with_background.import_image("host.color", targets.color), rect, true});
+    with_background.compile();
+    with_background.execute(c);
+    background_cmd.submit_and_wait();
+  }
+  const std::vector<std::byte> opaque_bytes = host_read(context, targets.color, 4);
+  size_t opaque_outside_changed = 0, opaque_inside = 0, opaque_matching = 0;
+  for (uint32_t y = 0; y < k_height; ++y)
+    for (uint32_t x = 0; x < k_width; ++x) {
+      const size_t i = size_t(y) * k_width + x;
+      const bool inside = x >= uint32_t(rect.offset.x) && x < uint32_t(rect.offset.x) + rect.extent.width &&
+                          y >= uint32_t(rect.offset.y) && y < uint32_t(rect.offset.y) + rect.extent.height;
+      const auto* texel = reinterpret_cast<const uint8_t*>(&opaque_bytes[i * 4]);
+      const bool magenta = std::memcmp(texel, k_magenta.data(), 4) == 0;
+      if (!inside) {
+        opaque_outside_changed += !magenta;
+        continue;
+      }
+      ++opaque_inside;
+      const size_t j = (size_t(y) - rect.offset.y) * rect.extent.width + (x - rect.offset.x);
+      bool same = !magenta;
+      for (int ch = 0; ch < 3; ++ch) same = same && std::abs(int(texel[ch]) - int(opaque.pixels[j * 4 + ch])) <= 8;
+      opaque_matching += same;
+    }
+  INFO(opaque_matching << " of " << opaque_inside << " panel pixels as in the opaque view with the background, "
+                       << opaque_outside_changed << " changed outside");
+  CHECK(opaque_outside_changed == 0);
+  CHECK(opaque_matching > opaque_inside * 95 / 100);
   REQUIRE_NO_VALIDATION_MESSAGES();
   // A rectangle outside the target is refused in one line.
   engine::graph::RenderGraph refused(&context);
