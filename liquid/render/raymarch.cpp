@@ -2,6 +2,7 @@
 
 #include "engine/passes/bindings.h"
 #include "engine/passes/fullscreen.h"
+#include "engine/vk/context.h"
 #include "liquid/solver/images.h"
 #include "liquid/solver/simulation.h"
 #include "liquid/solver/specialization.h"
@@ -35,13 +36,20 @@ engine::vk::GraphicsPipelineDesc raymarch_pipeline_desc(const LiquidNode& node, 
                                                        bool composite, bool background_only, bool reversed_z = false,
                                                        VkFormat color_format = k_color_format,
                                                        VkFormat depth_format = k_depth_format) {
+  // Composited: blended over the host's colour (the shader writes the liquid's coverage in alpha),
+  // filtering it per channel where the device has dual-source blending.
+  const bool transmit = composite && node.context().supports_dual_source_blend();
+  const auto fragment = transmit ? (bricks.atlas() ? liquid_shaders::raymarch_frag_atlas_transmit
+                                                   : liquid_shaders::raymarch_frag_transmit)
+                                 : (bricks.atlas() ? liquid_shaders::raymarch_frag_atlas : liquid_shaders::raymarch_frag);
   return engine::vk::GraphicsPipelineDesc{
       .name = background_only ? "liquid.raymarch.background" : "liquid.raymarch",
       .vertex = engine::passes::fullscreen_vertex_shader(),
-      .fragment = bricks.atlas() ? liquid_shaders::raymarch_frag_atlas : liquid_shaders::raymarch_frag,
+      .fragment = fragment,
       .color_formats = {color_format},
-      // Composited: blended over the host's colour (the shader writes the liquid's coverage in alpha).
-      .blend = {composite ? engine::vk::BlendMode::Alpha : engine::vk::BlendMode::None},
+      .blend = {transmit    ? engine::vk::BlendMode::Transmit
+                : composite ? engine::vk::BlendMode::Alpha
+                            : engine::vk::BlendMode::None},
       .depth_format = depth_format,
       .depth_test = true,
       .depth_write = true,
