@@ -141,10 +141,46 @@ vec3 obstacle_local(int index, vec3 p) {
   return local;
 }
 
+// Mesh obstacles (MESH_FIELD=1, the passes of scenes with meshes): their signed distance, built on
+// the grid by the rasterizer (liquid/solver/mesh_field.h), one channel per mesh in scene order,
+// exact within obstacle_band + LIQUID_MESH_FIELD_MARGIN_CELLS cells of the surface, clamped beyond.
+#ifndef MESH_FIELD
+#define MESH_FIELD 0
+#endif
+#if MESH_FIELD
+layout(set = 0, binding = LIQUID_BINDING_MESH_FIELD) uniform GRID_SAMPLER u_mesh_field;
+
+// The channel of obstacle `index`: how many meshes come before it (constant once specialized).
+int mesh_slot(int index) {
+  int slot = 0;
+  [[unroll]] for (int j = 0; j < LIQUID_MAX_OBSTACLES; ++j)
+    if (j < index && obstacle_kind(j) == LIQUID_OBSTACLE_MESH) ++slot;
+  return slot;
+}
+
+// Trilinear between cell centres (bilinear in 2D), like a sampled analytic distance.
+float mesh_distance(int index, vec3 p) {
+  vec3 uvw = p / (vec3(grid_cells()) * cell_size());
+#if DIM == 2
+  vec4 field = textureLod(u_mesh_field, uvw.xy, 0.0);
+#elif ATLAS
+  vec4 field = atlas_sample_linear(u_mesh_field, uvw, grid_cells(), atlas_tiles());
+#else
+  vec4 field = textureLod(u_mesh_field, uvw, 0.0);
+#endif
+  return field[mesh_slot(index)];
+}
+#endif
+
 float obstacle_distance(int index, vec3 p) {
   Obstacle o = u.obstacles[index];
   vec3 local = obstacle_local(index, p);
   int kind = obstacle_kind(index);
+#if MESH_FIELD
+  if (kind == LIQUID_OBSTACLE_MESH) return mesh_distance(index, p);
+#else
+  if (kind == LIQUID_OBSTACLE_MESH) return 1e6;  // a pass without the field (drawn another way)
+#endif
   if (kind == LIQUID_OBSTACLE_SPHERE) return length(local) - o.sphere_radius;
   if (kind == LIQUID_OBSTACLE_BOX) return sd_box(local, o.box_half_extent);
   return sd_metaballs(local, o);

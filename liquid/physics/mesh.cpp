@@ -1,0 +1,179 @@
+#include "liquid/physics/mesh.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <tuple>
+
+namespace liquid {
+
+namespace {
+
+// Closest distance from p to the triangle (a, b, c) (Ericson, Real-Time Collision Detection 5.1.5).
+float triangle_distance(glm::vec3 p, glm::vec3 a, glm::vec3 b, glm::vec3 c) {
+  const glm::vec3 ab = b - a, ac = c - a, ap = p - a;
+  const float d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+  if (d1 <= 0.0f && d2 <= 0.0f) return glm::length(ap);
+  const glm::vec3 bp = p - b;
+  const float d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+  if (d3 >= 0.0f && d4 <= d3) return glm::length(bp);
+  const float vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0f && d1 >= 0.0f && d3 <= 0.0f) return glm::length(ap - ab * (d1 / (d1 - d3)));
+  const glm::vec3 cp = p - c;
+  const float d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+  if (d6 >= 0.0f && d5 <= d6) return glm::length(cp);
+  const float vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0f && d2 >= 0.0f && d6 <= 0.0f) return glm::length(ap - ac * (d2 / (d2 - d6)));
+  const float va = d3 * d6 - d5 * d4;
+  if (va <= 0.0f && (d4 - d3) >= 0.0f && (d5 - d6) >= 0.0f)
+    return glm::length(bp - (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6))));
+  const float denom = 1.0f / (va + vb + vc);
+  return glm::length(ap - ab * (vb * denom) - ac * (vc * denom));
+}
+
+}  // namespace
+
+void weld_positions(TriangleMesh& mesh) {
+  const auto key = [](glm::vec3 v) { return std::make_tuple(v.x, v.y, v.z); };
+  std::map<std::tuple<float, float, float>, uint32_t> index_of;
+  std::vector<glm::vec3> vertices;
+  std::vector<uint32_t> remap(mesh.vertices.size());
+  for (size_t i = 0; i < mesh.vertices.size(); ++i) {
+    auto [it, added] = index_of.try_emplace(key(mesh.vertices[i]), uint32_t(vertices.size()));
+    if (added) vertices.push_back(mesh.vertices[i]);
+    remap[i] = it->second;
+  }
+  std::vector<uint32_t> indices;
+  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    uint32_t v[3];
+    for (int k = 0; k < 3; ++k) v[k] = mesh.indices[t + k] < remap.size() ? remap[mesh.indices[t + k]] : UINT32_MAX;
+    if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) continue;  // collapsed to a line or a point
+    indices.insert(indices.end(), v, v + 3);
+  }
+  mesh.vertices = std::move(vertices);
+  mesh.indices = std::move(indices);
+}
+
+std::string mesh_problem(const TriangleMesh& mesh) {
+  if (mesh.indices.size() % 3 != 0)
+    return "the index count (" + std::to_string(mesh.indices.size()) + ") is not a multiple of 3";
+  const size_t triangles = mesh.indices.size() / 3;
+  if (triangles == 0) return "the mesh has no triangles";
+  for (uint32_t i : mesh.indices)
+    if (i >= mesh.vertices.size())
+      return "index " + std::to_string(i) + " is past the " + std::to_string(mesh.vertices.size()) + " vertices";
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (uint32_t i : mesh.indices) {
+    const glm::vec3 v = mesh.vertices[i];
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) return "a vertex is not finite";
+    lo = glm::min(lo, v);
+    hi = glm::max(hi, v);
+  }
+  const glm::vec3 extent = hi - lo;
+  const float largest = std::max(extent.x, std::max(extent.y, extent.z));
+  if (!(largest > 0.0f) || std::min(extent.x, std::min(extent.y, extent.z)) <= 1e-6f * largest)
+    return "degenerate extent (" + std::to_string(extent.x) + " x " + std::to_string(extent.y) + " x " +
+           std::to_string(extent.z) + "): the mesh encloses no volume";
+  // Each directed edge once, and its reverse once: every edge shared by two triangles that agree
+  // on which side is outside.
+  std::map<std::pair<uint32_t, uint32_t>, int> directed;
+  for (size_t t = 0; t < triangles; ++t)
+    for (int k = 0; k < 3; ++k) ++directed[{mesh.indices[3 * t + k], mesh.indices[3 * t + (k + 1) % 3]}];
+  size_t bad = 0;
+  std::pair<uint32_t, uint32_t> example{};
+  for (const auto& [edge, count] : directed) {
+    const auto reverse = directed.find({edge.second, edge.first});
+    if (count != 1 || reverse == directed.end() || reverse->second != 1) {
+      if (bad++ == 0) example = edge;
+    }
+  }
+  if (bad > 0)
+    return "the mesh is not closed: " + std::to_string(bad) +
+           " edges are not shared by exactly two triangles of opposite orientation (e.g. vertices " +
+           std::to_string(example.first) + "-" + std::to_string(example.second) + ")";
+  return "";
+}
+
+glm::mat4 mesh_to_world(const TriangleMesh& mesh, glm::vec3 center) {
+  return glm::translate(glm::mat4(1.0f), center) * glm::mat4_cast(mesh.rotation) *
+         glm::scale(glm::mat4(1.0f), glm::vec3(mesh.scale));
+}
+
+float longest_edge(const TriangleMesh& mesh) {
+  float longest = 0.0f;
+  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
+    for (int k = 0; k < 3; ++k)
+      longest = std::max(longest, glm::distance(mesh.vertices[mesh.indices[t + k]],
+                                                mesh.vertices[mesh.indices[t + (k + 1) % 3]]));
+  return longest;
+}
+
+PlacedMesh::PlacedMesh(const TriangleMesh& mesh, glm::vec3 center, float reach) : reach_(reach) {
+  const glm::mat4 m = mesh_to_world(mesh, center);
+  lo_ = glm::vec3(INFINITY);
+  hi_ = glm::vec3(-INFINITY);
+  for (uint32_t i : mesh.indices) {
+    corners_.push_back(glm::vec3(m * glm::vec4(mesh.vertices[i], 1.0f)));
+    lo_ = glm::min(lo_, corners_.back());
+    hi_ = glm::max(hi_, corners_.back());
+  }
+  lo_ -= reach;
+  hi_ += reach;
+  const glm::vec3 extent = hi_ - lo_;
+  buckets_ = glm::clamp(glm::ivec3(extent / std::max(reach, 1e-6f)), glm::ivec3(1), glm::ivec3(64));
+  bucket_size_ = extent / glm::vec3(buckets_);
+  bucket_triangles_.resize(size_t(buckets_.x) * buckets_.y * buckets_.z);
+  column_triangles_.resize(size_t(buckets_.x) * buckets_.y);
+  for (size_t t = 0; t < corners_.size() / 3; ++t) {
+    glm::vec3 a = corners_[3 * t], b = corners_[3 * t + 1], c = corners_[3 * t + 2];
+    const glm::ivec3 from = bucket_of(glm::min(a, glm::min(b, c)) - reach);
+    const glm::ivec3 to = bucket_of(glm::max(a, glm::max(b, c)) + reach);
+    for (int z = from.z; z <= to.z; ++z)
+      for (int y = from.y; y <= to.y; ++y)
+        for (int x = from.x; x <= to.x; ++x)
+          bucket_triangles_[size_t(x) + size_t(buckets_.x) * (size_t(y) + size_t(buckets_.y) * z)].push_back(int(t));
+    const glm::ivec3 col_from = bucket_of(glm::min(a, glm::min(b, c)));
+    const glm::ivec3 col_to = bucket_of(glm::max(a, glm::max(b, c)));
+    for (int y = col_from.y; y <= col_to.y; ++y)
+      for (int x = col_from.x; x <= col_to.x; ++x) column_triangles_[size_t(x) + size_t(buckets_.x) * y].push_back(int(t));
+  }
+}
+
+glm::ivec3 PlacedMesh::bucket_of(glm::vec3 p) const {
+  return glm::clamp(glm::ivec3(glm::floor((p - lo_) / bucket_size_)), glm::ivec3(0), buckets_ - 1);
+}
+
+bool PlacedMesh::inside(glm::vec3 p) const {
+  if (glm::any(glm::lessThan(p, lo_)) || glm::any(glm::greaterThan(p, hi_))) return false;
+  // The winding number along the ray from p toward +z: each triangle above p whose projection
+  // covers p adds the sign of its normal's z (+1 leaving the solid, -1 entering).
+  const glm::ivec3 b = bucket_of(p);
+  int winding = 0;
+  for (int t : column_triangles_[size_t(b.x) + size_t(buckets_.x) * b.y]) {
+    const glm::vec3 a = corners_[3 * t], c1 = corners_[3 * t + 1], c2 = corners_[3 * t + 2];
+    const float area = (c1.x - a.x) * (c2.y - a.y) - (c2.x - a.x) * (c1.y - a.y);
+    if (area == 0.0f) continue;
+    const float w1 = ((c2.x - p.x) * (a.y - p.y) - (a.x - p.x) * (c2.y - p.y)) / area;
+    const float w2 = ((a.x - p.x) * (c1.y - p.y) - (c1.x - p.x) * (a.y - p.y)) / area;
+    const float w0 = 1.0f - w1 - w2;
+    if (w0 < 0.0f || w1 < 0.0f || w2 < 0.0f) continue;
+    if (w0 * a.z + w1 * c1.z + w2 * c2.z <= p.z) continue;
+    winding += area > 0.0f ? 1 : -1;
+  }
+  return winding != 0;
+}
+
+float PlacedMesh::distance(glm::vec3 p) const {
+  const bool in = inside(p);
+  float nearest = reach_;
+  if (!(glm::any(glm::lessThan(p, lo_)) || glm::any(glm::greaterThan(p, hi_)))) {
+    const glm::ivec3 b = bucket_of(p);
+    for (int t : bucket_triangles_[size_t(b.x) + size_t(buckets_.x) * (size_t(b.y) + size_t(buckets_.y) * b.z)])
+      nearest = std::min(nearest, triangle_distance(p, corners_[3 * t], corners_[3 * t + 1], corners_[3 * t + 2]));
+  }
+  return in ? -nearest : nearest;
+}
+
+}  // namespace liquid
