@@ -149,6 +149,10 @@ bool PlacedMesh::inside(glm::vec3 p) const {
   if (glm::any(glm::lessThan(p, lo_)) || glm::any(glm::greaterThan(p, hi_))) return false;
   // The winding number along the ray from p toward +z: each triangle above p whose projection
   // covers p adds the sign of its normal's z (+1 leaving the solid, -1 entering).
+  // The ray is moved off p by a sliver at an odd angle, so one passing exactly through an edge or a
+  // vertex (a lattice point on the mesh's axis) meets each surface once, not twice or never.
+  const glm::vec3 extent = hi_ - lo_;
+  p += glm::vec3(0.7316f, 0.4157f, 0.0f) * (1e-6f * std::max(extent.x, extent.y));
   const glm::ivec3 b = bucket_of(p);
   int winding = 0;
   for (int t : column_triangles_[size_t(b.x) + size_t(buckets_.x) * b.y]) {
