@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes a closed triangle torus as OBJ (the mesh of assets/scenes/mesh_pool_3d.json).
+"""Writes a closed triangle torus as OBJ (assets/scenes/meshes/torus.obj, the mesh of assets/scenes/mesh_pool_3d.json).
 
 The torus lies in the xz plane (its hole along y), centred at the origin: major radius R (centre of
 the tube), minor radius r, `major` segments around and `minor` around the tube. Faces are

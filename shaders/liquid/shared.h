@@ -27,8 +27,9 @@
 #define LIQUID_MAX_MESH_OBSTACLES 4
 // The mesh field holds the signed distance (m) within this many cells beyond the obstacle band
 // (obstacle_band + this * h); further out it is clamped there. The grid pass's density needs the
-// band and its normal a quarter cell more (obstacle_normal's central differences).
-#define LIQUID_MESH_FIELD_MARGIN_CELLS 1.0
+// band and its normal a quarter cell more (obstacle_normal's central differences). The band pass's
+// cost grows with the cube of the whole band.
+#define LIQUID_MESH_FIELD_MARGIN_CELLS 0.5
 // The band pass's cleared value and what its fragments leave in the other meshes' channels (MIN
 // blending keeps the smaller); above any band, within half precision.
 #define LIQUID_MESH_FAR 1.0e4

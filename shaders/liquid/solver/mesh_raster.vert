@@ -6,8 +6,8 @@
 // the slice's tile; else gl_Layer here).
 //   BAND=0 (inside): the triangle itself, in every slice of the mesh's z range from first_slice;
 //                    mesh_inside.frag counts the surfaces above each cell.
-//   BAND=1 (band):   per triangle, the rectangle of cells within `band` of its bounding box, in each
-//                    slice within `band` of it; mesh_band.frag takes the exact distance.
+//   BAND=1 (band):   per triangle, in each slice within `band` of it, the rectangle of cells within
+//                    `band` of its bounding box there; mesh_band.frag takes the exact distance.
 #ifndef GEOMETRY_LAYER
 #define GEOMETRY_LAYER 0
 #endif
@@ -72,22 +72,26 @@ void main() {
   v_b = corner(triangle, 1);
   v_c = corner(triangle, 2);
   float band = pc.band / h;
-  vec3 lo = min(v_a, min(v_b, v_c)) / h - band;
-  vec3 hi = max(v_a, max(v_b, v_c)) / h + band;
+  vec3 lo = min(v_a, min(v_b, v_c)) / h;  // the triangle's box, cells
+  vec3 hi = max(v_a, max(v_b, v_c)) / h;
 #if DIM == 3
-  // Slices whose centre s + 0.5 lies in [lo.z, hi.z]: instance i is the i-th from the lowest.
-  int slice = int(ceil(lo.z - 0.5)) + gl_InstanceIndex;
-  if (slice < 0 || slice >= grid_cells().z || float(slice) + 0.5 > hi.z) {
-    drop();
-    return;
-  }
+  // Slices whose centre s + 0.5 lies within the band of the box: instance i is the i-th from the lowest.
+  int slice = int(ceil(lo.z - band - 0.5)) + gl_InstanceIndex;
+  float centre = float(slice) + 0.5;
 #else
   int slice = 0;
-  if (lo.z > 0.0 || hi.z < 0.0) {  // the plane z = 0 is out of reach
+  float centre = 0.0;  // the plane z = 0
+#endif
+  // The band's section in this slice: the box grown by what is left of the band after the step
+  // from the slice to the box along z (a ball's chord), about half the cells of the full box.
+  float dz = max(max(lo.z - centre, centre - hi.z), 0.0);
+  if (slice < 0 || slice >= grid_cells().z || dz >= band) {
     drop();
     return;
   }
-#endif
+  float reach = sqrt(band * band - dz * dz);
+  lo.xy -= reach;
+  hi.xy += reach;
   lo.xy = clamp(lo.xy, vec2(0.0), vec2(grid_cells().xy));
   hi.xy = clamp(hi.xy, vec2(0.0), vec2(grid_cells().xy));
   if (lo.x >= hi.x || lo.y >= hi.y) {
