@@ -7,10 +7,9 @@
 #include "liquid/solver/uniforms.h"
 #include "liquid_shaders.h"
 
-#include <glm/gtc/packing.hpp>
-
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace liquid {
 
@@ -109,10 +108,8 @@ MeshField::MeshField(engine::vk::Context& context, const Scene& scene, const Sim
 
 std::vector<glm::vec4> MeshField::read(engine::vk::Context& context) {
   const std::vector<std::byte> bytes = engine::graph::download_image(context, field_);
-  std::vector<glm::vec4> texels(bytes.size() / (4 * sizeof(uint16_t)));
-  const uint16_t* halves = reinterpret_cast<const uint16_t*>(bytes.data());
-  for (size_t i = 0; i < texels.size(); ++i)
-    for (int c = 0; c < 4; ++c) texels[i][c] = glm::unpackHalf1x16(halves[4 * i + c]);
+  std::vector<glm::vec4> texels(bytes.size() / sizeof(glm::vec4));
+  std::memcpy(texels.data(), bytes.data(), texels.size() * sizeof(glm::vec4));
   return layout_.to_linear(texels);
 }
 

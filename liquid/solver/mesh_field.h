@@ -34,7 +34,7 @@
 
 namespace liquid {
 
-constexpr VkFormat k_mesh_field_format = VK_FORMAT_R16G16B16A16_SFLOAT;
+constexpr VkFormat k_mesh_field_format = VK_FORMAT_R32G32B32A32_SFLOAT;
 
 // Whether the scene has mesh obstacles (its passes then take the MESH_FIELD variants).
 bool has_mesh_obstacles(const Scene& scene);
