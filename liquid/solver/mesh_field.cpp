@@ -15,7 +15,7 @@ namespace liquid {
 
 namespace {
 
-constexpr uint32_t k_triangle_texture_width = 1024;
+constexpr uint32_t k_triangle_texture_width = LIQUID_MESH_TRIANGLE_TEXTURE_WIDTH;
 constexpr VkImageUsageFlags k_field_usage =
     VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
 
@@ -47,8 +47,9 @@ engine::vk::GraphicsPipelineDesc raster_pipeline(const GridLayout& layout, bool 
       .specialization = specialization};
 }
 
-// The triangles' corners, 3 texels per triangle, padded to whole rows.
-engine::vk::Image triangle_texture(engine::vk::Context& context, const TriangleMesh& mesh, const std::string& name) {
+}  // namespace
+
+engine::vk::Image mesh_triangle_texture(engine::vk::Context& context, const TriangleMesh& mesh, const std::string& name) {
   const size_t texels = mesh.indices.size();
   const uint32_t rows = uint32_t((texels + k_triangle_texture_width - 1) / k_triangle_texture_width);
   engine::vk::Image image(context,
@@ -60,8 +61,6 @@ engine::vk::Image triangle_texture(engine::vk::Context& context, const TriangleM
   engine::graph::upload_image(context, image, std::as_bytes(std::span(data)));
   return image;
 }
-
-}  // namespace
 
 bool has_mesh_obstacles(const Scene& scene) {
   return std::any_of(scene.obstacles.begin(), scene.obstacles.end(),
@@ -101,7 +100,7 @@ MeshField::MeshField(engine::vk::Context& context, const Scene& scene, const Sim
   for (size_t i = 0; i < scene.obstacles.size(); ++i) {
     const Obstacle& o = scene.obstacles[i];
     if (o.shape != ObstacleShape::Mesh) continue;
-    meshes_.push_back({i, triangle_texture(context, o.mesh, "liquid.mesh_triangles" + std::to_string(meshes_.size())),
+    meshes_.push_back({i, mesh_triangle_texture(context, o.mesh, "liquid.mesh_triangles" + std::to_string(meshes_.size())),
                        uint32_t(o.mesh.indices.size() / 3)});
   }
 }
@@ -138,7 +137,6 @@ ImageHandle MeshField::update(engine::graph::RenderGraph& graph, const engine::v
     gpu::MeshRasterPush push{};
     push.local_to_world = placements[k];
     push.slot = int(k);
-    push.triangle_texture_width = int(k_triangle_texture_width);
     push.band = band_;
     float lo = INFINITY, hi = -INFINITY;
     for (const glm::vec3& v : mesh.vertices) {

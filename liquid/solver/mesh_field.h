@@ -39,6 +39,10 @@ constexpr VkFormat k_mesh_field_format = VK_FORMAT_R32G32B32A32_SFLOAT;
 // Whether the scene has mesh obstacles (its passes then take the MESH_FIELD variants).
 bool has_mesh_obstacles(const Scene& scene);
 
+// A mesh's triangles as a texture (RGBA32F, LIQUID_MESH_TRIANGLE_TEXTURE_WIDTH wide): the corners
+// of triangle t, in the mesh's frame, at texels 3t, 3t + 1 and 3t + 2, row by row.
+engine::vk::Image mesh_triangle_texture(engine::vk::Context& context, const TriangleMesh& mesh, const std::string& name);
+
 // For the passes that sample the field (grid, pressure, particle): the shader variant, the
 // pipeline's binding, and the pass's read of `field` (nothing when it is invalid: no meshes).
 inline std::span<const uint32_t> mesh_variant(bool meshes, std::span<const uint32_t> plain,

@@ -57,7 +57,7 @@
 // The mesh obstacles' signed distance field (the MESH_FIELD variants of the grid, pressure and
 // particle passes and of the 2D view), and the passes that build it (liquid/solver/mesh_field.h).
 #define LIQUID_BINDING_MESH_FIELD 6
-#define LIQUID_BINDING_MESH_TRIANGLES 1     // mesh_raster.vert: the triangles' vertices, 3 texels each
+#define LIQUID_BINDING_MESH_TRIANGLES 1     // mesh_raster.vert, mesh_draw.vert: the triangles' corners
 #define LIQUID_BINDING_MESH_INSIDE 1        // mesh_field.frag: the signed crossing counts
 #define LIQUID_BINDING_MESH_BAND 2          // mesh_field.frag: the unsigned narrow-band distance
 // Views.
@@ -169,13 +169,24 @@ LIQUID_STRUCT(SolverUniforms) {
   EmitterRange emitters[LIQUID_MAX_EMITTERS];
 };
 
+// The textures of a mesh's triangles (3 texels per triangle: its corners in the mesh's frame) are
+// this many texels wide.
+#define LIQUID_MESH_TRIANGLE_TEXTURE_WIDTH 1024
+
 // The mesh passes' push constants (liquid/solver/mesh_field.cpp, shaders/liquid/solver/mesh_raster.vert).
 LIQUID_PUSH(MeshRasterPush) {
   mat4 local_to_world;     // the mesh's transform: centre + rotation * scale * vertex
   int slot;                // the mesh field's channel
   int first_slice;         // the inside pass: the lowest slice drawn (instance 0)
-  int triangle_texture_width;
+  int unused;
   float band;              // m: the band pass covers the cells within it of each triangle
+};
+
+// Drawing a mesh obstacle into the 3D view (liquid/render/mesh_draw.h): 128 bytes, lavapipe's limit.
+LIQUID_PUSH(MeshDrawPush) {
+  mat4 view_projection;
+  vec4 model_rows[3];      // the mesh's transform, the first three rows of its affine matrix
+  vec4 sun_direction;      // xyz toward the sun
 };
 
 #ifdef __cplusplus

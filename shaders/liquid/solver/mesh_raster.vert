@@ -36,7 +36,7 @@ layout(location = 3) flat out int v_slice;  // -1: dropped (the geometry shader 
 
 vec3 corner(int triangle, int k) {
   int i = 3 * triangle + k;
-  ivec2 texel = ivec2(i % pc.triangle_texture_width, i / pc.triangle_texture_width);
+  ivec2 texel = ivec2(i % LIQUID_MESH_TRIANGLE_TEXTURE_WIDTH, i / LIQUID_MESH_TRIANGLE_TEXTURE_WIDTH);
   return (pc.local_to_world * vec4(texelFetch(u_triangles, texel, 0).xyz, 1.0)).xyz;
 }
 
