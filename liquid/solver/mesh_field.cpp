@@ -16,8 +16,8 @@ namespace liquid {
 namespace {
 
 constexpr uint32_t k_triangle_texture_width = LIQUID_MESH_TRIANGLE_TEXTURE_WIDTH;
-constexpr VkImageUsageFlags k_field_usage =
-    VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+constexpr VkImageUsageFlags k_field_usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+                                            VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
 
 // The raster passes' vertex shader by the grid's layout (how a primitive reaches its slice).
 std::span<const uint32_t> raster_vertex(const GridLayout& layout, bool band) {
@@ -97,6 +97,13 @@ MeshField::MeshField(engine::vk::Context& context, const Scene& scene, const Sim
                           .specialization = specialization}),
       nearest_(context, VK_FILTER_NEAREST),
       field_(context, layout.image_desc(k_mesh_field_format, k_field_usage), "liquid.mesh_field") {
+  // Far from every mesh until the first voxelization, so a view drawn before the first step reads
+  // defined contents.
+  const std::vector<glm::vec4> far(layout.image_desc(k_mesh_field_format, 0).width *
+                                       size_t(layout.image_desc(k_mesh_field_format, 0).height) *
+                                       layout.image_desc(k_mesh_field_format, 0).depth_or_layers,
+                                   glm::vec4(band_));
+  engine::graph::upload_image(context, field_, std::as_bytes(std::span(far)));
   for (size_t i = 0; i < scene.obstacles.size(); ++i) {
     const Obstacle& o = scene.obstacles[i];
     if (o.shape != ObstacleShape::Mesh) continue;

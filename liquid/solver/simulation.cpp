@@ -234,7 +234,8 @@ LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
     time_ = t1;
     ++step_;
   }
-  return {particles[s.current].positions, particles[s.current].velocities, splat, grids.velocity, grids.density};
+  return {particles[s.current].positions, particles[s.current].velocities, splat, grids.velocity, grids.density,
+          mesh_field};
 }
 
 LiquidImages Simulation::add_grids_to(engine::graph::RenderGraph& graph, const LiquidImages& images) {
@@ -248,11 +249,13 @@ LiquidImages Simulation::add_grids_to(engine::graph::RenderGraph& graph, const L
   const ParticleImages particles{images.positions, images.velocities};
   const ImageHandle splat = add_splat(graph, slice, particles, images.splat, active_);
   PressureImages pressure = create_pressure_images(graph);
-  ImageHandle mesh_field = mesh_field_ ? mesh_field_->import(graph) : ImageHandle{};
+  // The field add_to() imported into this graph (a second import would lose its state).
+  ImageHandle mesh_field = images.mesh_field;
+  if (mesh_field_ && !mesh_field.valid()) throw std::invalid_argument("liquid: add_grids_to needs the images of add_to()");
   mesh_field = update_mesh_field(graph, slice, step.obstacle_poses, mesh_field);
   const GridImages grids =
       add_grid(graph, slice, splat, GridImages{images.grid_velocity, images.density}, pressure, mesh_field);
-  return {images.positions, images.velocities, splat, grids.velocity, grids.density};
+  return {images.positions, images.velocities, splat, grids.velocity, grids.density, mesh_field};
 }
 
 Checkpoint Simulation::save_checkpoint() {
