@@ -48,7 +48,6 @@ GridPass::GridPass(engine::vk::Context& context, const SimulationSetup& setup, c
                     .bindings = grid_bindings(setup, meshes),
                     .specialization = specialization}),
       nearest_(context, VK_FILTER_NEAREST),
-      linear_(context, VK_FILTER_LINEAR),
       splat_adjoint_(setup.splat_adjoint_pressure) {}
 
 GridImages GridPass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
@@ -68,7 +67,7 @@ GridImages GridPass::add_to(engine::graph::RenderGraph& graph, const engine::vk:
             d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
             d.bindings.bind_image(b, LIQUID_BINDING_GRID_SPLAT, splat, nearest_.handle());
             if (potential.valid()) d.bindings.bind_image(b, LIQUID_BINDING_GRID_POTENTIAL, potential, nearest_.handle());
-            bind_mesh_field(d.bindings, b, mesh_field, linear_);
+            bind_mesh_field(d.bindings, b, mesh_field, nearest_);
             d.out.velocity = b.write(grids.velocity, Access::ColorAttachmentWrite);
             d.out.density = b.write(grids.density, Access::ColorAttachmentWrite);
           },

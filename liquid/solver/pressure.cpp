@@ -45,7 +45,6 @@ PressurePass::PressurePass(engine::vk::Context& context, const GridLayout& layou
                                                        liquid_shaders::pressure_frag_3d_atlas_mesh)),
                               LIQUID_BINDING_PRESSURE_SPLAT, specialization, meshes)),
       nearest_(context, VK_FILTER_NEAREST),
-      linear_(context, VK_FILTER_LINEAR),
       desc_(layout.image_desc(k_pressure_format, 0)) {
   if (splat == SplatMode::Separable)
     spread_.emplace(context, layout, SeparableBlur::Kind::Potential, k_pressure_format, specialization);
@@ -73,7 +72,7 @@ ImageHandle PressurePass::add_to(engine::graph::RenderGraph& graph, const engine
               d.bindings = engine::passes::PassBindings(pipeline);
               d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
               d.bindings.bind_image(b, binding, input, nearest_.handle());
-              bind_mesh_field(d.bindings, b, field, linear_);
+              bind_mesh_field(d.bindings, b, field, nearest_);
               d.out = b.write(output, Access::ColorAttachmentWrite);
             },
             [](PassContext& ctx, const Data& d) {

@@ -44,8 +44,7 @@ class PressurePass {
   engine::vk::GraphicsPipeline pressure_;
   std::optional<engine::vk::GraphicsPipeline> potential_;  // the point-sprite splat's gather
   std::optional<SeparableBlur> spread_;                     // the separable splat's passes
-  engine::vk::Sampler nearest_;
-  engine::vk::Sampler linear_;  // the mesh field (P reads the obstacles' density)
+  engine::vk::Sampler nearest_;  // also the mesh field's (P reads the obstacles' density at cell centres)
   engine::vk::ImageDesc desc_;
 };
 
