@@ -154,11 +154,15 @@ vec3 obstacle_local(int index, vec3 p) {
 layout(set = 0, binding = LIQUID_BINDING_MESH_FIELD) uniform GRID_SAMPLER u_mesh_field;
 #endif
 
-// Every mesh's distance (m) at a point and, where asked, its gradient (unnormalised).
+// Every mesh's distance (m) at a point and, where asked, its gradient (unnormalised). Plain
+// members, no array: lavapipe keeps an array of a struct in memory, not in registers.
 struct MeshSample {
   vec4 distance;
-  vec4 gradient[3];
+  vec4 gradient_x, gradient_y, gradient_z;
 };
+
+// Channel `slot` of v, by selects (an index into a vector can also be lowered to memory).
+float channel(vec4 v, int slot) { return slot == 0 ? v.x : slot == 1 ? v.y : slot == 2 ? v.z : v.w; }
 
 // The channel of obstacle `index`: how many meshes come before it (constant once specialized;
 // written out rather than as a loop, which nested in the obstacle loops kept lavapipe from
@@ -189,16 +193,16 @@ vec4 mesh_field_at(vec3 p) {
 MeshSample mesh_sample(vec3 p, bool with_gradient) {
   MeshSample m;
   m.distance = vec4(LIQUID_MESH_FAR);
-  m.gradient[0] = m.gradient[1] = m.gradient[2] = vec4(0.0);
+  m.gradient_x = m.gradient_y = m.gradient_z = vec4(0.0);
 #if MESH_FIELD
   m.distance = mesh_field_at(p);
   if (with_gradient) {
     float e = 0.25 * cell_size();
-    [[unroll]] for (int a = 0; a < DIM; ++a) {
-      vec3 step = vec3(0.0);
-      step[a] = e;
-      m.gradient[a] = mesh_field_at(p + step) - mesh_field_at(p - step);
-    }
+    m.gradient_x = mesh_field_at(p + vec3(e, 0.0, 0.0)) - mesh_field_at(p - vec3(e, 0.0, 0.0));
+    m.gradient_y = mesh_field_at(p + vec3(0.0, e, 0.0)) - mesh_field_at(p - vec3(0.0, e, 0.0));
+#if DIM == 3
+    m.gradient_z = mesh_field_at(p + vec3(0.0, 0.0, e)) - mesh_field_at(p - vec3(0.0, 0.0, e));
+#endif
   }
 #endif
   return m;
@@ -208,15 +212,15 @@ MeshSample mesh_sample(vec3 p, bool with_gradient) {
 MeshSample mesh_sample_at_cell(ivec3 c, bool with_gradient) {
   MeshSample m;
   m.distance = vec4(LIQUID_MESH_FAR);
-  m.gradient[0] = m.gradient[1] = m.gradient[2] = vec4(0.0);
+  m.gradient_x = m.gradient_y = m.gradient_z = vec4(0.0);
 #if MESH_FIELD
   m.distance = fetch_grid(u_mesh_field, c);
   if (with_gradient) {
-    [[unroll]] for (int a = 0; a < DIM; ++a) {
-      ivec3 step = ivec3(0);
-      step[a] = 1;
-      m.gradient[a] = fetch_grid(u_mesh_field, c + step) - fetch_grid(u_mesh_field, c - step);
-    }
+    m.gradient_x = fetch_grid(u_mesh_field, c + ivec3(1, 0, 0)) - fetch_grid(u_mesh_field, c - ivec3(1, 0, 0));
+    m.gradient_y = fetch_grid(u_mesh_field, c + ivec3(0, 1, 0)) - fetch_grid(u_mesh_field, c - ivec3(0, 1, 0));
+#if DIM == 3
+    m.gradient_z = fetch_grid(u_mesh_field, c + ivec3(0, 0, 1)) - fetch_grid(u_mesh_field, c - ivec3(0, 0, 1));
+#endif
   }
 #endif
   return m;
@@ -227,7 +231,7 @@ float obstacle_distance(int index, vec3 p, MeshSample meshes) {
   Obstacle o = u.obstacles[index];
   vec3 local = obstacle_local(index, p);
   int kind = obstacle_kind(index);
-  if (kind == LIQUID_OBSTACLE_MESH) return meshes.distance[mesh_slot(index)];
+  if (kind == LIQUID_OBSTACLE_MESH) return channel(meshes.distance, mesh_slot(index));
   if (kind == LIQUID_OBSTACLE_SPHERE) return length(local) - o.sphere_radius;
   if (kind == LIQUID_OBSTACLE_BOX) return sd_box(local, o.box_half_extent);
   return sd_metaballs(local, o);
@@ -248,7 +252,7 @@ vec3 obstacle_normal(int index, vec3 p, MeshSample meshes) {
     n = obstacle_local(index, p);
   } else if (obstacle_kind(index) == LIQUID_OBSTACLE_MESH) {
     int slot = mesh_slot(index);
-    n = vec3(meshes.gradient[0][slot], meshes.gradient[1][slot], meshes.gradient[2][slot]);
+    n = vec3(channel(meshes.gradient_x, slot), channel(meshes.gradient_y, slot), channel(meshes.gradient_z, slot));
   } else {
     float e = 0.25 * cell_size();
     n = vec3(obstacle_distance(index, p + vec3(e, 0, 0)) - obstacle_distance(index, p - vec3(e, 0, 0)),
@@ -264,7 +268,7 @@ vec3 obstacle_normal(int index, vec3 p, MeshSample meshes) {
 vec3 obstacle_normal(int index, vec3 p) {
   MeshSample none;
   none.distance = vec4(LIQUID_MESH_FAR);
-  none.gradient[0] = none.gradient[1] = none.gradient[2] = vec4(0.0);
+  none.gradient_x = none.gradient_y = none.gradient_z = vec4(0.0);
   return obstacle_normal(index, p, none);
 }
 
