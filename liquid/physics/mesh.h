@@ -1,10 +1,11 @@
-// Triangle meshes on the CPU: the closed-mesh check every mesh obstacle passes (from a file or a
-// host's buffers), and a mesh placed in the world with its signed distance, for what the CPU does
-// with obstacles (carving the initial lattice, counting particles inside in the diagnostics). The
-// GPU's field is built by the rasterizer (liquid/solver/mesh_field.h).
+// Triangle meshes placed in the world, on the CPU: their transform, and their signed distance for
+// what the CPU does with obstacles (carving the initial lattice, counting particles inside in the
+// diagnostics). The GPU's field is built by the rasterizer (liquid/solver/mesh_field.h); the check
+// every mesh passes is liquid/scene/mesh_check.h.
 #pragma once
 
 #include "liquid/scene.h"
+#include "liquid/scene/mesh_check.h"
 
 #include <glm/glm.hpp>
 
@@ -12,14 +13,6 @@
 #include <vector>
 
 namespace liquid {
-
-// Merges vertices at identical positions (files and hosts split them by normal or texture
-// coordinate), drops triangles that repeat a vertex, and re-indexes.
-void weld_positions(TriangleMesh& mesh);
-
-// What makes `mesh` unusable as an obstacle, or "" when it is closed: no triangles, an index out of
-// range, a degenerate extent, or edges not shared by exactly two triangles of opposite orientation.
-std::string mesh_problem(const TriangleMesh& mesh);
 
 // The mesh's local-to-world transform at obstacle centre `center`: center + rotation * (scale * v).
 glm::mat4 mesh_to_world(const TriangleMesh& mesh, glm::vec3 center);

@@ -1,6 +1,6 @@
 #include "liquid/scene/limits.h"
 
-#include "liquid/physics/mesh.h"
+#include "liquid/scene/mesh_check.h"
 #include "shaders/liquid/shared.h"
 
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "liquid/scene/mesh_file.h"
 
-#include "liquid/physics/mesh.h"
+#include "liquid/scene/mesh_check.h"
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
