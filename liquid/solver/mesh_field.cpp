@@ -137,8 +137,8 @@ ImageHandle MeshField::update(engine::graph::RenderGraph& graph, const engine::v
   // Per mesh: the push constants, the inside pass's slices (centres within the mesh's z range) and
   // the band pass's instances (the most slices one triangle's band reaches).
   std::vector<gpu::MeshRasterPush> pushes;
-  std::vector<glm::ivec2> slices;  // first, count
-  std::vector<uint32_t> instances;
+  std::vector<uint32_t> slices;     // the inside pass's instances
+  std::vector<uint32_t> instances;  // the band pass's
   for (size_t k = 0; k < meshes_.size(); ++k) {
     const TriangleMesh& mesh = obstacles[meshes_[k].obstacle].mesh;
     gpu::MeshRasterPush push{};
@@ -155,16 +155,17 @@ ImageHandle MeshField::update(engine::graph::RenderGraph& graph, const engine::v
     const int last = std::min(int(std::floor(hi - 0.5f)), layout_.cells.z - 1);
     push.first_slice = first;
     pushes.push_back(push);
-    slices.emplace_back(first, layout_.dimension == 3 ? std::max(last - first + 1, 0) : 1);
+    slices.push_back(layout_.dimension == 3 ? uint32_t(std::max(last - first + 1, 0)) : 1u);
     const float reach = longest_edge(mesh) * mesh.scale / cell_size_ + 2.0f * band_ / cell_size_;
     instances.push_back(layout_.dimension == 3 ? uint32_t(std::ceil(reach)) + 1 : 1u);
   }
 
   const engine::vk::ImageDesc desc = layout_.image_desc(k_mesh_field_format, 0);
-  ImageHandle inside = graph.create_image("liquid.mesh_inside", desc);
-  ImageHandle band = graph.create_image("liquid.mesh_band", desc);
-  add_inside_pass(graph, uniforms, inside, pushes, slices);
-  add_band_pass(graph, uniforms, band, pushes, instances);
+  // The inside pass draws each triangle; the band pass a rectangle (two triangles) per triangle.
+  const ImageHandle inside = add_raster_pass(graph, uniforms, {"liquid.mesh_inside", &inside_, 3, 0.0f},
+                                             graph.create_image("liquid.mesh_inside", desc), pushes, slices);
+  const ImageHandle band = add_raster_pass(graph, uniforms, {"liquid.mesh_band", &band_pipeline_, 6, LIQUID_MESH_FAR},
+                                           graph.create_image("liquid.mesh_band", desc), pushes, instances);
 
   struct Data {
     engine::passes::PassBindings bindings;
@@ -190,56 +191,35 @@ ImageHandle MeshField::update(engine::graph::RenderGraph& graph, const engine::v
       .field;
 }
 
-void MeshField::add_inside_pass(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                                ImageHandle& inside, const std::vector<gpu::MeshRasterPush>& pushes,
-                                const std::vector<glm::ivec2>& slices) const {
+ImageHandle MeshField::add_raster_pass(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
+                                       const RasterPass& pass, ImageHandle target,
+                                       const std::vector<gpu::MeshRasterPush>& pushes,
+                                       const std::vector<uint32_t>& instances) const {
   struct Data {
     std::vector<engine::passes::PassBindings> bindings;  // one per mesh (its triangles)
+    ImageHandle target;
   };
-  graph.add_pass<Data>(
-      "liquid.mesh_inside",
-      [&](PassBuilder& b, Data& d) {
-        for (ImageHandle triangles : triangle_handles_) {
-          d.bindings.emplace_back(inside_);
-          d.bindings.back().bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
-          d.bindings.back().bind_image(b, LIQUID_BINDING_MESH_TRIANGLES, triangles, nearest_.handle());
-        }
-        inside = b.write(inside, Access::ColorAttachmentBlend, engine::graph::clear_to(0, 0, 0, 0));
-      },
-      [this, pushes, slices](PassContext& ctx, const Data& d) {
-        for (size_t k = 0; k < meshes_.size(); ++k) {
-          if (slices[k].y <= 0) continue;
-          d.bindings[k].bind_and_push(ctx);
-          inside_.push_constants(ctx.cmd, pushes[k]);
-          vkCmdDraw(ctx.cmd, 3 * meshes_[k].triangle_count, uint32_t(slices[k].y), 0, 0);
-        }
-      });
-}
-
-void MeshField::add_band_pass(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                              ImageHandle& band, const std::vector<gpu::MeshRasterPush>& pushes,
-                              const std::vector<uint32_t>& instances) const {
-  struct Data {
-    std::vector<engine::passes::PassBindings> bindings;
-  };
-  graph.add_pass<Data>(
-      "liquid.mesh_band",
-      [&](PassBuilder& b, Data& d) {
-        for (ImageHandle triangles : triangle_handles_) {
-          d.bindings.emplace_back(band_pipeline_);
-          d.bindings.back().bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
-          d.bindings.back().bind_image(b, LIQUID_BINDING_MESH_TRIANGLES, triangles, nearest_.handle());
-        }
-        band = b.write(band, Access::ColorAttachmentBlend,
-                       engine::graph::clear_to(LIQUID_MESH_FAR, LIQUID_MESH_FAR, LIQUID_MESH_FAR, LIQUID_MESH_FAR));
-      },
-      [this, pushes, instances](PassContext& ctx, const Data& d) {
-        for (size_t k = 0; k < meshes_.size(); ++k) {
-          d.bindings[k].bind_and_push(ctx);
-          band_pipeline_.push_constants(ctx.cmd, pushes[k]);
-          vkCmdDraw(ctx.cmd, 6 * meshes_[k].triangle_count, instances[k], 0, 0);
-        }
-      });
+  return graph
+      .add_pass<Data>(
+          pass.name,
+          [&](PassBuilder& b, Data& d) {
+            for (ImageHandle triangles : triangle_handles_) {
+              d.bindings.emplace_back(*pass.pipeline);
+              d.bindings.back().bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
+              d.bindings.back().bind_image(b, LIQUID_BINDING_MESH_TRIANGLES, triangles, nearest_.handle());
+            }
+            const float c = pass.clear;
+            d.target = b.write(target, Access::ColorAttachmentBlend, engine::graph::clear_to(c, c, c, c));
+          },
+          [this, pass, pushes, instances](PassContext& ctx, const Data& d) {
+            for (size_t k = 0; k < meshes_.size(); ++k) {
+              if (instances[k] == 0) continue;
+              d.bindings[k].bind_and_push(ctx);
+              pass.pipeline->push_constants(ctx.cmd, pushes[k]);
+              vkCmdDraw(ctx.cmd, pass.vertices_per_triangle * meshes_[k].triangle_count, instances[k], 0, 0);
+            }
+          })
+      .target;
 }
 
 }  // namespace liquid

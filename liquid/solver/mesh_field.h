@@ -79,10 +79,17 @@ class MeshField {
     engine::vk::Image triangles;  // RGBA32F, 3 texels per triangle (the mesh's frame)
     uint32_t triangle_count = 0;
   };
-  void add_inside_pass(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle& inside,
-                       const std::vector<gpu::MeshRasterPush>& pushes, const std::vector<glm::ivec2>& slices) const;
-  void add_band_pass(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle& band,
-                     const std::vector<gpu::MeshRasterPush>& pushes, const std::vector<uint32_t>& instances) const;
+  // The inside or the band pass: every mesh's triangles drawn `instances[k]` times into `target`,
+  // cleared to `clear` first and blended (additive or MIN, the pipeline's).
+  struct RasterPass {
+    const char* name;
+    const engine::vk::GraphicsPipeline* pipeline;
+    uint32_t vertices_per_triangle;
+    float clear;
+  };
+  ImageHandle add_raster_pass(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
+                              const RasterPass& pass, ImageHandle target, const std::vector<gpu::MeshRasterPush>& pushes,
+                              const std::vector<uint32_t>& instances) const;
 
   GridLayout layout_;
   float cell_size_ = 0.0f;
