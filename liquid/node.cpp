@@ -2,10 +2,12 @@
 // public header names no internal type.
 #include "liquid/node.h"
 
+#include "liquid/physics/mesh.h"
 #include "liquid/solver/simulation.h"
 #include "liquid/solver/state.h"
 
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 namespace liquid {
@@ -71,6 +73,31 @@ std::vector<ObstaclePose> LiquidNode::obstacle_poses(double time, Frame frame) c
       pose.velocity = placement_.vector_to_world(pose.velocity);
     }
   return poses;
+}
+
+void LiquidNode::set_mesh_transform(size_t index, glm::quat rotation, float scale) {
+  simulation_->set_mesh_transform(index, rotation, scale);
+}
+
+Obstacle mesh_obstacle(std::span<const std::byte> vertex_bytes, size_t stride, std::span<const uint32_t> indices,
+                       glm::vec3 center, const std::string& name) {
+  if (stride < 3 * sizeof(float)) throw SceneError(name + ": the vertex stride must be at least 12 bytes");
+  Obstacle obstacle;
+  obstacle.shape = ObstacleShape::Mesh;
+  obstacle.center = center;
+  const size_t count = vertex_bytes.size() / stride + (vertex_bytes.size() % stride >= 3 * sizeof(float) ? 1 : 0);
+  for (size_t i = 0; i < count; ++i) {
+    float xyz[3];
+    std::memcpy(xyz, vertex_bytes.data() + i * stride, sizeof(xyz));
+    obstacle.mesh.vertices.emplace_back(xyz[0], xyz[1], xyz[2]);
+  }
+  obstacle.mesh.indices.assign(indices.begin(), indices.end());
+  for (uint32_t i : obstacle.mesh.indices)
+    if (i >= count)
+      throw SceneError(name + ": index " + std::to_string(i) + " is past the " + std::to_string(count) + " vertices");
+  weld_positions(obstacle.mesh);
+  if (const std::string problem = mesh_problem(obstacle.mesh); !problem.empty()) throw SceneError(name + ": " + problem);
+  return obstacle;
 }
 
 int LiquidNode::active_particles() const { return simulation_->active_particles(); }

@@ -24,7 +24,11 @@ VkPipelineColorBlendAttachmentState blend_state(BlendMode mode) {
   if (mode == BlendMode::None) return state;
   state.blendEnable = VK_TRUE;
   state.colorBlendOp = state.alphaBlendOp = VK_BLEND_OP_ADD;
-  if (mode == BlendMode::Additive) {
+  if (mode == BlendMode::Min) {
+    state.colorBlendOp = state.alphaBlendOp = VK_BLEND_OP_MIN;  // the factors are ignored by MIN
+    state.srcColorBlendFactor = state.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
+    state.srcAlphaBlendFactor = state.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+  } else if (mode == BlendMode::Additive) {
     state.srcColorBlendFactor = state.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
     state.srcAlphaBlendFactor = state.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
   } else if (mode == BlendMode::Transmit) {

@@ -9,7 +9,11 @@
 #include "liquid/scene.h"
 #include "liquid/types.h"
 
+#include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <span>
+#include <string>
 #include <vector>
 
 namespace engine::vk {
@@ -20,6 +24,17 @@ class Image;
 namespace liquid {
 
 class Simulation;  // the solver itself: internal, not installed
+
+// A mesh obstacle from a host's own geometry, to put in Scene::obstacles before creating the node.
+// `vertex_bytes` holds float3 positions (x, y, z as 32-bit floats, m in the mesh's frame) starting
+// at byte 0 of each `stride` bytes (stride >= 12: a host's interleaved vertex buffer works as is);
+// `indices` are 32-bit, three per triangle, counter-clockwise seen from outside. Vertices at
+// identical positions are merged (split normals or texture coordinates are fine). The mesh is
+// placed at world = center + rotation * (scale * vertex) and must be closed: every edge shared by
+// exactly two triangles of opposite orientation; otherwise a SceneError names `name` and what is
+// wrong. At most 4 meshes per scene (each needs a channel of the solver's mesh field).
+Obstacle mesh_obstacle(std::span<const std::byte> vertex_bytes, size_t stride, std::span<const uint32_t> indices,
+                       glm::vec3 center, const std::string& name = "host mesh");
 
 class LiquidNode {
  public:
@@ -85,6 +100,13 @@ class LiquidNode {
   // fixed when the node is created (the shaders are specialized for them).
   // `frame`: the frame `center` and `velocity` are given in, or the poses are reported in.
   void set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity, Frame frame = Frame::Liquid);
+  // A mesh obstacle's own transform for the following steps (with set_obstacle_pose() for its
+  // centre and velocity, once per frame for a host-driven mesh), in the liquid's frame. The mesh is
+  // voxelized again in the steps where its placement changed; a turn adds no velocity to the
+  // liquid (the mesh's velocity is its centre's). Throws std::out_of_range when obstacle `index` is
+  // not a mesh and std::invalid_argument for a scale that is not finite and > 0 or a zero or
+  // non-finite rotation.
+  void set_mesh_transform(size_t index, glm::quat rotation, float scale);
   std::vector<ObstaclePose> obstacle_poses(double time, Frame frame = Frame::Liquid) const;
 
   int active_particles() const;

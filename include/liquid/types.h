@@ -74,6 +74,9 @@ struct LiquidImages {
   engine::graph::ImageHandle splat;          // (sum w u, sum w), the last step's splat
   engine::graph::ImageHandle grid_velocity;  // (u', fluid flag)
   engine::graph::ImageHandle density;        // R16F rho / rho0
+  // RGBA32F: the mesh obstacles' signed distance (m), one channel per mesh in scene order, exact
+  // near their surfaces; invalid when the scene has no mesh obstacle.
+  engine::graph::ImageHandle mesh_field;
 };
 
 // Particles read back from the GPU.

@@ -37,8 +37,21 @@ float obstacle_distance(const Obstacle& obstacle, glm::vec3 center, glm::vec3 p,
       if (field <= 0.0f) return std::max(glm::length(local) - reach, 1e-3f) + 1e-3f;
       return (obstacle.threshold - field) / std::max(glm::length(gradient), 1e-4f);
     }
+    case ObstacleShape::Mesh:  // one query: PlacedObstacle serves many
+      return PlacedMesh(obstacle.mesh, center, 1e30f).distance(dimension == 2 ? glm::vec3(p.x, p.y, 0.0f) : p);
   }
   return 1e30f;
+}
+
+PlacedObstacle::PlacedObstacle(const Obstacle& obstacle, glm::vec3 center, int dimension, float mesh_reach)
+    : obstacle_(&obstacle), center_(center), dimension_(dimension) {
+  if (obstacle.shape == ObstacleShape::Mesh) mesh_.emplace(obstacle.mesh, center, mesh_reach);
+}
+
+float PlacedObstacle::distance(glm::vec3 p) const {
+  if (!mesh_) return obstacle_distance(*obstacle_, center_, p, dimension_);
+  if (dimension_ == 2) p.z = 0.0f;
+  return mesh_->distance(p);
 }
 
 }  // namespace liquid

@@ -150,6 +150,10 @@ RaymarchPass::RaymarchPass(engine::vk::Context& context, const LiquidNode& node,
       composite_(composite) {
   // Composited, pixels outside the box show the host's frame: nothing to draw there.
   if (!composite) background_ = engine::vk::GraphicsPipeline(context, raymarch_pipeline_desc(node, bricks_, false, true));
+  if (!composite) {
+    meshes_ = std::make_unique<MeshDrawPass>(context, node, k_color_format, k_depth_format);
+    if (meshes_->empty()) meshes_.reset();
+  }
 }
 
 RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
@@ -230,6 +234,11 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
                                          k_color_format, 0};
   const engine::vk::ImageDesc depth_desc{engine::vk::ImageKind::Image2D, settings.width, settings.height, 1,
                                          k_depth_format, 0};
+  // Mesh obstacles first: the raymarch keeps their pixels where they are nearer than what it finds.
+  std::optional<MeshDrawPass::Targets> drawn;
+  if (meshes_)
+    drawn = meshes_->add_to(graph, {graph.create_image("liquid.color", color_desc), graph.create_image("liquid.depth", depth_desc)},
+                            vp, viewport, render.sun_direction);
   // The march runs only where rays can reach the domain box; the rest of the frame, a cheaper
   // specialization without the liquid (same image there: those rays miss the box).
   struct RaymarchData {
@@ -263,6 +272,9 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
         if (targets) {  // over the host's colour, tested against and written into its depth
           out.color = b.write(targets->color, Access::ColorAttachmentBlend);
           out.depth = b.write(targets->depth, Access::DepthAttachmentWrite, {engine::graph::LoadOp::Load, {}});
+        } else if (drawn) {  // over the meshes, tested against their depth
+          out.color = b.write(drawn->color, Access::ColorAttachmentWrite, {engine::graph::LoadOp::Load, {}});
+          out.depth = b.write(drawn->depth, Access::DepthAttachmentWrite, {engine::graph::LoadOp::Load, {}});
         } else {
           out.color = b.write(b.create("liquid.color", color_desc), Access::ColorAttachmentWrite);
           out.depth = b.write(b.create("liquid.depth", depth_desc), Access::DepthAttachmentWrite,

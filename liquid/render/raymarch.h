@@ -9,6 +9,7 @@
 #include "liquid/camera.h"
 #include "liquid/node.h"
 #include "liquid/physics/setup.h"
+#include "liquid/render/mesh_draw.h"
 #include "liquid/render/view_uniforms.h"
 #include "liquid/renderer.h"
 #include "liquid/solver/grid_layout.h"
@@ -74,6 +75,7 @@ class RaymarchPass {
   engine::vk::Sampler nearest_;
   ViewUniforms uniforms_;
   bool composite_ = false;
+  std::unique_ptr<MeshDrawPass> meshes_;  // the scene's mesh obstacles, drawn first (not when compositing)
 };
 
 }  // namespace liquid

@@ -3,6 +3,7 @@
 #include "engine/passes/bindings.h"
 #include "engine/passes/fullscreen.h"
 #include "liquid/solver/images.h"
+#include "liquid/solver/mesh_field.h"
 #include "liquid/solver/simulation.h"
 #include "liquid/solver/specialization.h"
 #include "liquid/solver/uniforms.h"
@@ -40,6 +41,15 @@ const LiquidNode& require_2d(const LiquidNode& node) {
   return node;
 }
 
+std::vector<engine::vk::DescriptorBinding> view2d_bindings(bool meshes) {
+  std::vector<engine::vk::DescriptorBinding> bindings{
+      {LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
+      {LIQUID_BINDING_VIEW2D_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
+      {LIQUID_BINDING_VIEW2D_DEPTH, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}};
+  add_mesh_field_binding(meshes, bindings);
+  return bindings;
+}
+
 }  // namespace
 
 View2dLayout fit_view2d(glm::vec2 domain, uint32_t width, uint32_t height) {
@@ -65,12 +75,11 @@ engine::vk::GraphicsPipelineDesc view2d_pipeline_desc(const LiquidNode& node, bo
   return engine::vk::GraphicsPipelineDesc{
       .name = opaque_in_panel ? "liquid.view2d.opaque_panel" : "liquid.view2d",
       .vertex = engine::passes::fullscreen_vertex_shader(),
-      .fragment = liquid_shaders::view2d_frag,
+      .fragment = mesh_variant(has_mesh_obstacles(node.scene()), liquid_shaders::view2d_frag,
+                               liquid_shaders::view2d_frag_mesh),
       .color_formats = {k_color_format},
       .blend = {blended ? engine::vk::BlendMode::Alpha : engine::vk::BlendMode::None},
-      .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
-                   {LIQUID_BINDING_VIEW2D_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
-                   {LIQUID_BINDING_VIEW2D_DEPTH, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
+      .bindings = view2d_bindings(has_mesh_obstacles(node.scene())),
       .push_constant_size = sizeof(View2dPush),
       .specialization = view2d_specialization(node, panel)};
 }
@@ -152,6 +161,7 @@ ImageHandle View2dPass::add_to(engine::graph::RenderGraph& graph, const LiquidIm
                 d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, solver);
                 d.bindings.bind_image(b, LIQUID_BINDING_VIEW2D_DENSITY, density, linear_.handle());
                 d.bindings.bind_image(b, LIQUID_BINDING_VIEW2D_DEPTH, depth, linear_.handle());
+                bind_mesh_field(d.bindings, b, images.mesh_field, linear_);
                 d.color = panel ? b.write(panel->color, Access::ColorAttachmentBlend)
                                 : b.write(b.create("liquid.view2d", color_desc), Access::ColorAttachmentWrite);
               },

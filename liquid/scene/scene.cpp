@@ -1,6 +1,7 @@
 // The scene's keys: which exist, their units, defaults and allowed ranges (see the README's scene
 // table). JSON syntax and duplicate keys are handled in json.cpp.
 #include "liquid/scene.h"
+#include "liquid/scene/mesh_file.h"
 #include "liquid/scene/reader.h"
 #include "shaders/liquid/shared.h"
 
@@ -70,11 +71,34 @@ void read_oscillation(const Reader& r, const Json& value, const std::string& pat
       float(r.number_in(r.require(value, path, "frequency"), child(path, "frequency"), 0.0, k_max_frequency));
 }
 
+// A mesh obstacle's file (relative to the scene's folder), rotation (degrees about x, then y, then
+// z) and uniform scale.
+TriangleMesh read_mesh(const Reader& r, const Json& value, const std::string& path) {
+  const std::string file_path = child(path, "file");
+  const std::string file = r.string(r.require(value, path, "file"), file_path);
+  if (file.empty()) r.fail(file_path, "must name a mesh file (OBJ or PLY)");
+  TriangleMesh mesh;
+  try {
+    mesh = load_mesh_file(std::filesystem::path(r.source()).parent_path() / file);
+  } catch (const SceneError& e) {
+    r.fail(file_path, e.what());
+  }
+  if (const Json* v = Reader::find(value, "rotation")) {
+    const glm::vec3 degrees = r.vector(*v, child(path, "rotation"), 3, 360.0);
+    const glm::vec3 radians = glm::radians(degrees);
+    mesh.rotation = glm::angleAxis(radians.z, glm::vec3(0, 0, 1)) * glm::angleAxis(radians.y, glm::vec3(0, 1, 0)) *
+                    glm::angleAxis(radians.x, glm::vec3(1, 0, 0));
+  }
+  if (const Json* v = Reader::find(value, "scale"))
+    mesh.scale = float(r.number_in(*v, child(path, "scale"), 0.0, k_max_length, true));
+  return mesh;
+}
+
 Obstacle read_obstacle(const Reader& r, const Json& value, const std::string& path) {
   if (!value.is_object()) r.fail(path, std::string("must be an object, got ") + value.type_name());
   Obstacle obstacle;
   obstacle.shape = ObstacleShape(r.choice(r.require(value, path, "shape"), child(path, "shape"),
-                                          {"sphere", "box", "metaballs"}));
+                                          {"sphere", "box", "metaballs", "mesh"}));
   switch (obstacle.shape) {
     case ObstacleShape::Sphere:
       r.check_keys(value, path, {"shape", "center", "radius", "velocity", "oscillation"});
@@ -110,6 +134,11 @@ Obstacle read_obstacle(const Reader& r, const Json& value, const std::string& pa
         obstacle.threshold = float(r.number_in(*v, child(path, "threshold"), 0.0, 1.0, true, true));
       break;
     }
+    case ObstacleShape::Mesh:
+      r.check_keys(value, path, {"shape", "center", "file", "rotation", "scale", "velocity", "oscillation"});
+      obstacle.center = r.scene_vector(r.require(value, path, "center"), child(path, "center"));
+      obstacle.mesh = read_mesh(r, value, path);
+      break;
   }
   if (const Json* v = Reader::find(value, "velocity"))
     obstacle.velocity = r.scene_vector(*v, child(path, "velocity"), k_max_speed);

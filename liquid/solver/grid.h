@@ -19,16 +19,18 @@ namespace liquid {
 class GridPass {
  public:
   GridPass(engine::vk::Context& context, const SimulationSetup& setup, const GridLayout& layout,
-           const std::vector<int32_t>& specialization);
+           const std::vector<int32_t>& specialization, bool meshes = false);
 
   // Reads `splat` (and, with the splat-adjoint pressure, PressurePass's `potential`), writes the
-  // updated velocity (u', fluid flag) and rho / rho0 into `grids`.
+  // updated velocity (u', fluid flag) and rho / rho0 into `grids`. With mesh obstacles (`meshes`),
+  // reads their field (liquid/solver/mesh_field.h).
   GridImages add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle splat,
-                    const GridImages& grids, ImageHandle potential = {}) const;
+                    const GridImages& grids, ImageHandle potential = {}, ImageHandle mesh_field = {}) const;
 
  private:
   engine::vk::GraphicsPipeline pipeline_;
-  engine::vk::Sampler nearest_;
+  engine::vk::Sampler nearest_;  // also the mesh field's: read at cell centres (a linear sampler made
+                                 // lavapipe's fetches from it four times slower)
   bool splat_adjoint_ = false;
 };
 

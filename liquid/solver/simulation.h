@@ -11,6 +11,7 @@
 #include "liquid/physics/setup.h"
 #include "liquid/scene.h"
 #include "liquid/solver/grid.h"
+#include "liquid/solver/mesh_field.h"
 #include "liquid/solver/particle_update.h"
 #include "liquid/solver/pressure.h"
 #include "liquid/solver/separable_splat.h"
@@ -49,6 +50,7 @@ class Simulation {
   RuntimeParameters runtime_parameters() const { return {setup_.gravity, setup_.pic_ratio, setup_.stiffness}; }
   void set_runtime_parameters(const RuntimeParameters& parameters);
   void set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity);
+  void set_mesh_transform(size_t index, glm::quat rotation, float scale);
   std::vector<ObstaclePose> obstacle_poses(double time) const;
   int active_particles() const { return active_; }
   int step_count() const { return step_; }
@@ -76,6 +78,8 @@ class Simulation {
   uint64_t frames_declared() const { return frames_declared_; }
   // The state textures (particles, splat, grids).
   LiquidState& state() { return *state_; }
+  // The mesh obstacles' field (null without meshes).
+  MeshField* mesh_field() { return mesh_field_.get(); }
 
  private:
   // Refuses a checkpoint whose values no run reaches (std::invalid_argument naming the value).
@@ -90,7 +94,10 @@ class Simulation {
   ImageHandle add_splat(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
                         const ParticleImages& particles, ImageHandle splat, int active) const;
   GridImages add_grid(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice, ImageHandle splat,
-                      const GridImages& grids, PressureImages& pressure) const;
+                      const GridImages& grids, PressureImages& pressure, ImageHandle mesh_field) const;
+  // The mesh field for obstacles at `poses` (voxelized again when a mesh moved); invalid without meshes.
+  ImageHandle update_mesh_field(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
+                                const std::vector<ObstaclePose>& poses, ImageHandle field);
   // make_uniforms() with the grid layout's atlas tiles.
   gpu::SolverUniforms uniforms_for(const StepInputs& step) const;
   // This step's emission ranges, advancing the emitters' counts.
@@ -107,6 +114,7 @@ class Simulation {
   std::unique_ptr<GridPass> grid_;
   std::unique_ptr<PressurePass> pressure_;  // only with the splat-adjoint pressure
   std::unique_ptr<ParticleUpdatePass> particle_update_;
+  std::unique_ptr<MeshField> mesh_field_;  // only with mesh obstacles
   std::unique_ptr<LiquidState> state_;
   std::unique_ptr<engine::vk::UniformArena> uniforms_;
   std::unique_ptr<engine::vk::UniformArena> grid_uniforms_;  // add_grids_to()'s block, one per frame

@@ -29,6 +29,22 @@ using engine::vk::ImageSyncState;
 
 namespace {
 
+// A host's flat-shaded octahedron: per face its three corners (counter-clockwise seen from
+// outside) with the face's normal, as a vertex buffer for drawing holds them.
+std::vector<std::pair<glm::vec3, glm::vec3>> octahedron_corners(float radius) {
+  const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  std::vector<std::pair<glm::vec3, glm::vec3>> corners;
+  for (int sx = 0; sx < 2; ++sx)
+    for (int sy = 2; sy < 4; ++sy)
+      for (int sz = 4; sz < 6; ++sz) {
+        glm::vec3 a = axes[sx], b = axes[sy], c = axes[sz];
+        if (glm::dot(glm::cross(b - a, c - a), a + b + c) < 0.0f) std::swap(b, c);
+        const glm::vec3 normal = glm::normalize(a + b + c);
+        for (const glm::vec3& p : {a, b, c}) corners.emplace_back(p * radius, normal);
+      }
+  return corners;
+}
+
 constexpr uint32_t k_width = 160;
 constexpr uint32_t k_height = 120;
 constexpr VkImageUsageFlags k_color_usage =
@@ -1111,4 +1127,50 @@ TEST_CASE("a context the library creates takes a host's extra extensions, featur
   options.queue_family_filter = nullptr;
   options.device_extensions = {"VK_NO_such_extension"};
   CHECK_THROWS_WITH(engine::vk::Context(options), Catch::Contains("VK_NO_such_extension"));
+}
+
+TEST_CASE("a host's own mesh, from its interleaved vertex buffer, is an obstacle it moves and turns each frame",
+          "[gpu][liquid][mesh][host]") {
+  engine::vk::Context& context = test::gpu();
+  liquid::Scene scene = liquid::parse_scene(R"({ "name": "host mesh", "dimension": 3, "domain": [0.3, 0.24, 0.2],
+    "grid_resolution": 15, "particle_spacing": 0.01, "stiffness": 9.8, "kernel_radius_cells": 3, "time_step": 0.0004,
+    "substeps": 5, "fluid_blocks": [ { "min": [0.0, 0.0, 0.0], "max": [0.3, 0.08, 0.2] } ] })", "host_mesh.json");
+  // A host's interleaved vertices: float3 position first, then whatever else (here a float3 normal).
+  struct Vertex {
+    glm::vec3 position;
+    glm::vec3 normal;
+  };
+  std::vector<Vertex> vertices;   // the mesh's own frame, metres
+  std::vector<uint32_t> indices;  // three per triangle, counter-clockwise seen from outside
+  for (const auto& [position, normal] : octahedron_corners(0.04f)) {
+    indices.push_back(uint32_t(vertices.size()));
+    vertices.push_back({position, normal});
+  }
+  scene.obstacles.push_back(liquid::mesh_obstacle(std::as_bytes(std::span(vertices)), sizeof(Vertex), indices,
+                                                  glm::vec3(0.15f, 0.17f, 0.1f), "boat"));
+  liquid::LiquidNode node(context, scene);
+  const size_t boat = scene.obstacles.size() - 1;
+  CHECK(node.scene().obstacles[boat].mesh.vertices.size() == 6);  // the split corners merged
+  engine::graph::RenderGraph graph(&context);
+  engine::vk::CommandBuffer cmd(context);
+  for (int frame = 0; frame < 4; ++frame) {
+    const glm::vec3 center(0.1f + 0.02f * float(frame), 0.17f, 0.1f);
+    const glm::vec3 velocity(0.02f / float(node.substeps() * node.time_step()), 0.0f, 0.0f);
+    const glm::quat rotation = glm::angleAxis(0.3f * float(frame), glm::vec3(0.0f, 1.0f, 0.0f));
+    // Each frame, before add_to(): where it is, how fast its centre moves, and its own turn and scale.
+    node.set_obstacle_pose(boat, center, velocity);
+    node.set_mesh_transform(boat, rotation, 1.0f);
+    graph.reset();
+    node.add_to(graph, node.substeps());
+    graph.compile();
+    graph.execute(cmd.begin());
+    cmd.submit_and_wait();
+  }
+  // Moved every step: voxelized every step.
+  CHECK(node.simulation().mesh_field()->voxelizations() == 4 * node.substeps());
+  CHECK_THROWS_AS(node.set_mesh_transform(boat + 1, glm::quat(1, 0, 0, 0), 1.0f), std::out_of_range);  // no such obstacle
+  CHECK_THROWS_AS(node.set_mesh_transform(boat, glm::quat(1, 0, 0, 0), 0.0f), std::invalid_argument);
+  const liquid::Diagnostics d = node.diagnose();
+  CHECK(d.inside_obstacles == 0);
+  REQUIRE_NO_VALIDATION_MESSAGES_ON(context);
 }

@@ -90,6 +90,8 @@ vec3 floor_color(vec3 p) {
 }
 
 // Nearest obstacle hit along the ray: analytic for spheres and boxes, sphere tracing for metaballs.
+// Meshes are not traced: liquid/render/mesh_draw.h rasterizes them into the frame's colour and
+// depth first, and this pass is depth-tested against them.
 float trace_obstacles(vec3 origin, vec3 dir, out int hit_index) {
   float best = k_no_hit;
   hit_index = -1;
@@ -108,7 +110,7 @@ float trace_obstacles(vec3 origin, vec3 dir, out int hit_index) {
     } else if (kind == LIQUID_OBSTACLE_BOX) {
       vec2 span = intersect_box(origin, 1.0 / dir, c - o.box_half_extent, c + o.box_half_extent);
       if (span.x <= span.y && span.x > 0.0) t = span.x;
-    } else {
+    } else if (kind == LIQUID_OBSTACLE_METABALLS) {
       float reach = 0.0;
       for (int b = 0; b < o.ball_count; ++b) {
         vec4 ball = u.balls[o.first_ball + b];

@@ -34,9 +34,8 @@ const float k_fluid_epsilon = 1e-6;
 float pressure_at(ivec3 c, float coverage) {
   c = clamp(c, ivec3(0), grid_cells() - 1);
   float rho = u.density_scale * fetch_grid(u_splat, c).a / coverage;
-  vec3 p = cell_center(c);
-  rho += obstacle_density(p);
-  if (shallow_water()) rho += u.rest_density * ground_height(p.xy) / u.rest_depth;
+  rho += obstacle_density_at_cell(c);
+  if (shallow_water()) rho += u.rest_density * ground_height(cell_center(c).xy) / u.rest_depth;
   return pressure_from_density(rho);
 }
 
@@ -98,14 +97,15 @@ void main() {
 
   // Obstacles: inside, the liquid moves with the obstacle; near the surface, no relative
   // velocity into it.
+  MeshSample meshes = mesh_sample_at_cell(c, true);
   [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
-    float d = obstacle_distance(i, p);
+    float d = obstacle_distance(i, p, meshes);
     if (d > h) continue;
     vec3 v_obstacle = u.obstacles[i].velocity;
     if (d < 0.0) {
       velocity = v_obstacle;
     } else {
-      vec3 normal = obstacle_normal(i, p);
+      vec3 normal = obstacle_normal(i, p, meshes);
       float into = dot(velocity - v_obstacle, normal);
       if (into < 0.0) velocity -= into * normal;
     }

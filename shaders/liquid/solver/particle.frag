@@ -131,15 +131,17 @@ void main() {
   // Obstacles: a particle that ended inside (or within half a cell of) an obstacle is moved back
   // to its surface and loses its velocity into it, relative to the obstacle.
   float skin = 0.5 * cell_size();
-  [[unroll]] for (int pass = 0; pass < 2; ++pass)
+  [[unroll]] for (int pass = 0; pass < 2; ++pass) {
+    MeshSample meshes = mesh_sample(x_new, true);
     [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
-      float d = obstacle_distance(i, x_new);
+      float d = obstacle_distance(i, x_new, meshes);
       if (d >= skin) continue;
-      vec3 normal = obstacle_normal(i, x_new);
+      vec3 normal = obstacle_normal(i, x_new, meshes);
       x_new = clamp_to_bounds(x_new + (skin - d) * normal, lo, hi);
       float into = dot(v - u.obstacles[i].velocity, normal);
       if (into < 0.0) v -= into * normal;
     }
+  }
 
   // Walls: no velocity into a wall the particle was clamped against.
   for (int a = 0; a < DIM; ++a) {
