@@ -24,7 +24,7 @@ endif()
 
 # The shipped scenes (assets/scenes/*.json), for hosts and tools: RasterLiquids_SCENES_DIR.
 set(RASTERLIQUIDS_SCENES_DIR "${CMAKE_INSTALL_DATADIR}/rasterliquids/scenes")
-install(DIRECTORY assets/scenes/ DESTINATION ${RASTERLIQUIDS_SCENES_DIR} FILES_MATCHING PATTERN "*.json")
+install(DIRECTORY assets/scenes/ DESTINATION ${RASTERLIQUIDS_SCENES_DIR} FILES_MATCHING PATTERN "*.json" PATTERN "*.obj")
 
 configure_package_config_file(cmake/RasterLiquidsConfig.cmake.in
   "${PROJECT_BINARY_DIR}/RasterLiquidsConfig.cmake" INSTALL_DESTINATION ${package_dir}

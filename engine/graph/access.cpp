@@ -1,5 +1,7 @@
 #include "engine/graph/access.h"
 
+#include "engine/vk/image.h"
+
 #include <array>
 #include <utility>
 
@@ -77,12 +79,22 @@ std::string access_names(VkAccessFlags2 access) {
   return join_names(access, names);
 }
 
+VkImageLayout access_layout(Access access, VkFormat format) {
+  const VkImageLayout layout = access_info(access).layout;
+  // DEPTH_ATTACHMENT_OPTIMAL names the depth aspect alone; a barrier on a depth/stencil image
+  // covers both aspects (the stencil is the host's, kept), so both take the combined layout.
+  return layout == VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL && vk::has_stencil(format)
+             ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL
+             : layout;
+}
+
 const char* layout_name(VkImageLayout layout) {
   switch (layout) {
     case VK_IMAGE_LAYOUT_UNDEFINED: return "UNDEFINED";
     case VK_IMAGE_LAYOUT_GENERAL: return "GENERAL";
     case VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL: return "COLOR_ATTACHMENT_OPTIMAL";
     case VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL: return "DEPTH_ATTACHMENT_OPTIMAL";
+    case VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL: return "DEPTH_STENCIL_ATTACHMENT_OPTIMAL";
     case VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL: return "SHADER_READ_ONLY_OPTIMAL";
     case VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL: return "TRANSFER_SRC_OPTIMAL";
     case VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL: return "TRANSFER_DST_OPTIMAL";

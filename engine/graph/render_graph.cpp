@@ -153,7 +153,8 @@ const Plan& RenderGraph::compile() {
   for (const Pass& pass : passes_) {
     PassPlan pp;
     pp.name = pass.name;
-    // Attachments first: all must share one extent and layer count.
+    // Attachments first: all must share one extent, layer count and sample count.
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     for (const Use& use : pass.uses) {
       const AccessInfo& info = access_info(use.access);
       if (!info.attachment) continue;
@@ -163,8 +164,11 @@ const Plan& RenderGraph::compile() {
         pp.width = r.desc.width;
         pp.height = r.desc.height;
         pp.layers = layers;
+        samples = r.desc.samples;
       } else if (pp.width != r.desc.width || pp.height != r.desc.height || pp.layers != layers) {
         throw misuse(pass.name, r.name, "attachment extent differs from the pass's other attachments");
+      } else if (r.desc.samples != samples) {
+        throw misuse(pass.name, r.name, "attachment sample count differs from the pass's other attachments");
       }
       AttachmentPlan ap{use.resource, use.access, use.options.load, use.options.clear};
       if (use.access == Access::DepthAttachmentWrite) {
@@ -178,13 +182,14 @@ const Plan& RenderGraph::compile() {
     for (const Use& use : pass.uses) {
       const AccessInfo& info = access_info(use.access);
       const VkPipelineStageFlags2 stages = info.stages | use.extra_stages;
+      const VkImageLayout layout = access_layout(use.access, resources_[use.resource].desc.format);
       vk::ImageSyncState& s = state[use.resource];
       BarrierPlan b;
       b.resource = use.resource;
       b.resource_name = resources_[use.resource].name;
       b.dst_stages = stages;
       b.dst_access = info.access;
-      b.new_layout = info.layout;
+      b.new_layout = layout;
       if (info.writes) {
         // Write after write or after read: wait for both; the old contents survive only if loaded.
         const bool discard = use.options.load != LoadOp::Load && use.access != Access::ColorAttachmentBlend;
@@ -192,9 +197,9 @@ const Plan& RenderGraph::compile() {
         b.src_access = s.write_access;
         b.old_layout = discard ? VK_IMAGE_LAYOUT_UNDEFINED : s.layout;
         pp.barriers.push_back(b);
-        s = vk::ImageSyncState{info.layout, stages, info.access, 0, 0, 0};
+        s = vk::ImageSyncState{layout, stages, info.access, 0, 0, 0};
       } else {
-        const bool transition = s.layout != info.layout;
+        const bool transition = s.layout != layout;
         const bool needs_visibility = s.write_stages != 0 && (stages & ~s.visible_stages) != 0;
         if (!transition && !needs_visibility) {
           s.read_stages |= stages;
@@ -207,7 +212,7 @@ const Plan& RenderGraph::compile() {
         b.old_layout = s.layout;
         pp.barriers.push_back(b);
         if (transition) {
-          s = vk::ImageSyncState{info.layout, stages, 0, stages, info.access, stages};
+          s = vk::ImageSyncState{layout, stages, 0, stages, info.access, stages};
         } else {
           s.read_stages |= stages;
           s.read_access |= info.access;
@@ -326,9 +331,8 @@ void RenderGraph::execute(VkCommandBuffer cmd) {
     if (renders) {
       auto attachment_info = [&](const AttachmentPlan& a) {
         VkRenderingAttachmentInfo info{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-        const AccessInfo& access = access_info(a.access);
         info.imageView = resources_[a.resource].image->attachment_view();
-        info.imageLayout = access.layout;
+        info.imageLayout = access_layout(a.access, resources_[a.resource].desc.format);
         info.loadOp = a.load == LoadOp::Clear  ? VK_ATTACHMENT_LOAD_OP_CLEAR
                       : a.load == LoadOp::Load || a.access == Access::ColorAttachmentBlend
                           ? VK_ATTACHMENT_LOAD_OP_LOAD

@@ -153,6 +153,7 @@ Context::Context(const HostDevice& host, const ContextOptions& options)
       throw NoDeviceError("the host's queue index " + std::to_string(host.queue_index) + " does not exist");
     vertex_layer_output_ = enabled.v12.shaderOutputLayer == VK_TRUE;
     geometry_shader_ = enabled.core.features.geometryShader == VK_TRUE;
+    dual_source_blend_ = enabled.core.features.dualSrcBlend == VK_TRUE;
     vkGetDeviceQueue(device_, queue_family_, host.queue_index, &queue_);
     if (host.debug_utils) create_messenger();
     finish_setup();
@@ -316,6 +317,7 @@ void Context::create_device(const ContextOptions& options) {
   if (options.enable_features) options.enable_features(enabled, supported);
   vertex_layer_output_ = enabled.v12.shaderOutputLayer == VK_TRUE;
   geometry_shader_ = enabled.core.features.geometryShader == VK_TRUE;
+  dual_source_blend_ = enabled.core.features.dualSrcBlend == VK_TRUE;
 
   std::vector<const char*> extensions = required_device_extensions();
   extensions.insert(extensions.end(), options.device_extensions.begin(), options.device_extensions.end());

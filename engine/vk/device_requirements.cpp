@@ -24,9 +24,12 @@ const Required k_required[] = {
 // Used where the device has them; each picks a way of rendering the 3D grids (liquid/solver/grid_layout.h):
 // geometry shaders route full-screen passes to a slice, shaderOutputLayer lets a vertex shader do it.
 // Without either, 3D grids are stored as 2D atlases of their slices; 2D scenes need neither.
+// dualSrcBlend: a composited liquid filters the host's colour behind it per channel (its
+// absorption tints what shows through); without it, by one grey transmittance.
 const Required k_optional[] = {
     {"geometryShader", [](DeviceFeatures& f) -> VkBool32& { return f.core.features.geometryShader; }},
     {"shaderOutputLayer", [](DeviceFeatures& f) -> VkBool32& { return f.v12.shaderOutputLayer; }},
+    {"dualSrcBlend", [](DeviceFeatures& f) -> VkBool32& { return f.core.features.dualSrcBlend; }},
 };
 
 VkBool32 value(const DeviceFeatures& features, Access field) { return field(const_cast<DeviceFeatures&>(features)); }

@@ -12,6 +12,10 @@ bool is_depth_format(VkFormat format) {
          format == VK_FORMAT_D24_UNORM_S8_UINT || format == VK_FORMAT_D32_SFLOAT_S8_UINT;
 }
 
+bool has_stencil(VkFormat format) {
+  return format == VK_FORMAT_D24_UNORM_S8_UINT || format == VK_FORMAT_D32_SFLOAT_S8_UINT;
+}
+
 uint32_t format_texel_size(VkFormat format) {
   switch (format) {
     case VK_FORMAT_R8G8B8A8_UNORM:
@@ -44,7 +48,7 @@ Image::Image(Context& context, const ImageDesc& desc, const std::string& name)
   info.extent = {desc.width, desc.height, desc.kind == ImageKind::Image3D ? desc.depth_or_layers : 1};
   info.mipLevels = 1;
   info.arrayLayers = desc.kind == ImageKind::Image2DArray ? desc.depth_or_layers : 1;
-  info.samples = VK_SAMPLE_COUNT_1_BIT;
+  info.samples = desc.samples;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
   info.usage = desc.usage;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
@@ -94,19 +98,21 @@ void Image::create_views(Context& context) {
   view.viewType = desc.kind == ImageKind::Image3D        ? VK_IMAGE_VIEW_TYPE_3D
                   : desc.kind == ImageKind::Image2DArray ? VK_IMAGE_VIEW_TYPE_2D_ARRAY
                                                          : VK_IMAGE_VIEW_TYPE_2D;
-  auto create_view = [&] {
+  auto create_view = [&](VkImageAspectFlags aspects) {
+    view.subresourceRange.aspectMask = aspects;
     VkImageView handle = VK_NULL_HANDLE;
     VK_CHECK(vkCreateImageView(device, &view, nullptr, &handle));
     return UniqueHandle<VkImageView>(device, handle, vkDestroyImageView);
   };
+  // A sampled view shows one aspect (the depth of a depth/stencil image); an attachment view all.
   if (desc.usage & (VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT))
-    objects_->sampled_view = create_view();
+    objects_->sampled_view = create_view(aspect());
   if (desc.usage & (VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT)) {
     if (desc.kind == ImageKind::Image3D) {
       view.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
       view.subresourceRange.layerCount = desc.depth_or_layers;
     }
-    objects_->attachment_view = create_view();
+    objects_->attachment_view = create_view(full_range().aspectMask);
   }
 }
 
@@ -115,7 +121,9 @@ VkImageAspectFlags Image::aspect() const {
 }
 
 VkImageSubresourceRange Image::full_range() const {
-  return {aspect(), 0, 1, 0, desc_.kind == ImageKind::Image2DArray ? desc_.depth_or_layers : 1};
+  const VkImageAspectFlags all = has_stencil(desc_.format) ? VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT
+                                                           : aspect();
+  return {all, 0, 1, 0, desc_.kind == ImageKind::Image2DArray ? desc_.depth_or_layers : 1};
 }
 
 }  // namespace engine::vk

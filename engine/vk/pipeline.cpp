@@ -24,9 +24,18 @@ VkPipelineColorBlendAttachmentState blend_state(BlendMode mode) {
   if (mode == BlendMode::None) return state;
   state.blendEnable = VK_TRUE;
   state.colorBlendOp = state.alphaBlendOp = VK_BLEND_OP_ADD;
-  if (mode == BlendMode::Additive) {
+  if (mode == BlendMode::Min) {
+    state.colorBlendOp = state.alphaBlendOp = VK_BLEND_OP_MIN;  // the factors are ignored by MIN
     state.srcColorBlendFactor = state.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
     state.srcAlphaBlendFactor = state.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+  } else if (mode == BlendMode::Additive) {
+    state.srcColorBlendFactor = state.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
+    state.srcAlphaBlendFactor = state.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+  } else if (mode == BlendMode::Transmit) {
+    state.srcColorBlendFactor = VK_BLEND_FACTOR_ONE;
+    state.dstColorBlendFactor = VK_BLEND_FACTOR_SRC1_COLOR;
+    state.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+    state.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
   } else {
     state.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
     state.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
@@ -42,6 +51,9 @@ GraphicsPipeline::GraphicsPipeline(Context& context, const GraphicsPipelineDesc&
     : context_(&context), push_constant_size_(desc.push_constant_size), name_(desc.name), bindings_(desc.bindings) {
   if (desc.push_constant_size > 128)
     throw std::invalid_argument(desc.name + ": push constants above 128 bytes are not portable");
+  for (BlendMode mode : desc.blend)
+    if (mode == BlendMode::Transmit && !context.supports_dual_source_blend())
+      throw std::invalid_argument(desc.name + ": BlendMode::Transmit needs the device's dualSrcBlend feature");
   const VkDevice device = context.device();
   std::vector<VkDescriptorSetLayoutBinding> bindings;
   for (const auto& b : desc.bindings)

@@ -3,14 +3,27 @@
 #include "engine/vk/device_requirements.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
+
+namespace {
+
+VKAPI_ATTR VkBool32 VKAPI_CALL host_message(VkDebugUtilsMessageSeverityFlagBitsEXT,
+                                            VkDebugUtilsMessageTypeFlagsEXT,
+                                            const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
+  std::fprintf(stderr, "host validation: %s\n", data->pMessage);
+  if (user) static_cast<std::atomic<uint32_t>*>(user)->fetch_add(1);
+  return VK_FALSE;
+}
+
+}  // namespace
 
 void host_check(VkResult result, const char* call) {
   if (result != VK_SUCCESS) throw std::runtime_error(std::string(call) + " failed (VkResult " + std::to_string(result) + ")");
 }
 
-HostVulkan::HostVulkan(bool with_validation) : validation(with_validation) {
+HostVulkan::HostVulkan(bool with_validation, std::atomic<uint32_t>* message_count) : validation(with_validation) {
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = "liquid_host";
   app.apiVersion = engine::vk::k_required_api_version;
@@ -30,6 +43,18 @@ HostVulkan::HostVulkan(bool with_validation) : validation(with_validation) {
     info.ppEnabledExtensionNames = &debug_utils;
   }
   host_check(vkCreateInstance(&info, nullptr, &instance), "vkCreateInstance");
+  if (validation) {
+    VkDebugUtilsMessengerCreateInfoEXT messenger_info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+    messenger_info.messageSeverity =
+        VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    messenger_info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT;
+    messenger_info.pfnUserCallback = host_message;
+    messenger_info.pUserData = message_count;
+    auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
+    host_check(create ? create(instance, &messenger_info, nullptr, &messenger) : VK_ERROR_EXTENSION_NOT_PRESENT,
+               "vkCreateDebugUtilsMessengerEXT");
+  }
 
   // The first device with Vulkan 1.3, what the library needs, and a graphics queue.
   uint32_t count = 0;
@@ -85,6 +110,11 @@ HostVulkan::~HostVulkan() {
   if (device) {
     vkDeviceWaitIdle(device);
     vkDestroyDevice(device, nullptr);
+  }
+  if (messenger) {
+    auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
+    destroy(instance, messenger, nullptr);
   }
   if (instance) vkDestroyInstance(instance, nullptr);
 }

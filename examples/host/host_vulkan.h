@@ -7,11 +7,16 @@
 
 #include <vulkan/vulkan.h>
 
+#include <atomic>
+#include <cstdint>
 #include <string>
 #include <vector>
 
 struct HostVulkan {
-  explicit HostVulkan(bool validation);
+  // With `validation`, the host's own messenger prints each message to stderr and, when
+  // `message_count` is given, counts it there; it lives until after the device is destroyed, so
+  // objects a library left alive on the device are reported and counted too.
+  explicit HostVulkan(bool validation, std::atomic<uint32_t>* message_count = nullptr);
   ~HostVulkan();
   HostVulkan(const HostVulkan&) = delete;
   HostVulkan& operator=(const HostVulkan&) = delete;
@@ -20,6 +25,7 @@ struct HostVulkan {
   engine::vk::HostDevice host_device() const;
 
   VkInstance instance = VK_NULL_HANDLE;
+  VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
   VkPhysicalDevice physical_device = VK_NULL_HANDLE;
   VkDevice device = VK_NULL_HANDLE;
   VkQueue queue = VK_NULL_HANDLE;

@@ -2,19 +2,17 @@
 
 #include "engine/vk/context.h"
 #include "host_shaders.h"
-#include "liquid/renderer.h"
 
 namespace {
 
 struct ScenePush {
   glm::mat4 view_projection;
-  glm::vec4 box_center;
-  glm::vec4 box_half_extent;
-  glm::vec4 floor_extent;
+  glm::mat4 model;
 };
 static_assert(sizeof(ScenePush) <= 128, "push constants: lavapipe allows 128 bytes");
 
-constexpr uint32_t k_vertices = 6 + 36;  // floor, then the box's 6 faces
+constexpr uint32_t k_floor_vertices = 6;
+constexpr uint32_t k_box_vertices = 36;  // 6 faces of 2 triangles
 
 // A barrier from wherever the graph (or the previous frame) left `image` to `layout` for `stages`.
 VkImageMemoryBarrier2 to_attachment(engine::vk::Image& image, VkImageLayout layout, VkPipelineStageFlags2 stages,
@@ -38,15 +36,15 @@ ScenePass::ScenePass(engine::vk::Context& context)
     : pipeline_(context, engine::vk::GraphicsPipelineDesc{.name = "host.scene",
                                                          .vertex = host_shaders::scene_vert,
                                                          .fragment = host_shaders::scene_frag,
-                                                         .color_formats = {liquid::k_color_format},
-                                                         .depth_format = liquid::k_depth_format,
+                                                         .color_formats = {k_color_format},
+                                                         .depth_format = k_depth_format,
                                                          .depth_test = true,
                                                          .depth_write = true,
+                                                         .depth_compare = VK_COMPARE_OP_GREATER_OR_EQUAL,
                                                          .push_constant_size = sizeof(ScenePush)}) {}
 
 void ScenePass::record(VkCommandBuffer cmd, engine::vk::Image& color, engine::vk::Image& depth,
-                       const glm::mat4& view_projection, glm::vec3 box_center, glm::vec3 box_half_extent,
-                       glm::vec2 floor_extent) const {
+                       const glm::mat4& view_projection, const glm::mat4& floor_model, const glm::mat4& box_model) const {
   constexpr VkPipelineStageFlags2 k_color_stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
   constexpr VkPipelineStageFlags2 k_depth_stages =
       VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
@@ -67,13 +65,13 @@ void ScenePass::record(VkCommandBuffer cmd, engine::vk::Image& color, engine::vk
   color_attachment.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
   color_attachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
   color_attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  color_attachment.clearValue.color = {{0.62f, 0.72f, 0.84f, 1.0f}};  // the host's sky
+  color_attachment.clearValue.color = {{0.45f, 0.6f, 0.85f, 1.0f}};  // the host's sky, in radiance
   VkRenderingAttachmentInfo depth_attachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
   depth_attachment.imageView = depth.attachment_view();
   depth_attachment.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
   depth_attachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
   depth_attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  depth_attachment.clearValue.depthStencil = {1.0f, 0};
+  depth_attachment.clearValue.depthStencil = {0.0f, 0};  // reversed Z: 0 is the far plane
   VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
   rendering.renderArea = {{0, 0}, {width, height}};
   rendering.layerCount = 1;
@@ -82,10 +80,10 @@ void ScenePass::record(VkCommandBuffer cmd, engine::vk::Image& color, engine::vk
   rendering.pDepthAttachment = &depth_attachment;
   vkCmdBeginRendering(cmd, &rendering);
   pipeline_.bind(cmd, width, height);
-  const ScenePush push{view_projection, glm::vec4(box_center, 0.0f), glm::vec4(box_half_extent, 0.0f),
-                       glm::vec4(floor_extent, 0.0f, 0.0f)};
-  pipeline_.push_constants(cmd, push);
-  vkCmdDraw(cmd, k_vertices, 1, 0, 0);
+  pipeline_.push_constants(cmd, ScenePush{view_projection, floor_model});
+  vkCmdDraw(cmd, k_floor_vertices, 1, 0, 0);
+  pipeline_.push_constants(cmd, ScenePush{view_projection, box_model});
+  vkCmdDraw(cmd, k_box_vertices, 1, k_floor_vertices, 0);
   vkCmdEndRendering(cmd);
 
   // Where this pass leaves the targets: the graph's first use of them waits for these writes.

@@ -5,19 +5,36 @@
 #pragma once
 
 #include "engine/graph/render_graph.h"
+#include "liquid/placement.h"
 #include "liquid/scene.h"
 #include "liquid/types.h"
 
+#include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <span>
+#include <string>
 #include <vector>
 
 namespace engine::vk {
 class Context;
+class Image;
 }
 
 namespace liquid {
 
 class Simulation;  // the solver itself: internal, not installed
+
+// A mesh obstacle from a host's own geometry, to put in Scene::obstacles before creating the node.
+// `vertex_bytes` holds float3 positions (x, y, z as 32-bit floats, m in the mesh's frame) starting
+// at byte 0 of each `stride` bytes (stride >= 12: a host's interleaved vertex buffer works as is);
+// `indices` are 32-bit, three per triangle, counter-clockwise seen from outside. Vertices at
+// identical positions are merged (split normals or texture coordinates are fine). The mesh is
+// placed at world = center + rotation * (scale * vertex) and must be closed: every edge shared by
+// exactly two triangles of opposite orientation; otherwise a SceneError names `name` and what is
+// wrong. At most 4 meshes per scene (each needs a channel of the solver's mesh field).
+Obstacle mesh_obstacle(std::span<const std::byte> vertex_bytes, size_t stride, std::span<const uint32_t> indices,
+                       glm::vec3 center, const std::string& name = "host mesh");
 
 class LiquidNode {
  public:
@@ -58,9 +75,19 @@ class LiquidNode {
   // frame). Throws std::invalid_argument unless 0 < dt <= the scene's time_step and finite.
   void set_time_step(double dt);
 
+  // Where the liquid lies in the host's world (identity until set): what Frame::World positions,
+  // velocities and brushes go through, and a compositing renderer's model when a HostView gives
+  // none. Gravity stays the scene's, in the liquid's frame (a host tilting the tank and wanting its
+  // world's gravity sets RuntimeParameters::gravity to glm::inverse(placement().rotation) * g: the
+  // physics stays in the liquid's own metres however large the host draws it). Throws std::invalid_argument for a non-finite value, a scale that is not
+  // positive or a rotation that is not a unit quaternion (to 1e-3).
+  void set_placement(const Placement& placement);
+  const Placement& placement() const { return placement_; }
+
   // External forces for the following steps, at most max_force_brushes() of them (the solver's
-  // uniform block holds that many; a longer list is refused when the step is declared).
-  void set_brushes(std::vector<ForceBrush> brushes);
+  // uniform block holds that many; a longer list is refused when the step is declared). In
+  // Frame::World a brush's position, radius and acceleration are the world's.
+  void set_brushes(std::vector<ForceBrush> brushes, Frame frame = Frame::Liquid);
   static int max_force_brushes();
   // The parameters a host may change while the node runs; they take effect from the next step.
   // Throws std::invalid_argument on a non-finite gravity, a PIC ratio outside [0, 1] or a negative
@@ -71,11 +98,19 @@ class LiquidNode {
   // Places obstacle `index` (a host-driven obstacle): from now on it moves at `velocity` from
   // `center`, replacing the scene's scripted motion. The set of obstacles and their shapes are
   // fixed when the node is created (the shaders are specialized for them).
+  // `frame`: the frame `center` and `velocity` are given in, or the poses are reported in.
   // Throws std::invalid_argument for a dynamic obstacle (the liquid moves it).
-  void set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity);
+  void set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity, Frame frame = Frame::Liquid);
+  // A mesh obstacle's own transform for the following steps (with set_obstacle_pose() for its
+  // centre and velocity, once per frame for a host-driven mesh), in the liquid's frame. The mesh is
+  // voxelized again in the steps where its placement changed; a turn adds no velocity to the
+  // liquid (the mesh's velocity is its centre's). Throws std::out_of_range when obstacle `index` is
+  // not a mesh and std::invalid_argument for a scale that is not finite and > 0 or a zero or
+  // non-finite rotation.
+  void set_mesh_transform(size_t index, glm::quat rotation, float scale);
   // Every obstacle's pose at `time` (scripted or set); a dynamic obstacle's is its last known state
   // (latest_bodies(), read_bodies() or diagnose()), whatever `time`.
-  std::vector<ObstaclePose> obstacle_poses(double time) const;
+  std::vector<ObstaclePose> obstacle_poses(double time, Frame frame = Frame::Liquid) const;
 
   // Dynamic obstacles (rigid bodies the liquid moves; README, "Bodies that float"). Their state lives
   // on the GPU and is integrated there every step, so reading it is the host's choice of cost:
@@ -95,8 +130,9 @@ class LiquidNode {
   int step_count() const;
   double time() const;
 
-  // Blocking reads (own submission): call when no frame of this node is in flight.
-  ParticleSnapshot read_particles();
+  // Blocking reads (own submission): call when no frame of this node is in flight. The grids and
+  // diagnostics are the liquid's frame's; particles are reported in `frame`.
+  ParticleSnapshot read_particles(Frame frame = Frame::Liquid);
   // The grids, cell (x, y, z) at x + nx (y + ny z) on every path.
   std::vector<float> read_density_ratio();
   std::vector<glm::vec4> read_splat();
@@ -122,6 +158,14 @@ class LiquidNode {
   // match this node's scene.
   void restore_checkpoint(const Checkpoint& checkpoint);
 
+  // The persistent rho / rho0 grid (R16_SFLOAT: a 3D image in 3D, or the 2D atlas of its slices on
+  // the atlas path; a 2D image in 2D), for a host to sample outside the graph, with no copy. After
+  // a graph that declared steps has executed, it holds the last step's density, in the layout and
+  // after the last access its sync_state() gives. A host using it waits on that state with its own
+  // barrier and records where it leaves the image in sync_state(), as for its own imported images;
+  // the node's next graph starts from there. Sample it through sampled_view(); never write it.
+  engine::vk::Image& density_image();
+
   // The solver inside, for the library's own renderer, tools and tests: its header
   // (liquid/solver/simulation.h) is internal and not installed, so a host cannot use it.
   Simulation& simulation() { return *simulation_; }
@@ -129,6 +173,7 @@ class LiquidNode {
 
  private:
   std::unique_ptr<Simulation> simulation_;
+  Placement placement_;
 };
 
 }  // namespace liquid

@@ -8,6 +8,7 @@
 #include "liquid/camera.h"
 #include "liquid/node.h"
 
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -29,7 +30,8 @@ struct RenderSettings {
   // FXAA after the view. Empty: on for the renderer's own frame, off when compositing into a
   // host's targets (a host runs its own anti-aliasing after its whole scene, TAA for one); on when
   // compositing, its output lands in the host's colour target, which then needs
-  // VK_IMAGE_USAGE_TRANSFER_SRC_BIT (the composite is copied out to be read).
+  // VK_IMAGE_USAGE_TRANSFER_SRC_BIT (the composite is copied out to be read) and a display-referred
+  // format (not HDR: anti-aliasing belongs after the host's tone map).
   std::optional<bool> fxaa;
   bool draw_particles = false;  // 2D views: the particles as points over the liquid
   // 3D: draw into the host's own colour and depth targets (add_to with HostTargets) instead of a
@@ -40,14 +42,18 @@ struct RenderSettings {
   float exposure = 1.0f;
 };
 
-// A host's own targets for compositing (RenderSettings::composite): its colour and depth
-// (D32_SFLOAT) images at the renderer's size. The colour may be R8G8B8A8 or B8G8R8A8, UNORM (the
-// liquid's colour display-encoded) or SRGB (linear, the hardware encodes it), A2B10G10R10_UNORM, or
-// the HDR R16G16B16A16_SFLOAT and B10G11R11_UFLOAT (linear radiance times RenderSettings::exposure);
-// single-sampled, as every image the graph makes or imports is. Both are imported into the graph with their contents
+// A host's own targets for compositing (RenderSettings::composite): its colour and depth images at
+// the renderer's size. The colour may be R8G8B8A8 or B8G8R8A8, UNORM (the liquid's colour
+// display-encoded) or SRGB (linear, the hardware encodes it), A2B10G10R10_UNORM, or the HDR
+// R16G16B16A16_SFLOAT and B10G11R11_UFLOAT (linear radiance times RenderSettings::exposure). The
+// depth may be D32_SFLOAT, D24_UNORM_S8_UINT or D32_SFLOAT_S8_UINT; a stencil is left as it was
+// (the graph keeps such an image in DEPTH_STENCIL_ATTACHMENT_OPTIMAL). Both single-sampled: an MSAA
+// host composites into its resolved colour and depth, after its resolve (a multisampled target is
+// refused, naming it). Both are imported into the graph with their contents
 // (engine::vk::Image::wrap + RenderGraph::import_image). The liquid is blended over the colour
 // where its surface is nearer than the host's depth, and writes its own depth there, so host
-// geometry in front hides the liquid and the host's later passes see the liquid's depth.
+// geometry in front hides the liquid and the host's later passes see the liquid's depth. A
+// pipeline per colour format, depth format and depth convention is made on first use and kept.
 struct HostTargets {
   engine::graph::ImageHandle color;
   engine::graph::ImageHandle depth;
@@ -56,14 +62,15 @@ struct HostTargets {
 // A host's own view of the liquid, for compositing: its view and projection matrices (Vulkan clip
 // space, y down, depth 0..1), whatever projection the host uses: perspective or orthographic, a
 // finite or an infinite far plane, jittered for TAA. `model` places the liquid's frame (metres, the
-// domain [0, domain], y up) in the host's world: a rotation, a translation and a uniform scale (the
-// tank of water somewhere in the level); the solver, obstacle poses, brushes and read-backs stay in
-// the liquid's frame (map them with glm::inverse(model)). `reversed_z`: the projection maps the near plane to depth 1 (the host clears
-// depth to 0 and keeps the greater depth; the liquid tests and writes its depth the same way).
-// `viewport`: the rectangle of the targets the view fills (empty: all of it), so several views
-// (split screen) composite one simulation step into one target, one add_to each.
+// domain [0, domain], y up) in the host's world: a rotation, a translation and a uniform scale;
+// empty, the node's placement (LiquidNode::set_placement, which also maps the positions, brushes
+// and read-backs a host gives or asks for in liquid::Frame::World). `reversed_z`: the projection
+// maps the near plane to depth 1 (the host clears depth to 0 and keeps the greater depth; the
+// liquid tests and writes its depth the same way). `viewport`: the rectangle of the targets the
+// view fills (empty: all of it), so several views (split screen) composite one simulation step into
+// one target, one add_to each.
 struct HostView {
-  glm::mat4 model{1.0f};
+  std::optional<glm::mat4> model;
   glm::mat4 view{1.0f};
   glm::mat4 projection{1.0f};
   bool reversed_z = false;
@@ -74,10 +81,12 @@ struct HostView {
 // is drawn into (RenderSettings::composite on a 2D scene): the domain fitted into the rectangle,
 // the liquid and the obstacles alone, blended by their coverage over what the host drew there (a
 // panel, a HUD element, a texture the host then samples). The host's pixels outside the rectangle,
-// and inside it where there is no liquid, are left as they were.
+// and inside it where there is no liquid, are left as they were. `background`: the library's own
+// background, letterbox and tank walls too, the rectangle opaque (the 2D view as in its own frame).
 struct HostPanel {
   engine::graph::ImageHandle color;
   VkRect2D rect{};
+  bool background = false;
 };
 
 struct RenderOutputs {
@@ -123,7 +132,8 @@ class LiquidRenderer {
   std::unique_ptr<RaymarchPass> raymarch_;
   std::unique_ptr<View2dPass> view2d_;
   std::unique_ptr<HeightFieldPass> height_field_;
-  std::unique_ptr<engine::passes::FxaaPass> fxaa_;
+  std::unique_ptr<engine::passes::FxaaPass> fxaa_;  // the renderer's own frame; whether FXAA is on
+  std::map<VkFormat, std::unique_ptr<engine::passes::FxaaPass>> composite_fxaa_;  // per host colour format
 };
 
 }  // namespace liquid

@@ -68,7 +68,18 @@ struct Emitter {
   int capacity = 0;          // most particles this emitter ever adds
 };
 
-enum class ObstacleShape { Sphere, Box, Metaballs };
+enum class ObstacleShape { Sphere, Box, Metaballs, Mesh };
+
+// A closed triangle mesh (every edge shared by exactly two triangles of opposite orientation):
+// positions in the mesh's own frame (m before `scale`), three indices per triangle, counter-clockwise
+// seen from outside. A mesh obstacle is placed at world = obstacle centre + rotation * (scale * vertex).
+struct TriangleMesh {
+  std::vector<glm::vec3> vertices;
+  std::vector<uint32_t> indices;
+  std::string file;                          // where it was read from ("" for a host's mesh)
+  glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};  // the mesh's own orientation (identity)
+  float scale = 1.0f;                        // uniform
+};
 
 struct Metaball {
   glm::vec3 center{0.0f};  // m
@@ -88,6 +99,7 @@ struct Obstacle {
                                  // centres relative to `center` (the JSON gives them in domain
                                  // coordinates; the parser puts `center` at their centroid)
   float threshold = 0.5f;        // metaballs iso level, in (0, 1)
+  TriangleMesh mesh;             // mesh: the triangles, their rotation and scale about `center`
   glm::vec3 velocity{0.0f};      // m/s, constant drift
   glm::vec3 oscillation_amplitude{0.0f};  // m
   float oscillation_frequency = 0.0f;     // Hz

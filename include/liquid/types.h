@@ -91,6 +91,9 @@ struct LiquidImages {
   engine::graph::ImageHandle density;        // R16F rho / rho0
   engine::graph::ImageHandle bodies;         // the dynamic obstacles' state (the library's own layout;
                                              // a host reads it with LiquidNode::latest_bodies())
+  // RGBA32F: the mesh obstacles' signed distance (m), one channel per mesh in scene order, exact
+  // near their surfaces; invalid when the scene has no mesh obstacle.
+  engine::graph::ImageHandle mesh_field;
 };
 
 // Particles read back from the GPU.

@@ -10,6 +10,10 @@ Diagnostics compute_diagnostics(const Scene& scene, const SimulationSetup& setup
                                 const std::vector<float>& density_ratio,
                                 const std::vector<ObstaclePose>& obstacle_poses, int step, double time) {
   Diagnostics d;
+  std::vector<PlacedObstacle> obstacles;  // the sign is all the count needs: a mesh's reach is one cell
+  for (size_t o = 0; o < scene.obstacles.size(); ++o)
+    obstacles.emplace_back(scene.obstacles[o], o < obstacle_poses.size() ? obstacle_poses[o] : scripted_pose(scene.obstacles[o], 0.0),
+                           setup.dimension, setup.cell_size);
   d.step = step;
   d.time = time;
   d.time_step = setup.time_step;  // the node replaces it with the last step's when steps adapt
@@ -38,9 +42,8 @@ Diagnostics compute_diagnostics(const Scene& scene, const SimulationSetup& setup
         ++d.outside_domain;
         break;
       }
-    for (size_t o = 0; o < scene.obstacles.size(); ++o) {
-      const ObstaclePose pose = o < obstacle_poses.size() ? obstacle_poses[o] : scripted_pose(scene.obstacles[o], 0.0);
-      if (obstacle_distance(scene.obstacles[o], pose, x, setup.dimension) < 0.0f) {
+    for (const PlacedObstacle& o : obstacles) {
+      if (o.distance(x) < 0.0f) {
         ++d.inside_obstacles;
         break;
       }

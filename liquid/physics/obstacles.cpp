@@ -45,8 +45,21 @@ float obstacle_distance(const Obstacle& obstacle, const ObstaclePose& pose, glm:
       if (field <= 0.0f) return std::max(glm::length(local) - reach, 1e-3f) + 1e-3f;
       return (obstacle.threshold - field) / std::max(glm::length(gradient), 1e-4f);
     }
+    case ObstacleShape::Mesh:  // one query: PlacedObstacle serves many
+      return PlacedMesh(obstacle.mesh, pose.center, 1e30f).distance(dimension == 2 ? glm::vec3(p.x, p.y, 0.0f) : p);
   }
   return 1e30f;
+}
+
+PlacedObstacle::PlacedObstacle(const Obstacle& obstacle, const ObstaclePose& pose, int dimension, float mesh_reach)
+    : obstacle_(&obstacle), pose_(pose), dimension_(dimension) {
+  if (obstacle.shape == ObstacleShape::Mesh) mesh_.emplace(obstacle.mesh, pose.center, mesh_reach);
+}
+
+float PlacedObstacle::distance(glm::vec3 p) const {
+  if (!mesh_) return obstacle_distance(*obstacle_, pose_, p, dimension_);
+  if (dimension_ == 2) p.z = 0.0f;
+  return mesh_->distance(p);
 }
 
 }  // namespace liquid

@@ -3,11 +3,13 @@
 // uniform block and by the diagnostics to count particles inside obstacles.
 #pragma once
 
+#include "liquid/physics/mesh.h"
 #include "liquid/scene.h"
 #include "liquid/types.h"
 
 #include <glm/glm.hpp>
 
+#include <optional>
 #include <vector>
 
 namespace liquid {
@@ -23,5 +25,20 @@ float obstacle_distance(const Obstacle& obstacle, const ObstaclePose& pose, glm:
 
 // The velocity of the obstacle's material at p: velocity + angular_velocity x (p - center).
 glm::vec3 obstacle_velocity_at(const ObstaclePose& pose, glm::vec3 p);
+
+// An obstacle at one position, for many distance queries: obstacle_distance() for the analytic
+// shapes, a PlacedMesh for a mesh (its distance exact within `mesh_reach` of the surface, clamped
+// to +-mesh_reach beyond; the sign everywhere). `dimension` 2 evaluates at z = 0, as the GPU does.
+class PlacedObstacle {
+ public:
+  PlacedObstacle(const Obstacle& obstacle, const ObstaclePose& pose, int dimension, float mesh_reach);
+  float distance(glm::vec3 p) const;
+
+ private:
+  const Obstacle* obstacle_;
+  ObstaclePose pose_;
+  int dimension_;
+  std::optional<PlacedMesh> mesh_;
+};
 
 }  // namespace liquid

@@ -99,10 +99,18 @@ void check_grid_limits(const Scene& scene, const SimulationSetup& setup, const D
 // three quarters leaves it falling freely (0.026 m/s); the splat adjoint differences P smoothed
 // by the kernel once more, so the push reaches a kernel radius further: 0.32 m/s at three
 // quarters, 0.052 at one band, free fall at one and a half.
-bool inside_any_obstacle(const Scene& scene, glm::vec3 p, float band) {
-  const float carved = scene.pressure_force == PressureForce::SplatAdjoint ? 1.5f : 0.75f;
+float carved_share(const Scene& scene) { return scene.pressure_force == PressureForce::SplatAdjoint ? 1.5f : 0.75f; }
+
+std::vector<PlacedObstacle> obstacles_at_start(const Scene& scene, float band) {
+  std::vector<PlacedObstacle> placed;
   for (const Obstacle& o : scene.obstacles)
-    if (obstacle_distance(o, scripted_pose(o, 0.0), p, scene.dimension) < carved * band) return true;
+    placed.emplace_back(o, scripted_pose(o, 0.0), scene.dimension, 2.0f * carved_share(scene) * band);
+  return placed;
+}
+
+bool inside_any_obstacle(const Scene& scene, const std::vector<PlacedObstacle>& obstacles, glm::vec3 p, float band) {
+  for (const PlacedObstacle& o : obstacles)
+    if (o.distance(p) < carved_share(scene) * band) return true;
   return false;
 }
 
@@ -167,12 +175,13 @@ void fill_block(const Scene& scene, size_t index, glm::ivec3 counts, SimulationS
   }
   const glm::vec4 velocity(block.velocity.x, block.velocity.y, scene.dimension == 3 ? block.velocity.z : 0.0f, 0.0f);
   const HydrostaticStart hydrostatic(scene, block, counts, setup);
+  const std::vector<PlacedObstacle> obstacles = obstacles_at_start(scene, setup.obstacle_band);
   for (int k = 0; k < counts.z; ++k)
     for (int j = 0; j < counts.y; ++j)
       for (int i = 0; i < counts.x; ++i) {
         const glm::vec3 p(hydrostatic.place({double(block.min.x) + (i + 0.5) * s, double(block.min.y) + (j + 0.5) * s,
                                              scene.dimension == 3 ? double(block.min.z) + (k + 0.5) * s : 0.0}));
-        if (inside_any_obstacle(scene, p, setup.obstacle_band)) continue;
+        if (inside_any_obstacle(scene, obstacles, p, setup.obstacle_band)) continue;
         setup.positions.emplace_back(p, 1.0f);
         setup.velocities.push_back(velocity);
       }

@@ -2,6 +2,7 @@
 
 #include "engine/passes/bindings.h"
 #include "engine/passes/fullscreen.h"
+#include "engine/vk/context.h"
 #include "liquid/solver/images.h"
 #include "liquid/solver/simulation.h"
 #include "liquid/solver/specialization.h"
@@ -33,15 +34,23 @@ std::vector<int32_t> raymarch_specialization(const LiquidNode& node, bool compos
 
 engine::vk::GraphicsPipelineDesc raymarch_pipeline_desc(const LiquidNode& node, const GridLayout& bricks,
                                                        bool composite, bool background_only, bool reversed_z = false,
-                                                       VkFormat color_format = k_color_format) {
+                                                       VkFormat color_format = k_color_format,
+                                                       VkFormat depth_format = k_depth_format) {
+  // Composited: blended over the host's colour (the shader writes the liquid's coverage in alpha),
+  // filtering it per channel where the device has dual-source blending.
+  const bool transmit = composite && node.context().supports_dual_source_blend();
+  const auto fragment = transmit ? (bricks.atlas() ? liquid_shaders::raymarch_frag_atlas_transmit
+                                                   : liquid_shaders::raymarch_frag_transmit)
+                                 : (bricks.atlas() ? liquid_shaders::raymarch_frag_atlas : liquid_shaders::raymarch_frag);
   return engine::vk::GraphicsPipelineDesc{
       .name = background_only ? "liquid.raymarch.background" : "liquid.raymarch",
       .vertex = engine::passes::fullscreen_vertex_shader(),
-      .fragment = bricks.atlas() ? liquid_shaders::raymarch_frag_atlas : liquid_shaders::raymarch_frag,
+      .fragment = fragment,
       .color_formats = {color_format},
-      // Composited: blended over the host's colour (the shader writes the liquid's coverage in alpha).
-      .blend = {composite ? engine::vk::BlendMode::Alpha : engine::vk::BlendMode::None},
-      .depth_format = k_depth_format,
+      .blend = {transmit    ? engine::vk::BlendMode::Transmit
+                : composite ? engine::vk::BlendMode::Alpha
+                            : engine::vk::BlendMode::None},
+      .depth_format = depth_format,
       .depth_test = true,
       .depth_write = true,
       .depth_compare = reversed_z ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL,
@@ -109,6 +118,11 @@ std::optional<int> composite_output_encoding(VkFormat format) {
   }
 }
 
+bool is_composite_depth_format(VkFormat format) {
+  return format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D24_UNORM_S8_UINT ||
+         format == VK_FORMAT_D32_SFLOAT_S8_UINT;
+}
+
 glm::mat4 raymarch_view_projection(const SimulationSetup& setup, const CameraView& camera, float aspect) {
   const float far_plane = 4.0f * glm::length(setup.domain) + glm::length(camera.position - camera.target) * 2.0f;
   return view_projection(camera, aspect, 0.01f, far_plane);
@@ -136,6 +150,10 @@ RaymarchPass::RaymarchPass(engine::vk::Context& context, const LiquidNode& node,
       composite_(composite) {
   // Composited, pixels outside the box show the host's frame: nothing to draw there.
   if (!composite) background_ = engine::vk::GraphicsPipeline(context, raymarch_pipeline_desc(node, bricks_, false, true));
+  if (!composite) {
+    meshes_ = std::make_unique<MeshDrawPass>(context, node, k_color_format, k_depth_format);
+    if (meshes_->empty()) meshes_.reset();
+  }
 }
 
 RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
@@ -160,14 +178,15 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
                                 std::to_string(settings.width) + "x" + std::to_string(settings.height) + " targets");
   if (view_input.reversed_z && !composite_)
     throw std::logic_error("liquid.raymarch: reversed Z is for a host's targets; the renderer's own frame is forward");
-  // Compositing: the pipeline for the host's colour format and depth convention, made once.
+  // Compositing: the pipeline for the host's colour and depth formats and depth convention, made once.
   const engine::vk::GraphicsPipeline* pipeline = &raymarch_;
   if (composite_) {
-    const VkFormat format = graph.image_desc(targets->color).format;
-    auto& cached = composite_pipelines_[{format, view_input.reversed_z}];
+    const CompositeKey key{graph.image_desc(targets->color).format, graph.image_desc(targets->depth).format,
+                           view_input.reversed_z};
+    auto& cached = composite_pipelines_[key];
     if (!cached)
       cached = std::make_unique<engine::vk::GraphicsPipeline>(
-          context_, raymarch_pipeline_desc(node_, bricks_, true, false, view_input.reversed_z, format));
+          context_, raymarch_pipeline_desc(node_, bricks_, true, false, key.reversed_z, key.color, key.depth));
     pipeline = cached.get();
   }
   gpu::RaymarchUniforms render{};
@@ -215,6 +234,11 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
                                          k_color_format, 0};
   const engine::vk::ImageDesc depth_desc{engine::vk::ImageKind::Image2D, settings.width, settings.height, 1,
                                          k_depth_format, 0};
+  // Mesh obstacles first: the raymarch keeps their pixels where they are nearer than what it finds.
+  std::optional<MeshDrawPass::Targets> drawn;
+  if (meshes_)
+    drawn = meshes_->add_to(graph, {graph.create_image("liquid.color", color_desc), graph.create_image("liquid.depth", depth_desc)},
+                            vp, viewport, render.sun_direction);
   // The march runs only where rays can reach the domain box; the rest of the frame, a cheaper
   // specialization without the liquid (same image there: those rays miss the box).
   struct RaymarchData {
@@ -248,6 +272,9 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
         if (targets) {  // over the host's colour, tested against and written into its depth
           out.color = b.write(targets->color, Access::ColorAttachmentBlend);
           out.depth = b.write(targets->depth, Access::DepthAttachmentWrite, {engine::graph::LoadOp::Load, {}});
+        } else if (drawn) {  // over the meshes, tested against their depth
+          out.color = b.write(drawn->color, Access::ColorAttachmentWrite, {engine::graph::LoadOp::Load, {}});
+          out.depth = b.write(drawn->depth, Access::DepthAttachmentWrite, {engine::graph::LoadOp::Load, {}});
         } else {
           out.color = b.write(b.create("liquid.color", color_desc), Access::ColorAttachmentWrite);
           out.depth = b.write(b.create("liquid.depth", depth_desc), Access::DepthAttachmentWrite,

@@ -9,10 +9,12 @@
 #include "liquid/camera.h"
 #include "liquid/node.h"
 #include "liquid/physics/setup.h"
+#include "liquid/render/mesh_draw.h"
 #include "liquid/render/view_uniforms.h"
 #include "liquid/renderer.h"
 #include "liquid/solver/grid_layout.h"
 
+#include <compare>
 #include <map>
 #include <memory>
 #include <optional>
@@ -24,6 +26,8 @@ namespace liquid {
 // (LIQUID_OUTPUT_DISPLAY, _LINEAR or _HDR of shaders/liquid/render/view_blocks.h); empty for a
 // format it cannot composite into.
 std::optional<int> composite_output_encoding(VkFormat format);
+// The host depth formats the composite tests against and writes; a stencil is left as it was.
+bool is_composite_depth_format(VkFormat format);
 
 // The view-projection the raymarch uses (near plane 1 cm, far plane beyond the domain and camera).
 glm::mat4 raymarch_view_projection(const SimulationSetup& setup, const CameraView& camera, float aspect);
@@ -57,13 +61,21 @@ class RaymarchPass {
   engine::vk::GraphicsPipeline occupancy_;
   engine::vk::GraphicsPipeline raymarch_;
   engine::vk::Context& context_;
-  // Compositing: one pipeline per host colour format and depth convention, made on first use.
-  std::map<std::pair<VkFormat, bool>, std::unique_ptr<engine::vk::GraphicsPipeline>> composite_pipelines_;
+  // Compositing: one pipeline per host colour format, depth format and depth convention, made on
+  // first use.
+  struct CompositeKey {
+    VkFormat color;
+    VkFormat depth;
+    bool reversed_z;
+    auto operator<=>(const CompositeKey&) const = default;
+  };
+  std::map<CompositeKey, std::unique_ptr<engine::vk::GraphicsPipeline>> composite_pipelines_;
   engine::vk::GraphicsPipeline background_;  // BACKGROUND_ONLY, for pixels whose rays miss the box; not when compositing
   engine::vk::Sampler linear_;
   engine::vk::Sampler nearest_;
   ViewUniforms uniforms_;
   bool composite_ = false;
+  std::unique_ptr<MeshDrawPass> meshes_;  // the scene's mesh obstacles, drawn first (not when compositing)
 };
 
 }  // namespace liquid

@@ -6,6 +6,7 @@
 #include "liquid/render/raymarch.h"
 #include "liquid/render/view2d.h"
 #include "liquid/solver/simulation.h"
+#include "shaders/liquid/render/view_blocks.h"
 
 #include <stdexcept>
 #include <string>
@@ -39,7 +40,8 @@ LiquidRenderer::~LiquidRenderer() = default;
 
 RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
                                      const CameraView& camera, const HostTargets& targets) {
-  return add_to(graph, images, HostView{.projection = view_projection(camera)}, targets);
+  // The library's camera looks at the liquid's own frame.
+  return add_to(graph, images, HostView{.model = glm::mat4(1.0f), .projection = view_projection(camera)}, targets);
 }
 
 RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
@@ -75,6 +77,12 @@ RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const Li
       throw std::invalid_argument(std::string("liquid: the host's ") + what + " target '" + graph.image_name(image) +
                                   "' must be a " + std::to_string(settings_.width) + "x" +
                                   std::to_string(settings_.height) + " 2D image");
+    // An MSAA host resolves its scene first: the liquid is one surface per pixel, drawn into the
+    // resolved colour with the resolved depth (as a TAA or deferred engine's post-scene passes are).
+    if (d.samples != VK_SAMPLE_COUNT_1_BIT)
+      throw std::invalid_argument(std::string("liquid: the host's ") + what + " target '" + graph.image_name(image) +
+                                  "' has " + std::to_string(int(d.samples)) +
+                                  " samples; composite into the resolved single-sample colour and depth");
     return d.format;
   };
   const VkFormat color_format = check(targets.color, "colour");
@@ -84,18 +92,25 @@ RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const Li
                                 std::to_string(int(color_format)) +
                                 ", which the liquid does not composite into (R8G8B8A8 or B8G8R8A8 UNORM or SRGB, "
                                 "A2B10G10R10_UNORM, R16G16B16A16_SFLOAT or B10G11R11_UFLOAT, blendable on the device)");
-  if (check(targets.depth, "depth") != k_depth_format)
-    throw std::invalid_argument("liquid: the host's depth target '" + graph.image_name(targets.depth) +
-                                "' must be D32_SFLOAT (other depth formats are not supported yet)");
-  if (fxaa_ && color_format != k_color_format)
-    throw std::invalid_argument("liquid: FXAA into the host's colour target '" + graph.image_name(targets.color) +
-                                "' needs R8G8B8A8_UNORM (or RenderSettings::fxaa = false)");
+  const VkFormat depth_format = check(targets.depth, "depth");
+  if (!is_composite_depth_format(depth_format) ||
+      !node_.context().format_supports(depth_format, VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT))
+    throw std::invalid_argument("liquid: the host's depth target '" + graph.image_name(targets.depth) + "' has format " +
+                                std::to_string(int(depth_format)) +
+                                ", which the liquid does not test against (D32_SFLOAT, D24_UNORM_S8_UINT or "
+                                "D32_SFLOAT_S8_UINT, a depth attachment on the device)");
+  // FXAA works on display-referred colour: an HDR target is the host's to tone map first.
+  if (fxaa_ && composite_output_encoding(color_format) == LIQUID_OUTPUT_HDR)
+    throw std::invalid_argument("liquid: FXAA into the host's HDR colour target '" + graph.image_name(targets.color) +
+                                "' would smooth radiance before its tone map; run anti-aliasing after it "
+                                "(RenderSettings::fxaa = false)");
   engine::vk::ImageDesc copy_desc = graph.image_desc(targets.color);
   if (fxaa_ && !(copy_desc.usage & VK_IMAGE_USAGE_TRANSFER_SRC_BIT))
     throw std::invalid_argument("liquid: FXAA in the host's colour target '" + graph.image_name(targets.color) +
                                 "' needs VK_IMAGE_USAGE_TRANSFER_SRC_BIT on it (or RenderSettings::fxaa = false)");
   const VkRect2D whole{{0, 0}, {settings_.width, settings_.height}};
-  const RaymarchView raymarch_view{view.projection * view.view * view.model, view.reversed_z,
+  const glm::mat4 model = view.model.value_or(node_.placement().world_from_liquid());
+  const RaymarchView raymarch_view{view.projection * view.view * model, view.reversed_z,
                                    view.viewport.extent.width == 0 && view.viewport.extent.height == 0 ? whole
                                                                                                       : view.viewport};
   const RaymarchPass::Outputs r = raymarch_->add_to(graph, images, settings_, raymarch_view, &targets);
@@ -106,7 +121,9 @@ RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const Li
     copy_desc.usage = 0;
     const engine::graph::ImageHandle composite =
         engine::graph::add_copy(graph, r.color, graph.create_image("liquid.composite", copy_desc), "liquid.composite_copy");
-    out.color = out.final = fxaa_->add_to(graph, composite, graph.latest(r.color));
+    auto& pass = composite_fxaa_[color_format];  // a pipeline per host format, made once
+    if (!pass) pass = std::make_unique<engine::passes::FxaaPass>(node_.context(), color_format);
+    out.color = out.final = pass->add_to(graph, composite, graph.latest(r.color));
   }
   return out;
 }

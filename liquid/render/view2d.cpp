@@ -3,6 +3,7 @@
 #include "engine/passes/bindings.h"
 #include "engine/passes/fullscreen.h"
 #include "liquid/solver/images.h"
+#include "liquid/solver/mesh_field.h"
 #include "liquid/solver/simulation.h"
 #include "liquid/solver/specialization.h"
 #include "liquid/solver/uniforms.h"
@@ -40,6 +41,15 @@ const LiquidNode& require_2d(const LiquidNode& node) {
   return node;
 }
 
+std::vector<engine::vk::DescriptorBinding> view2d_bindings(bool meshes) {
+  std::vector<engine::vk::DescriptorBinding> bindings{
+      {LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
+      {LIQUID_BINDING_VIEW2D_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
+      {LIQUID_BINDING_VIEW2D_DEPTH, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}};
+  add_mesh_field_binding(meshes, bindings);
+  return bindings;
+}
+
 }  // namespace
 
 View2dLayout fit_view2d(glm::vec2 domain, uint32_t width, uint32_t height) {
@@ -55,6 +65,27 @@ View2dLayout fit_view2d(glm::vec2 domain, uint32_t width, uint32_t height) {
   return layout;
 }
 
+namespace {
+
+// The liquid's pipeline: the whole frame opaque, or a panel blended over the host's pixels (PANEL:
+// the liquid and obstacles alone, with their coverage in alpha; `opaque_in_panel`: the whole view,
+// background and walls too, drawn into the host's rectangle with alpha 1).
+engine::vk::GraphicsPipelineDesc view2d_pipeline_desc(const LiquidNode& node, bool panel, bool opaque_in_panel = false) {
+  const bool blended = panel || opaque_in_panel;
+  return engine::vk::GraphicsPipelineDesc{
+      .name = opaque_in_panel ? "liquid.view2d.opaque_panel" : "liquid.view2d",
+      .vertex = engine::passes::fullscreen_vertex_shader(),
+      .fragment = mesh_variant(has_mesh_obstacles(node.scene()), liquid_shaders::view2d_frag,
+                               liquid_shaders::view2d_frag_mesh),
+      .color_formats = {k_color_format},
+      .blend = {blended ? engine::vk::BlendMode::Alpha : engine::vk::BlendMode::None},
+      .bindings = view2d_bindings(has_mesh_obstacles(node.scene())),
+      .push_constant_size = sizeof(View2dPush),
+      .specialization = view2d_specialization(node, panel)};
+}
+
+}  // namespace
+
 View2dPass::View2dPass(engine::vk::Context& context, const LiquidNode& node, bool panel)
     : node_(require_2d(node)),
       depth_(context, engine::vk::GraphicsPipelineDesc{
@@ -66,17 +97,9 @@ View2dPass::View2dPass(engine::vk::Context& context, const LiquidNode& node, boo
                                        {LIQUID_BINDING_VIEW2D_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
                           .push_constant_size = sizeof(View2dPush),
                           .specialization = scene_specialization(node.scene(), node.simulation().setup())}),
-      liquid_(context, engine::vk::GraphicsPipelineDesc{
-                           .name = "liquid.view2d",
-                           .vertex = engine::passes::fullscreen_vertex_shader(),
-                           .fragment = liquid_shaders::view2d_frag,
-                           .color_formats = {k_color_format},
-                           .blend = {panel ? engine::vk::BlendMode::Alpha : engine::vk::BlendMode::None},
-                           .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
-                                        {LIQUID_BINDING_VIEW2D_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
-                                        {LIQUID_BINDING_VIEW2D_DEPTH, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
-                           .push_constant_size = sizeof(View2dPush),
-                           .specialization = view2d_specialization(node, panel)}),
+      liquid_(context, view2d_pipeline_desc(node, panel)),
+      opaque_panel_(panel ? engine::vk::GraphicsPipeline(context, view2d_pipeline_desc(node, false, true))
+                          : engine::vk::GraphicsPipeline()),
       particles_(context, engine::vk::GraphicsPipelineDesc{
                               .name = "liquid.view2d.particles",
                               .vertex = liquid_shaders::particles2d_vert,
@@ -128,21 +151,23 @@ ImageHandle View2dPass::add_to(engine::graph::RenderGraph& graph, const LiquidIm
                 engine::passes::draw_fullscreen(ctx.cmd);
               })
           .color;
+  const engine::vk::GraphicsPipeline* pipeline = panel && panel->background ? &opaque_panel_ : &liquid_;
   ImageHandle color =
       graph
           .add_pass<Data>(
               "liquid.view2d",
               [&](PassBuilder& b, Data& d) {
-                d.bindings = engine::passes::PassBindings(liquid_);
+                d.bindings = engine::passes::PassBindings(*pipeline);
                 d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, solver);
                 d.bindings.bind_image(b, LIQUID_BINDING_VIEW2D_DENSITY, density, linear_.handle());
                 d.bindings.bind_image(b, LIQUID_BINDING_VIEW2D_DEPTH, depth, linear_.handle());
+                bind_mesh_field(d.bindings, b, images.mesh_field, linear_);
                 d.color = panel ? b.write(panel->color, Access::ColorAttachmentBlend)
                                 : b.write(b.create("liquid.view2d", color_desc), Access::ColorAttachmentWrite);
               },
-              [this, push, area](PassContext& ctx, const Data& d) {
+              [pipeline, push, area](PassContext& ctx, const Data& d) {
                 d.bindings.bind_and_push(ctx);
-                liquid_.push_constants(ctx.cmd, push);
+                pipeline->push_constants(ctx.cmd, push);
                 vkCmdSetScissor(ctx.cmd, 0, 1, &area);
                 engine::passes::draw_fullscreen(ctx.cmd);
               })

@@ -44,6 +44,7 @@ class View2dPass {
   const LiquidNode& node_;
   engine::vk::GraphicsPipeline depth_;   // the depth below the surface, per cell of the grid
   engine::vk::GraphicsPipeline liquid_;
+  engine::vk::GraphicsPipeline opaque_panel_;  // panels only: HostPanel::background, PANEL off, into the rectangle
   engine::vk::GraphicsPipeline particles_;
   engine::vk::Sampler linear_;
   engine::vk::Sampler nearest_;

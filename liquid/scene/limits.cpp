@@ -1,7 +1,9 @@
 #include "liquid/scene/limits.h"
 
+#include "liquid/scene/mesh_check.h"
 #include "shaders/liquid/shared.h"
 
+#include <cmath>
 #include <string>
 
 namespace liquid {
@@ -23,6 +25,20 @@ void check_list_limits(const Scene& scene) {
   for (const Obstacle& o : scene.obstacles) balls += o.balls.size();
   require_at_most(scene, "obstacles", balls, gpu::k_max_balls, " metaballs in all");
   require_at_most(scene, "ground", scene.ground.size(), gpu::k_max_ground_hills);
+  size_t meshes = 0;
+  for (size_t i = 0; i < scene.obstacles.size(); ++i) {
+    if (scene.obstacles[i].shape != ObstacleShape::Mesh) continue;
+    ++meshes;
+    // A file's mesh was checked when read; a host's (built in code) is checked here.
+    const TriangleMesh& mesh = scene.obstacles[i].mesh;
+    if (const std::string problem = mesh_problem(mesh); !problem.empty())
+      throw SceneError((scene.source.empty() ? scene.name : scene.source) + ": obstacles[" + std::to_string(i) +
+                       "]: " + (mesh.file.empty() ? "the host's mesh" : mesh.file) + ": " + problem);
+    if (!(mesh.scale > 0.0f && std::isfinite(mesh.scale)))
+      throw SceneError((scene.source.empty() ? scene.name : scene.source) + ": obstacles[" + std::to_string(i) +
+                       "]: the mesh's scale must be a finite number > 0");
+  }
+  require_at_most(scene, "obstacles", meshes, gpu::k_max_mesh_obstacles, " meshes");
 }
 
 }  // namespace liquid

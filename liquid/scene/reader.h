@@ -33,6 +33,8 @@ inline std::string element(const std::string& path, size_t index) { return path 
 class Reader {
  public:
   explicit Reader(std::string source) : source_(std::move(source)) {}
+  // The scene's file (or parse_scene's source name): files it names are relative to its folder.
+  const std::string& source() const { return source_; }
 
   [[noreturn]] void fail(const std::string& path, const std::string& reason) const {
     throw SceneError(source_ + ": " + path + ": " + reason);

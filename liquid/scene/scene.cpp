@@ -1,9 +1,11 @@
 // The scene's keys: which exist, their units, defaults and allowed ranges (see the README's scene
 // table). JSON syntax and duplicate keys are handled in json.cpp.
 #include "liquid/scene.h"
+#include "liquid/scene/mesh_file.h"
 #include "liquid/scene/reader.h"
 #include "shaders/liquid/shared.h"
 
+#include <algorithm>
 #include <array>
 #include <filesystem>
 
@@ -72,9 +74,20 @@ void read_oscillation(const Reader& r, const Json& value, const std::string& pat
       float(r.number_in(r.require(value, path, "frequency"), child(path, "frequency"), 0.0, k_max_frequency));
 }
 
-// "rotation": {"axis": [x, y, z], "degrees": a}; in 2D about z, so the axis may be left out (and
-// must be along z if given).
-glm::quat read_rotation(const Reader& r, const Json& value, const std::string& path) {
+// "rotation": {"axis": [x, y, z], "degrees": a}, or [x, y, z], degrees about x, then y, then z. A
+// 2D sphere or box turns about z only (the axis may then be left out); a 2D mesh may turn any way,
+// its cross-section at z = 0 follows.
+glm::quat read_rotation(const Reader& r, const Json& value, const std::string& path, bool mesh) {
+  const bool about_z_only = r.dimension() == 2 && !mesh;
+  if (value.is_array()) {
+    const glm::vec3 radians = glm::radians(r.vector(value, path, 3, 360.0));
+    if (about_z_only && (radians.x != 0.0f || radians.y != 0.0f))
+      r.fail(path, "must be [0, 0, degrees] in 2D (a 2D obstacle turns about z)");
+    return glm::angleAxis(radians.z, glm::vec3(0, 0, 1)) * glm::angleAxis(radians.y, glm::vec3(0, 1, 0)) *
+           glm::angleAxis(radians.x, glm::vec3(1, 0, 0));
+  }
+  if (!value.is_object())
+    r.fail(path, std::string("must be {\"axis\", \"degrees\"} or [x, y, z] degrees, got ") + value.type_name());
   r.check_keys(value, path, {"axis", "degrees"});
   const float degrees = float(r.number_in(r.require(value, path, "degrees"), child(path, "degrees"), -360.0, 360.0));
   glm::vec3 axis(0.0f, 0.0f, 1.0f);
@@ -82,9 +95,9 @@ glm::quat read_rotation(const Reader& r, const Json& value, const std::string& p
     axis = r.vector(*v, child(path, "axis"), 3);
     if (!(glm::length(axis) > 0.0f)) r.fail(child(path, "axis"), "must be nonzero");
     axis = glm::normalize(axis);
-    if (r.dimension() == 2 && (axis.x != 0.0f || axis.y != 0.0f))
+    if (about_z_only && (axis.x != 0.0f || axis.y != 0.0f))
       r.fail(child(path, "axis"), "must be [0, 0, 1] in 2D (a 2D obstacle turns about z)");
-  } else if (r.dimension() == 3) {
+  } else if (!about_z_only) {
     r.fail(child(path, "axis"), "missing required key (3D rotations need an axis)");
   }
   return glm::angleAxis(glm::radians(degrees), axis);
@@ -101,8 +114,9 @@ void read_body(const Reader& r, const Json& value, const std::string& path, Obst
     if (density || mass) r.fail(child(path, density ? "density" : "mass"), "only allowed with \"dynamic\": true");
     return;
   }
-  if (obstacle.shape == ObstacleShape::Metaballs)
-    r.fail(child(path, "dynamic"), "metaball obstacles cannot be dynamic (only spheres and boxes)");
+  if (obstacle.shape == ObstacleShape::Metaballs || obstacle.shape == ObstacleShape::Mesh)
+    r.fail(child(path, "dynamic"), std::string(obstacle.shape == ObstacleShape::Mesh ? "mesh" : "metaball") +
+                                       " obstacles cannot be dynamic (only spheres and boxes)");
   if (Reader::find(value, "oscillation")) r.fail(child(path, "oscillation"), "not allowed on a dynamic obstacle (the liquid moves it)");
   if (density && mass) r.fail(child(path, "mass"), "give density or mass, not both");
   if (!density && !mass) r.fail(child(path, "density"), "missing required key (a dynamic obstacle needs density or mass)");
@@ -110,11 +124,28 @@ void read_body(const Reader& r, const Json& value, const std::string& path, Obst
   if (mass) obstacle.mass = float(r.number_in(*mass, child(path, "mass"), 0.0, k_max_body_mass, true));
 }
 
+// A mesh obstacle's file (relative to the scene's folder) and uniform scale (its rotation is the
+// obstacle's, read_rotation()).
+TriangleMesh read_mesh(const Reader& r, const Json& value, const std::string& path) {
+  const std::string file_path = child(path, "file");
+  const std::string file = r.string(r.require(value, path, "file"), file_path);
+  if (file.empty()) r.fail(file_path, "must name a mesh file (OBJ or PLY)");
+  TriangleMesh mesh;
+  try {
+    mesh = load_mesh_file(std::filesystem::path(r.source()).parent_path() / file);
+  } catch (const SceneError& e) {
+    r.fail(file_path, e.what());
+  }
+  if (const Json* v = Reader::find(value, "scale"))
+    mesh.scale = float(r.number_in(*v, child(path, "scale"), 0.0, k_max_length, true));
+  return mesh;
+}
+
 Obstacle read_obstacle(const Reader& r, const Json& value, const std::string& path) {
   if (!value.is_object()) r.fail(path, std::string("must be an object, got ") + value.type_name());
   Obstacle obstacle;
   obstacle.shape = ObstacleShape(r.choice(r.require(value, path, "shape"), child(path, "shape"),
-                                          {"sphere", "box", "metaballs"}));
+                                          {"sphere", "box", "metaballs", "mesh"}));
   switch (obstacle.shape) {
     case ObstacleShape::Sphere:
       r.check_keys(value, path, {"shape", "center", "radius", "velocity", "oscillation", "rotation", "dynamic", "density", "mass"});
@@ -150,11 +181,17 @@ Obstacle read_obstacle(const Reader& r, const Json& value, const std::string& pa
         obstacle.threshold = float(r.number_in(*v, child(path, "threshold"), 0.0, 1.0, true, true));
       break;
     }
+    case ObstacleShape::Mesh:
+      r.check_keys(value, path, {"shape", "center", "file", "rotation", "scale", "velocity", "oscillation"});
+      obstacle.center = r.scene_vector(r.require(value, path, "center"), child(path, "center"));
+      obstacle.mesh = read_mesh(r, value, path);
+      break;
   }
   if (const Json* v = Reader::find(value, "velocity"))
     obstacle.velocity = r.scene_vector(*v, child(path, "velocity"), k_max_speed);
   if (const Json* v = Reader::find(value, "oscillation")) read_oscillation(r, *v, child(path, "oscillation"), obstacle);
-  if (const Json* v = Reader::find(value, "rotation")) obstacle.rotation = read_rotation(r, *v, child(path, "rotation"));
+  if (const Json* v = Reader::find(value, "rotation")) obstacle.rotation = read_rotation(r, *v, child(path, "rotation"), obstacle.shape == ObstacleShape::Mesh);
+  if (obstacle.shape == ObstacleShape::Mesh) obstacle.mesh.rotation = obstacle.rotation;  // voxelized turned
   read_body(r, value, path, obstacle);
   return obstacle;
 }
@@ -297,10 +334,15 @@ void read_contents(const Reader& r, const Json& doc, Scene& scene) {
   scene.obstacles = read_array<Obstacle>(r, doc, "obstacles", read_obstacle);
   // The body reaction pass repeats the chapter's grid update; the splat-adjoint pressure and
   // shallow water's ground term are not in it.
+  // Nor does it read the mesh field: bodies and meshes are not yet in one scene.
+  const bool meshes = std::any_of(scene.obstacles.begin(), scene.obstacles.end(),
+                                  [](const Obstacle& o) { return o.shape == ObstacleShape::Mesh; });
   for (size_t i = 0; i < scene.obstacles.size(); ++i)
-    if (scene.obstacles[i].dynamic && (shallow || scene.pressure_force == PressureForce::SplatAdjoint))
+    if (scene.obstacles[i].dynamic && (shallow || meshes || scene.pressure_force == PressureForce::SplatAdjoint))
       r.fail(element("obstacles", i) + ".dynamic",
-             shallow ? "not available in shallow_water mode" : "needs the chapter's pressure force (\"pressure_force\": \"chapter\")");
+             shallow  ? "not available in shallow_water mode"
+             : meshes ? "not available in a scene with mesh obstacles"
+                      : "needs the chapter's pressure force (\"pressure_force\": \"chapter\")");
   if (!shallow && Reader::find(doc, "ground")) r.fail("ground", "only allowed in shallow_water mode");
   scene.ground = read_array<GroundHill>(r, doc, "ground", read_ground_hill);
   if (const Json* v = Reader::find(doc, "camera")) {

@@ -3,6 +3,7 @@
 #include "engine/passes/bindings.h"
 #include "engine/passes/fullscreen.h"
 #include "liquid/solver/images.h"
+#include "liquid/solver/mesh_field.h"
 #include "liquid/solver/state.h"
 #include "liquid/solver/uniforms.h"
 #include "liquid_shaders.h"
@@ -13,43 +14,46 @@ namespace liquid {
 
 namespace {
 
-std::span<const uint32_t> grid_fragment_shader(const SimulationSetup& setup, const GridLayout& layout) {
+std::span<const uint32_t> grid_fragment_shader(const SimulationSetup& setup, const GridLayout& layout, bool meshes) {
+  using namespace liquid_shaders;
   if (setup.splat_adjoint_pressure)
-    return layout.pick(liquid_shaders::grid_adjoint_frag_2d, liquid_shaders::grid_adjoint_frag_3d,
-                       liquid_shaders::grid_adjoint_frag_3d_atlas);
-  return layout.pick(liquid_shaders::grid_frag_2d, liquid_shaders::grid_frag_3d, liquid_shaders::grid_frag_3d_atlas);
+    return mesh_variant(meshes, layout.pick(grid_adjoint_frag_2d, grid_adjoint_frag_3d, grid_adjoint_frag_3d_atlas),
+                        layout.pick(grid_adjoint_frag_2d_mesh, grid_adjoint_frag_3d_mesh, grid_adjoint_frag_3d_atlas_mesh));
+  return mesh_variant(meshes, layout.pick(grid_frag_2d, grid_frag_3d, grid_frag_3d_atlas),
+                      layout.pick(grid_frag_2d_mesh, grid_frag_3d_mesh, grid_frag_3d_atlas_mesh));
 }
 
-std::vector<engine::vk::DescriptorBinding> grid_bindings(const SimulationSetup& setup) {
+std::vector<engine::vk::DescriptorBinding> grid_bindings(const SimulationSetup& setup, bool meshes) {
   std::vector<engine::vk::DescriptorBinding> bindings{
       {LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
       {LIQUID_BINDING_GRID_SPLAT, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
       {LIQUID_BINDING_BODIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}};
   if (setup.splat_adjoint_pressure)
     bindings.push_back({LIQUID_BINDING_GRID_POTENTIAL, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
+  add_mesh_field_binding(meshes, bindings);
   return bindings;
 }
 
 }  // namespace
 
 GridPass::GridPass(engine::vk::Context& context, const SimulationSetup& setup, const GridLayout& layout,
-                   const std::vector<int32_t>& specialization)
+                   const std::vector<int32_t>& specialization, bool meshes)
     : pipeline_(context,
                 engine::vk::GraphicsPipelineDesc{
                     .name = "liquid.grid",
                     // 3D: every slice is a layer of the target (or a tile of the atlas).
                     .vertex = grid_pass_shaders(layout).vertex,
                     .geometry = grid_pass_shaders(layout).geometry,
-                    .fragment = grid_fragment_shader(setup, layout),
+                    .fragment = grid_fragment_shader(setup, layout, meshes),
                     .color_formats = {k_grid_velocity_format, k_density_format},
-                    .bindings = grid_bindings(setup),
+                    .bindings = grid_bindings(setup, meshes),
                     .specialization = specialization}),
       nearest_(context, VK_FILTER_NEAREST),
       splat_adjoint_(setup.splat_adjoint_pressure) {}
 
 GridImages GridPass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                            ImageHandle splat, ImageHandle bodies, const GridImages& grids,
-                            ImageHandle potential) const {
+                            ImageHandle splat, ImageHandle bodies, const GridImages& grids, ImageHandle potential,
+                            ImageHandle mesh_field) const {
   if (splat_adjoint_ != potential.valid())
     throw std::logic_error(splat_adjoint_ ? "liquid.grid: the splat-adjoint pressure needs the potential image"
                                           : "liquid.grid: a potential image was given to the chapter's grid pass");
@@ -66,6 +70,7 @@ GridImages GridPass::add_to(engine::graph::RenderGraph& graph, const engine::vk:
             d.bindings.bind_image(b, LIQUID_BINDING_GRID_SPLAT, splat, nearest_.handle());
             d.bindings.bind_image(b, LIQUID_BINDING_BODIES, bodies, nearest_.handle());
             if (potential.valid()) d.bindings.bind_image(b, LIQUID_BINDING_GRID_POTENTIAL, potential, nearest_.handle());
+            bind_mesh_field(d.bindings, b, mesh_field, nearest_);
             d.out.velocity = b.write(grids.velocity, Access::ColorAttachmentWrite);
             d.out.density = b.write(grids.density, Access::ColorAttachmentWrite);
           },

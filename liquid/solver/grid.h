@@ -19,17 +19,20 @@ namespace liquid {
 class GridPass {
  public:
   GridPass(engine::vk::Context& context, const SimulationSetup& setup, const GridLayout& layout,
-           const std::vector<int32_t>& specialization);
+           const std::vector<int32_t>& specialization, bool meshes = false);
 
   // Reads `splat` (and, with the splat-adjoint pressure, PressurePass's `potential`) and the body
   // state `bodies` (dynamic obstacles' poses), writes the updated velocity (u', fluid flag) and
-  // rho / rho0 into `grids`.
+  // rho / rho0 into `grids`. With mesh obstacles (`meshes`), reads their field
+  // (liquid/solver/mesh_field.h).
   GridImages add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle splat,
-                    ImageHandle bodies, const GridImages& grids, ImageHandle potential = {}) const;
+                    ImageHandle bodies, const GridImages& grids, ImageHandle potential = {},
+                    ImageHandle mesh_field = {}) const;
 
  private:
   engine::vk::GraphicsPipeline pipeline_;
-  engine::vk::Sampler nearest_;
+  engine::vk::Sampler nearest_;  // also the mesh field's: read at cell centres (a linear sampler made
+                                 // lavapipe's fetches from it four times slower)
   bool splat_adjoint_ = false;
 };
 

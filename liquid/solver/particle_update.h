@@ -18,17 +18,20 @@ namespace liquid {
 
 class ParticleUpdatePass {
  public:
-  ParticleUpdatePass(engine::vk::Context& context, const GridLayout& layout, const std::vector<int32_t>& specialization);
+  // `meshes`: the scene has mesh obstacles, whose field add_to() then reads.
+  ParticleUpdatePass(engine::vk::Context& context, const GridLayout& layout, const std::vector<int32_t>& specialization,
+                     bool meshes = false);
 
   // From `current` into `next` (the other texture of the ping-pong pair), for the rows holding
   // `active_after` particles; `bodies`: the dynamic obstacles' state at the end of the step.
   ParticleImages add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
                         const ParticleImages& current, ImageHandle splat, const GridImages& grids, ImageHandle bodies,
-                        const ParticleImages& next, int active_after) const;
+                        const ParticleImages& next, int active_after, ImageHandle mesh_field = {}) const;
 
  private:
   engine::vk::GraphicsPipeline pipeline_;
   engine::vk::Sampler nearest_;
+  engine::vk::Sampler linear_;  // the mesh field
 };
 
 }  // namespace liquid

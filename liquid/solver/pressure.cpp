@@ -3,6 +3,7 @@
 #include "engine/passes/bindings.h"
 #include "engine/passes/fullscreen.h"
 #include "liquid/solver/images.h"
+#include "liquid/solver/mesh_field.h"
 #include "liquid/solver/uniforms.h"
 #include "liquid_shaders.h"
 
@@ -14,27 +15,35 @@ namespace {
 // uniforms and one sampled grid at `binding`.
 engine::vk::GraphicsPipelineDesc grid_pipeline(const char* name, const GridLayout& layout,
                                                std::span<const uint32_t> fragment, uint32_t binding,
-                                               const std::vector<int32_t>& specialization) {
+                                               const std::vector<int32_t>& specialization, bool meshes = false) {
   const GridPassShaders shaders = grid_pass_shaders(layout);
+  std::vector<engine::vk::DescriptorBinding> bindings{
+      {LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
+      {binding, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}};
+  add_mesh_field_binding(meshes, bindings);
   return engine::vk::GraphicsPipelineDesc{
       .name = name,
       .vertex = shaders.vertex,
       .geometry = shaders.geometry,
       .fragment = fragment,
       .color_formats = {k_pressure_format},
-      .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
-                   {binding, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
+      .bindings = bindings,
       .specialization = specialization};
 }
 
 }  // namespace
 
 PressurePass::PressurePass(engine::vk::Context& context, const GridLayout& layout, SplatMode splat,
-                           const std::vector<int32_t>& specialization)
-    : pressure_(context, grid_pipeline("liquid.pressure", layout,
-                                       layout.pick(liquid_shaders::pressure_frag_2d, liquid_shaders::pressure_frag_3d,
-                                                   liquid_shaders::pressure_frag_3d_atlas),
-                                       LIQUID_BINDING_PRESSURE_SPLAT, specialization)),
+                           const std::vector<int32_t>& specialization, bool meshes)
+    : pressure_(context,
+                grid_pipeline("liquid.pressure", layout,
+                              mesh_variant(meshes,
+                                           layout.pick(liquid_shaders::pressure_frag_2d, liquid_shaders::pressure_frag_3d,
+                                                       liquid_shaders::pressure_frag_3d_atlas),
+                                           layout.pick(liquid_shaders::pressure_frag_2d_mesh,
+                                                       liquid_shaders::pressure_frag_3d_mesh,
+                                                       liquid_shaders::pressure_frag_3d_atlas_mesh)),
+                              LIQUID_BINDING_PRESSURE_SPLAT, specialization, meshes)),
       nearest_(context, VK_FILTER_NEAREST),
       desc_(layout.image_desc(k_pressure_format, 0)) {
   if (splat == SplatMode::Separable)
@@ -48,13 +57,14 @@ PressurePass::PressurePass(engine::vk::Context& context, const GridLayout& layou
 }
 
 ImageHandle PressurePass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                                 ImageHandle splat, ImageHandle& pressure, ImageHandle& potential) const {
+                                 ImageHandle splat, ImageHandle& pressure, ImageHandle& potential,
+                                 ImageHandle mesh_field) const {
   struct Data {
     engine::passes::PassBindings bindings;
     ImageHandle out;
   };
   auto pass = [&](const char* name, const engine::vk::GraphicsPipeline& pipeline, uint32_t binding, ImageHandle input,
-                  ImageHandle output) {
+                  ImageHandle output, ImageHandle field) {
     return graph
         .add_pass<Data>(
             name,
@@ -62,6 +72,7 @@ ImageHandle PressurePass::add_to(engine::graph::RenderGraph& graph, const engine
               d.bindings = engine::passes::PassBindings(pipeline);
               d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
               d.bindings.bind_image(b, binding, input, nearest_.handle());
+              bind_mesh_field(d.bindings, b, field, nearest_);
               d.out = b.write(output, Access::ColorAttachmentWrite);
             },
             [](PassContext& ctx, const Data& d) {
@@ -70,9 +81,9 @@ ImageHandle PressurePass::add_to(engine::graph::RenderGraph& graph, const engine
             })
         .out;
   };
-  pressure = pass("liquid.pressure", pressure_, LIQUID_BINDING_PRESSURE_SPLAT, splat, pressure);
+  pressure = pass("liquid.pressure", pressure_, LIQUID_BINDING_PRESSURE_SPLAT, splat, pressure, mesh_field);
   if (potential_) {
-    potential = pass("liquid.potential", *potential_, LIQUID_BINDING_POTENTIAL_PRESSURE, pressure, potential);
+    potential = pass("liquid.potential", *potential_, LIQUID_BINDING_POTENTIAL_PRESSURE, pressure, potential, {});
     return potential;
   }
   return spread_->add_to(graph, uniforms, pressure, potential);

@@ -29,7 +29,7 @@ constexpr VkFormat k_pressure_format = VK_FORMAT_R32_SFLOAT;
 class PressurePass {
  public:
   PressurePass(engine::vk::Context& context, const GridLayout& layout, SplatMode splat,
-               const std::vector<int32_t>& specialization);
+               const std::vector<int32_t>& specialization, bool meshes = false);
 
   // Grid-sized descriptions of the two intermediate images (the node creates them as transients).
   engine::vk::ImageDesc image_desc() const { return desc_; }
@@ -38,13 +38,13 @@ class PressurePass {
   // their new versions); returns Phi, which is in `potential`, or in `pressure` for the separable
   // splat's spread in 2D (its passes alternate between the two images).
   ImageHandle add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle splat,
-                     ImageHandle& pressure, ImageHandle& potential) const;
+                     ImageHandle& pressure, ImageHandle& potential, ImageHandle mesh_field = {}) const;
 
  private:
   engine::vk::GraphicsPipeline pressure_;
   std::optional<engine::vk::GraphicsPipeline> potential_;  // the point-sprite splat's gather
   std::optional<SeparableBlur> spread_;                     // the separable splat's passes
-  engine::vk::Sampler nearest_;
+  engine::vk::Sampler nearest_;  // also the mesh field's (P reads the obstacles' density at cell centres)
   engine::vk::ImageDesc desc_;
 };
 

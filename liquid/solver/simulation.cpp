@@ -74,9 +74,12 @@ Simulation::Simulation(engine::vk::Context& context, const Scene& scene, const L
     separable_splat_ = std::make_unique<SeparableSplatPass>(context, layout_, splat_format_, specialization);
   else
     splat_ = std::make_unique<SplatPass>(context, setup_, layout_, splat_format_, specialization);
-  grid_ = std::make_unique<GridPass>(context, setup_, layout_, specialization);
-  if (setup_.splat_adjoint_pressure) pressure_ = std::make_unique<PressurePass>(context, layout_, setup_.splat, specialization);
-  particle_update_ = std::make_unique<ParticleUpdatePass>(context, layout_, specialization);
+  const bool meshes = has_mesh_obstacles(scene_);
+  grid_ = std::make_unique<GridPass>(context, setup_, layout_, specialization, meshes);
+  if (setup_.splat_adjoint_pressure)
+    pressure_ = std::make_unique<PressurePass>(context, layout_, setup_.splat, specialization, meshes);
+  particle_update_ = std::make_unique<ParticleUpdatePass>(context, layout_, specialization, meshes);
+  if (meshes) mesh_field_ = std::make_unique<MeshField>(context, scene_, setup_, layout_, specialization);
   const bool dynamic = std::any_of(scene.obstacles.begin(), scene.obstacles.end(), [](const Obstacle& o) { return o.dynamic; });
   if (dynamic) {
     body_grid_ = std::make_unique<BodyGridPass>(context, layout_, specialization);
@@ -127,6 +130,16 @@ void Simulation::set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 vel
     throw std::invalid_argument("liquid: obstacle " + std::to_string(index) +
                                 " is dynamic: the liquid moves it (set_body_force pushes it)");
   pose_overrides_[index] = PoseOverride{center, velocity, time_};
+}
+
+void Simulation::set_mesh_transform(size_t index, glm::quat rotation, float scale) {
+  if (index >= scene_.obstacles.size() || scene_.obstacles[index].shape != ObstacleShape::Mesh)
+    throw std::out_of_range("liquid: obstacle " + std::to_string(index) + " is not a mesh");
+  if (!(scale > 0.0f && std::isfinite(scale))) throw std::invalid_argument("liquid: a mesh's scale must be finite and > 0");
+  if (!(std::isfinite(glm::length(rotation)) && glm::length(rotation) > 0.0f))
+    throw std::invalid_argument("liquid: a mesh's rotation must be a finite, nonzero quaternion");
+  scene_.obstacles[index].mesh.rotation = glm::normalize(rotation);
+  scene_.obstacles[index].mesh.scale = scale;
 }
 
 std::vector<ObstaclePose> Simulation::obstacle_poses(double time) const {
@@ -224,10 +237,17 @@ ImageHandle Simulation::add_splat(engine::graph::RenderGraph& graph, const engin
 
 GridImages Simulation::add_grid(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
                                 ImageHandle splat, ImageHandle bodies, const GridImages& grids,
-                                PressureImages& pressure) const {
-  if (!pressure_) return grid_->add_to(graph, slice, splat, bodies, grids);
-  const ImageHandle potential = pressure_->add_to(graph, slice, splat, pressure.pressure, pressure.potential);
-  return grid_->add_to(graph, slice, splat, bodies, grids, potential);
+                                PressureImages& pressure, ImageHandle mesh_field) const {
+  if (!pressure_) return grid_->add_to(graph, slice, splat, bodies, grids, {}, mesh_field);
+  const ImageHandle potential =
+      pressure_->add_to(graph, slice, splat, pressure.pressure, pressure.potential, mesh_field);
+  return grid_->add_to(graph, slice, splat, bodies, grids, potential, mesh_field);
+}
+
+ImageHandle Simulation::update_mesh_field(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
+                                          const std::vector<ObstaclePose>& poses, ImageHandle field) {
+  if (!mesh_field_) return {};
+  return mesh_field_->update(graph, slice, scene_.obstacles, poses, field);
 }
 
 LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
@@ -248,6 +268,7 @@ LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
   std::array<ImageHandle, 2> bodies;
   for (int i = 0; i < 2; ++i) bodies[i] = graph.import_image(s.bodies[i].name(), s.bodies[i]);
   collect_body_readbacks();
+  ImageHandle mesh_field = mesh_field_ ? mesh_field_->import(graph) : ImageHandle{};
 
   const float dt = float(time_step_);
   for (int k = 0; k < steps; ++k) {
@@ -264,8 +285,10 @@ LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
     const engine::vk::UniformSlice slice = uniforms_->push(uniforms_for(step));
 
     const int cur = s.current, next = 1 - s.current;
+    // The meshes at the end of the step, where the uniforms place every obstacle.
+    mesh_field = update_mesh_field(graph, slice, step.obstacle_poses, mesh_field);
     splat = add_splat(graph, slice, particles[cur], splat, active_);
-    grids = add_grid(graph, slice, splat, bodies[s.body_current], grids, pressure);
+    grids = add_grid(graph, slice, splat, bodies[s.body_current], grids, pressure, mesh_field);
     if (body_integration_) {
       // The liquid's reaction on the bodies at the pose the grid pass used, then their step; the
       // particle pass keeps particles out of where they are at its end.
@@ -280,7 +303,7 @@ LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
       s.body_current = body_next;
     }
     particles[next] = particle_update_->add_to(graph, slice, particles[cur], splat, grids, bodies[s.body_current],
-                                               particles[next], step.active_after);
+                                               particles[next], step.active_after, mesh_field);
     s.current = next;
     active_ = step.active_after;
     time_ = t1;
@@ -292,7 +315,7 @@ LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
     slot.readback = engine::graph::add_readback(graph, bodies[s.body_current], "liquid.bodies_readback");
   }
   return {particles[s.current].positions, particles[s.current].velocities, splat, grids.velocity, grids.density,
-          bodies[s.body_current]};
+          bodies[s.body_current], mesh_field};
 }
 
 LiquidImages Simulation::add_grids_to(engine::graph::RenderGraph& graph, const LiquidImages& images) {
@@ -306,9 +329,13 @@ LiquidImages Simulation::add_grids_to(engine::graph::RenderGraph& graph, const L
   const ParticleImages particles{images.positions, images.velocities};
   const ImageHandle splat = add_splat(graph, slice, particles, images.splat, active_);
   PressureImages pressure = create_pressure_images(graph);
-  const GridImages grids =
-      add_grid(graph, slice, splat, images.bodies, GridImages{images.grid_velocity, images.density}, pressure);
-  return {images.positions, images.velocities, splat, grids.velocity, grids.density, images.bodies};
+  // The field add_to() imported into this graph (a second import would lose its state).
+  ImageHandle mesh_field = images.mesh_field;
+  if (mesh_field_ && !mesh_field.valid()) throw std::invalid_argument("liquid: add_grids_to needs the images of add_to()");
+  mesh_field = update_mesh_field(graph, slice, step.obstacle_poses, mesh_field);
+  const GridImages grids = add_grid(graph, slice, splat, images.bodies, GridImages{images.grid_velocity, images.density},
+                                    pressure, mesh_field);
+  return {images.positions, images.velocities, splat, grids.velocity, grids.density, images.bodies, mesh_field};
 }
 
 Checkpoint Simulation::save_checkpoint() {

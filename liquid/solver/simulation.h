@@ -15,6 +15,7 @@
 #include "liquid/solver/body_integration.h"
 #include "liquid/solver/body_reaction.h"
 #include "liquid/solver/grid.h"
+#include "liquid/solver/mesh_field.h"
 #include "liquid/solver/particle_update.h"
 #include "liquid/solver/pressure.h"
 #include "liquid/solver/separable_splat.h"
@@ -49,9 +50,11 @@ class Simulation {
   double adapt_time_step(const Diagnostics& d);  // by liquid/physics/time_step.h's CFL conditions
   void set_time_step(double dt);
   void set_brushes(std::vector<ForceBrush> brushes) { brushes_ = std::move(brushes); }
+  const std::vector<ForceBrush>& brushes() const { return brushes_; }
   RuntimeParameters runtime_parameters() const { return {setup_.gravity, setup_.pic_ratio, setup_.stiffness}; }
   void set_runtime_parameters(const RuntimeParameters& parameters);
   void set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity);
+  void set_mesh_transform(size_t index, glm::quat rotation, float scale);
   std::vector<ObstaclePose> obstacle_poses(double time) const;
   void set_body_force(size_t index, glm::vec3 force, glm::vec3 torque);
   std::vector<BodyState> read_bodies();
@@ -82,6 +85,8 @@ class Simulation {
   uint64_t frames_declared() const { return frames_declared_; }
   // The state textures (particles, splat, grids).
   LiquidState& state() { return *state_; }
+  // The mesh obstacles' field (null without meshes).
+  MeshField* mesh_field() { return mesh_field_.get(); }
 
  private:
   // Refuses a checkpoint whose values no run reaches (std::invalid_argument naming the value).
@@ -96,11 +101,14 @@ class Simulation {
   ImageHandle add_splat(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
                         const ParticleImages& particles, ImageHandle splat, int active) const;
   GridImages add_grid(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice, ImageHandle splat,
-                      ImageHandle bodies, const GridImages& grids, PressureImages& pressure) const;
+                      ImageHandle bodies, const GridImages& grids, PressureImages& pressure, ImageHandle mesh_field) const;
   // The index of a dynamic obstacle, or std::out_of_range / std::invalid_argument naming it.
   size_t dynamic_obstacle(size_t index) const;
   // Keeps the newest per-frame read-back of the body state that has completed (latest_bodies()).
   void collect_body_readbacks();
+  // The mesh field for obstacles at `poses` (voxelized again when a mesh moved); invalid without meshes.
+  ImageHandle update_mesh_field(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
+                                const std::vector<ObstaclePose>& poses, ImageHandle field);
   // make_uniforms() with the grid layout's atlas tiles.
   gpu::SolverUniforms uniforms_for(const StepInputs& step) const;
   // This step's emission ranges, advancing the emitters' counts.
@@ -120,6 +128,7 @@ class Simulation {
   std::unique_ptr<BodyGridPass> body_grid_;                // only with dynamic obstacles
   std::unique_ptr<BodyReactionPass> body_reaction_;
   std::unique_ptr<BodyIntegrationPass> body_integration_;
+  std::unique_ptr<MeshField> mesh_field_;  // only with mesh obstacles
   std::unique_ptr<LiquidState> state_;
   std::unique_ptr<engine::vk::UniformArena> uniforms_;
   std::unique_ptr<engine::vk::UniformArena> grid_uniforms_;  // add_grids_to()'s block, one per frame

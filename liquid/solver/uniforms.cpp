@@ -22,6 +22,7 @@ int obstacle_kind_code(ObstacleShape shape) {
     case ObstacleShape::Sphere: return gpu::k_obstacle_sphere;
     case ObstacleShape::Box: return gpu::k_obstacle_box;
     case ObstacleShape::Metaballs: return gpu::k_obstacle_metaballs;
+    case ObstacleShape::Mesh: return gpu::k_obstacle_mesh;
   }
   return gpu::k_obstacle_sphere;
 }
@@ -92,6 +93,7 @@ gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& set
         g.ball_count = int(o.balls.size());
         for (const Metaball& m : o.balls) u.balls[ball++] = glm::vec4(m.center, m.radius);
         break;
+      case ObstacleShape::Mesh: break;  // its distance is the mesh field's (liquid/solver/mesh_field.h)
     }
   }
   for (size_t i = 0; i < scene.ground.size(); ++i) {

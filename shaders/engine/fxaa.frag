@@ -77,7 +77,20 @@ void main() {
   float l_min = min(l_center, min(min(l_down, l_up), min(l_left, l_right)));
   float l_max = max(l_center, max(max(l_down, l_up), max(l_left, l_right)));
   float range = l_max - l_min;
-  if (range < max(pc.edge_threshold_min, l_max * pc.edge_threshold)) {
+  bool edge = range >= max(pc.edge_threshold_min, l_max * pc.edge_threshold);
+#if MARK
+  // The first of the two passes: every pixel keeps its own colour, and the depth marks the quads
+  // that hold an edge (1) or none (0). The second pass (this shader without MARK) draws at depth 0
+  // with the test LESS, so the early depth test drops the rest before the search runs: lavapipe
+  // skips a 4x4 block whose pixels all fail it. Whole quads are marked, so the second pass's quad
+  // derivatives always have their four pixels.
+  float edge_mark = edge ? 1.0 : 0.0;
+  float edge_mark_y = across_y(edge_mark, side);
+  out_color = center_color;
+  gl_FragDepth = max(max(edge_mark, across_x(edge_mark, side)), max(edge_mark_y, across_x(edge_mark_y, side)));
+  return;
+#endif
+  if (!edge) {
     out_color = center_color;
     return;
   }

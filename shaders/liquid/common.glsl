@@ -193,12 +193,99 @@ vec3 obstacle_velocity_at(int index, vec3 p) {
   return f.velocity + cross(f.angular_velocity, p - f.center);
 }
 
-// Only a box turns its distance with its orientation (a sphere's does not change, and metaballs
-// take no rotation), so the others skip the quaternion.
-float obstacle_distance(int index, vec3 p) {
+// Mesh obstacles (MESH_FIELD=1, the passes of scenes with meshes): their signed distance, built on
+// the grid by the rasterizer (liquid/solver/mesh_field.h), one channel per mesh in scene order,
+// exact within obstacle_band + LIQUID_MESH_FIELD_MARGIN_CELLS cells of the surface, clamped beyond.
+// A pass reads every mesh's distance at a point with one lookup (MeshSample) before its loop over
+// the obstacles: a texture lookup inside that loop keeps lavapipe from unrolling it (the kinds are
+// then no longer constants, and the 3D grid pass ran ten times slower).
+#ifndef MESH_FIELD
+#define MESH_FIELD 0
+#endif
+#if MESH_FIELD
+layout(set = 0, binding = LIQUID_BINDING_MESH_FIELD) uniform GRID_SAMPLER u_mesh_field;
+#endif
+
+// Every mesh's distance (m) at a point and, where asked, its gradient (unnormalised). Plain
+// members, no array: lavapipe keeps an array of a struct in memory, not in registers.
+struct MeshSample {
+  vec4 distance;
+  vec4 gradient_x, gradient_y, gradient_z;
+};
+
+// Channel `slot` of v, by selects (an index into a vector can also be lowered to memory).
+float channel(vec4 v, int slot) { return slot == 0 ? v.x : slot == 1 ? v.y : slot == 2 ? v.z : v.w; }
+
+// The channel of obstacle `index`: how many meshes come before it (constant once specialized;
+// written out rather than as a loop, which nested in the obstacle loops kept lavapipe from
+// unrolling them).
+int mesh_before(int index, int j, int kind) { return j < index && kind == LIQUID_OBSTACLE_MESH ? 1 : 0; }
+int mesh_slot(int index) {
+  return mesh_before(index, 0, OBSTACLE_KIND_0) + mesh_before(index, 1, OBSTACLE_KIND_1) +
+         mesh_before(index, 2, OBSTACLE_KIND_2) + mesh_before(index, 3, OBSTACLE_KIND_3) +
+         mesh_before(index, 4, OBSTACLE_KIND_4) + mesh_before(index, 5, OBSTACLE_KIND_5) +
+         mesh_before(index, 6, OBSTACLE_KIND_6);
+}
+
+#if MESH_FIELD
+// Trilinear between cell centres (bilinear in 2D).
+vec4 mesh_field_at(vec3 p) {
+  vec3 uvw = p / (vec3(grid_cells()) * cell_size());
+#if DIM == 2
+  return textureLod(u_mesh_field, uvw.xy, 0.0);
+#elif ATLAS
+  return atlas_sample_linear(u_mesh_field, uvw, grid_cells(), atlas_tiles());
+#else
+  return textureLod(u_mesh_field, uvw, 0.0);
+#endif
+}
+#endif
+
+// At any point (the particle pass): filtered, the gradient by central differences a quarter cell apart.
+MeshSample mesh_sample(vec3 p, bool with_gradient) {
+  MeshSample m;
+  m.distance = vec4(LIQUID_MESH_FAR);
+  m.gradient_x = m.gradient_y = m.gradient_z = vec4(0.0);
+#if MESH_FIELD
+  m.distance = mesh_field_at(p);
+  if (with_gradient) {
+    float e = 0.25 * cell_size();
+    m.gradient_x = mesh_field_at(p + vec3(e, 0.0, 0.0)) - mesh_field_at(p - vec3(e, 0.0, 0.0));
+    m.gradient_y = mesh_field_at(p + vec3(0.0, e, 0.0)) - mesh_field_at(p - vec3(0.0, e, 0.0));
+#if DIM == 3
+    m.gradient_z = mesh_field_at(p + vec3(0.0, 0.0, e)) - mesh_field_at(p - vec3(0.0, 0.0, e));
+#endif
+  }
+#endif
+  return m;
+}
+
+// At cell c's centre (the grid passes): the texel itself, the gradient a cell either side.
+MeshSample mesh_sample_at_cell(ivec3 c, bool with_gradient) {
+  MeshSample m;
+  m.distance = vec4(LIQUID_MESH_FAR);
+  m.gradient_x = m.gradient_y = m.gradient_z = vec4(0.0);
+#if MESH_FIELD
+  m.distance = fetch_grid(u_mesh_field, c);
+  if (with_gradient) {
+    m.gradient_x = fetch_grid(u_mesh_field, c + ivec3(1, 0, 0)) - fetch_grid(u_mesh_field, c - ivec3(1, 0, 0));
+    m.gradient_y = fetch_grid(u_mesh_field, c + ivec3(0, 1, 0)) - fetch_grid(u_mesh_field, c - ivec3(0, 1, 0));
+#if DIM == 3
+    m.gradient_z = fetch_grid(u_mesh_field, c + ivec3(0, 0, 1)) - fetch_grid(u_mesh_field, c - ivec3(0, 0, 1));
+#endif
+  }
+#endif
+  return m;
+}
+
+// Signed distance of obstacle `index` at p; a mesh's from `meshes` (sampled at p). Only a box
+// turns its distance with its orientation (a sphere's does not change, metaballs take no rotation,
+// a mesh is voxelized turned), so the others skip the quaternion.
+float obstacle_distance(int index, vec3 p, MeshSample meshes) {
   Obstacle o = u.obstacles[index];
   vec3 offset = obstacle_offset(index, p);
   int kind = obstacle_kind(index);
+  if (kind == LIQUID_OBSTACLE_MESH) return channel(meshes.distance, mesh_slot(index));
   if (kind == LIQUID_OBSTACLE_SPHERE) return length(offset) - o.sphere_radius;
   if (kind == LIQUID_OBSTACLE_BOX) {
     vec3 local = quat_rotate_inverse(obstacle_frame(index).orientation, offset);  // the box's own frame
@@ -211,21 +298,39 @@ float obstacle_distance(int index, vec3 p) {
   return sd_metaballs(offset, o);
 }
 
-// Outward normal: exact for a sphere, by central differences for the other kinds.
-vec3 obstacle_normal(int index, vec3 p) {
+// The analytic shapes' alone (a mesh is far: the views draw meshes another way).
+float obstacle_distance(int index, vec3 p) {
+  MeshSample none;
+  none.distance = vec4(LIQUID_MESH_FAR);
+  return obstacle_distance(index, p, none);
+}
+
+// Outward normal: exact for a sphere, a mesh's from its gradient in `meshes`, by central
+// differences for the other kinds.
+vec3 obstacle_normal(int index, vec3 p, MeshSample meshes) {
+  vec3 n;
   if (obstacle_kind(index) == LIQUID_OBSTACLE_SPHERE) {
-    vec3 offset = obstacle_offset(index, p);
-    float len = length(offset);
-    return len > 1e-12 ? offset / len : vec3(0.0, 1.0, 0.0);
-  }
-  float e = 0.25 * cell_size();
-  vec3 n = vec3(obstacle_distance(index, p + vec3(e, 0, 0)) - obstacle_distance(index, p - vec3(e, 0, 0)),
-                obstacle_distance(index, p + vec3(0, e, 0)) - obstacle_distance(index, p - vec3(0, e, 0)), 0.0);
+    n = obstacle_offset(index, p);
+  } else if (obstacle_kind(index) == LIQUID_OBSTACLE_MESH) {
+    int slot = mesh_slot(index);
+    n = vec3(channel(meshes.gradient_x, slot), channel(meshes.gradient_y, slot), channel(meshes.gradient_z, slot));
+  } else {
+    float e = 0.25 * cell_size();
+    n = vec3(obstacle_distance(index, p + vec3(e, 0, 0)) - obstacle_distance(index, p - vec3(e, 0, 0)),
+             obstacle_distance(index, p + vec3(0, e, 0)) - obstacle_distance(index, p - vec3(0, e, 0)), 0.0);
 #if DIM == 3
-  n.z = obstacle_distance(index, p + vec3(0, 0, e)) - obstacle_distance(index, p - vec3(0, 0, e));
+    n.z = obstacle_distance(index, p + vec3(0, 0, e)) - obstacle_distance(index, p - vec3(0, 0, e));
 #endif
+  }
   float len = length(n);
   return len > 1e-12 ? n / len : vec3(0.0, 1.0, 0.0);
+}
+
+vec3 obstacle_normal(int index, vec3 p) {
+  MeshSample none;
+  none.distance = vec4(LIQUID_MESH_FAR);
+  none.gradient_x = none.gradient_y = none.gradient_z = vec4(0.0);
+  return obstacle_normal(index, p, none);
 }
 
 // Artificial obstacle density (section 6): rho0 at the surface, rising linearly inside and falling
@@ -236,15 +341,20 @@ vec3 obstacle_normal(int index, vec3 p) {
 // no-inflow condition and the particle pass hold the liquid at its surface instead
 // (docs/physics.md, "Bodies that float", with the drafts measured each way).
 // `excluded`: an obstacle left out (the body grid pass's liquid without that body), or -1.
-float obstacle_density(vec3 p, int excluded) {
+float obstacle_density(vec3 p, MeshSample meshes, int excluded) {
   float band = u.obstacle_band;
   float total = 0.0;
   [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
     if (i == excluded || obstacle_dynamic(i)) continue;
-    float d = obstacle_distance(i, p);
+    float d = obstacle_distance(i, p, meshes);
     total += clamp(1.0 - d / band, 0.0, 2.0);
   }
   return total * u.rest_density;
+}
+
+// At cell c's centre (the grid passes), the meshes' field read there.
+float obstacle_density_at_cell(ivec3 c, int excluded) {
+  return obstacle_density(cell_center(c), mesh_sample_at_cell(c, false), excluded);
 }
 
 // Shallow water (section 6, figure 4): ground height b(x, y) in metres; read as extra density

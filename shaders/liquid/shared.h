@@ -21,6 +21,7 @@
 #define LIQUID_OBSTACLE_SPHERE 0
 #define LIQUID_OBSTACLE_BOX 1
 #define LIQUID_OBSTACLE_METABALLS 2
+#define LIQUID_OBSTACLE_MESH 3        // a triangle mesh voxelized into the mesh field each step it moves
 // Added to a kind for a dynamic obstacle (a rigid body the liquid moves): its pose is read from the
 // body-state texture, not from the uniform block (obstacle_frame() in common.glsl).
 #define LIQUID_OBSTACLE_DYNAMIC 8
@@ -40,6 +41,17 @@
 // The reaction pass's two targets (one texel per obstacle): force (N) and torque (N m).
 #define LIQUID_BODY_REACTION_FORCE 0
 #define LIQUID_BODY_REACTION_TORQUE 1
+
+// Mesh obstacles: each has one channel of the mesh field (RGBA), so at most four per scene.
+#define LIQUID_MAX_MESH_OBSTACLES 4
+// The mesh field holds the signed distance (m) within this many cells beyond the obstacle band
+// (obstacle_band + this * h); further out it is clamped there. The grid pass's density needs the
+// band and its normal a quarter cell more (obstacle_normal's central differences). The band pass's
+// cost grows with the cube of the whole band.
+#define LIQUID_MESH_FIELD_MARGIN_CELLS 0.5
+// The band pass's cleared value and what its fragments leave in the other meshes' channels (MIN
+// blending keeps the smaller); above any band, within half precision.
+#define LIQUID_MESH_FAR 1.0e4
 
 // ---- Descriptor bindings (set 0, push descriptors) ----------------------------------------------
 // Every pipeline that includes common.glsl has the solver's uniform block at binding 0.
@@ -70,6 +82,12 @@
 #define LIQUID_BINDING_BODY_GRID_VELOCITY 6
 #define LIQUID_BINDING_BODY_FORCE 1
 #define LIQUID_BINDING_BODY_TORQUE 2
+// The mesh obstacles' signed distance field (the MESH_FIELD variants of the grid, pressure and
+// particle passes and of the 2D view), and the passes that build it (liquid/solver/mesh_field.h).
+#define LIQUID_BINDING_MESH_FIELD 7  // past the bodies' 5 and 6
+#define LIQUID_BINDING_MESH_TRIANGLES 1     // mesh_raster.vert, mesh_draw.vert: the triangles' corners
+#define LIQUID_BINDING_MESH_INSIDE 1        // mesh_field.frag: the signed crossing counts
+#define LIQUID_BINDING_MESH_BAND 2          // mesh_field.frag: the unsigned narrow-band distance
 // Views.
 #define LIQUID_BINDING_VIEW_UNIFORMS 1      // raymarch, height field: the view's own block
 #define LIQUID_BINDING_VIEW2D_DENSITY 1
@@ -109,6 +127,9 @@ constexpr int k_obstacle_box = LIQUID_OBSTACLE_BOX;
 constexpr int k_obstacle_metaballs = LIQUID_OBSTACLE_METABALLS;
 constexpr int k_obstacle_dynamic = LIQUID_OBSTACLE_DYNAMIC;
 constexpr int k_body_texels = LIQUID_BODY_TEXELS;
+constexpr int k_obstacle_mesh = LIQUID_OBSTACLE_MESH;
+constexpr int k_max_mesh_obstacles = LIQUID_MAX_MESH_OBSTACLES;
+constexpr float k_mesh_field_margin_cells = float(LIQUID_MESH_FIELD_MARGIN_CELLS);
 }  // namespace liquid::gpu
 #define LIQUID_STRUCT(name) struct alignas(16) name
 #define LIQUID_ALIGN16 alignas(16)
@@ -189,6 +210,26 @@ LIQUID_STRUCT(SolverUniforms) {
   Brush brushes[LIQUID_MAX_BRUSHES];
   EmitterRange emitters[LIQUID_MAX_EMITTERS];
   Body bodies[LIQUID_MAX_OBSTACLES];
+};
+
+// The textures of a mesh's triangles (3 texels per triangle: its corners in the mesh's frame) are
+// this many texels wide.
+#define LIQUID_MESH_TRIANGLE_TEXTURE_WIDTH 1024
+
+// The mesh passes' push constants (liquid/solver/mesh_field.cpp, shaders/liquid/solver/mesh_raster.vert).
+LIQUID_PUSH(MeshRasterPush) {
+  mat4 local_to_world;     // the mesh's transform: centre + rotation * scale * vertex
+  int slot;                // the mesh field's channel
+  int first_slice;         // the inside pass: the lowest slice drawn (instance 0)
+  int unused;
+  float band;              // m: the band pass covers the cells within it of each triangle
+};
+
+// Drawing a mesh obstacle into the 3D view (liquid/render/mesh_draw.h): 128 bytes, lavapipe's limit.
+LIQUID_PUSH(MeshDrawPush) {
+  mat4 view_projection;
+  vec4 model_rows[3];      // the mesh's transform, the first three rows of its affine matrix
+  vec4 sun_direction;      // xyz toward the sun
 };
 
 #ifdef __cplusplus

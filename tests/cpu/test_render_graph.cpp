@@ -153,6 +153,39 @@ TEST_CASE("transfer source after sampling transitions the layout and waits for t
   CHECK(b->dst_stages == VK_PIPELINE_STAGE_2_COPY_BIT);
 }
 
+TEST_CASE("a depth attachment with a stencil takes the combined layout, so the stencil is kept", "[graph]") {
+  for (const auto& [format, layout] :
+       {std::pair{VK_FORMAT_D32_SFLOAT, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL},
+        std::pair{VK_FORMAT_D24_UNORM_S8_UINT, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL},
+        std::pair{VK_FORMAT_D32_SFLOAT_S8_UINT, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL}}) {
+    INFO("format " << int(format));
+    RenderGraph graph;
+    const ImageSyncState host_wrote = ImageSyncState::after_write(
+        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    ImageHandle depth = graph.import_image("depth", ImageDesc{ImageKind::Image2D, 64, 64, 1, format, 0}, host_wrote);
+    graph.add_pass("test", [&](PassBuilder& b) { depth = b.write(depth, Access::DepthAttachmentWrite, {LoadOp::Load, {}}); },
+                   no_record);
+    const BarrierPlan* b = find_barrier(graph.compile(), "test", "depth");
+    REQUIRE(b);
+    CHECK(b->old_layout == VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);  // loaded: contents kept
+    CHECK(b->new_layout == layout);
+    CHECK(access_layout(Access::DepthAttachmentWrite, format) == layout);
+  }
+}
+
+TEST_CASE("attachments of different sample counts in one pass are refused", "[graph]") {
+  RenderGraph graph;
+  ImageDesc multisampled = color_desc();
+  multisampled.samples = VK_SAMPLE_COUNT_4_BIT;
+  ImageHandle single = graph.create_image("single", color_desc());
+  ImageHandle msaa = graph.create_image("msaa", multisampled);
+  graph.add_pass("mixed", [&](PassBuilder& b) {
+    single = b.write(single, Access::ColorAttachmentWrite);
+    msaa = b.write(msaa, Access::ColorAttachmentWrite);
+  }, no_record);
+  CHECK_THROWS_WITH(graph.compile(), Catch::Contains("mixed") && Catch::Contains("msaa") && Catch::Contains("sample count"));
+}
+
 TEST_CASE("3D images render into all their slices as layers", "[graph]") {
   RenderGraph graph;
   ImageHandle volume = graph.create_image("volume", ImageDesc{ImageKind::Image3D, 16, 8, 12, VK_FORMAT_R32G32B32A32_SFLOAT, 0});

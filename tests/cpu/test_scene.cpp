@@ -23,7 +23,7 @@ const std::vector<std::string> k_shipped_scenes = {
     "paper_2d_64k.json", "paper_3d.json",     "shallow_water.json", "obstacles_2d.json",
     "rest_pool_2d.json", "symmetric_2d.json", "small_3d.json",      "jet_2d.json",
     "column_2d.json",    "column_3d.json",    "dam_break_tank_2d.json", "floating_box_2d.json",
-    "floating_boxes_3d.json"};
+    "floating_boxes_3d.json", "mesh_pool_3d.json"};
 
 // A small valid 2D scene; each malformed case changes one thing.
 Json valid_2d() {

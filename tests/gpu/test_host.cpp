@@ -17,6 +17,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <array>
+#include <atomic>
 #include <cstring>
 #include <optional>
 #include <memory>
@@ -27,6 +28,22 @@ using engine::vk::ImageKind;
 using engine::vk::ImageSyncState;
 
 namespace {
+
+// A host's flat-shaded octahedron: per face its three corners (counter-clockwise seen from
+// outside) with the face's normal, as a vertex buffer for drawing holds them.
+std::vector<std::pair<glm::vec3, glm::vec3>> octahedron_corners(float radius) {
+  const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  std::vector<std::pair<glm::vec3, glm::vec3>> corners;
+  for (int sx = 0; sx < 2; ++sx)
+    for (int sy = 2; sy < 4; ++sy)
+      for (int sz = 4; sz < 6; ++sz) {
+        glm::vec3 a = axes[sx], b = axes[sy], c = axes[sz];
+        if (glm::dot(glm::cross(b - a, c - a), a + b + c) < 0.0f) std::swap(b, c);
+        const glm::vec3 normal = glm::normalize(a + b + c);
+        for (const glm::vec3& p : {a, b, c}) corners.emplace_back(p * radius, normal);
+      }
+  return corners;
+}
 
 constexpr uint32_t k_width = 160;
 constexpr uint32_t k_height = 120;
@@ -39,14 +56,15 @@ constexpr std::array<uint8_t, 4> k_magenta{255, 0, 255, 255};
 
 // The host's targets: VkImages with memory of their own (HostImage), wrapped for the graph.
 struct HostTargets {
-  explicit HostTargets(engine::vk::Context& context, VkFormat color_format = liquid::k_color_format)
+  explicit HostTargets(engine::vk::Context& context, VkFormat color_format = liquid::k_color_format,
+                       VkFormat depth_format = liquid::k_depth_format)
       : color_image(context.physical_device(), context.device(), k_width, k_height, color_format, k_color_usage),
-        depth_image(context.physical_device(), context.device(), k_width, k_height, liquid::k_depth_format, k_depth_usage),
+        depth_image(context.physical_device(), context.device(), k_width, k_height, depth_format, k_depth_usage),
         color(Image::wrap(context, color_image.image,
                           ImageDesc{ImageKind::Image2D, k_width, k_height, 1, color_format, k_color_usage},
                           "host.color", {})),
         depth(Image::wrap(context, depth_image.image,
-                          ImageDesc{ImageKind::Image2D, k_width, k_height, 1, liquid::k_depth_format, k_depth_usage},
+                          ImageDesc{ImageKind::Image2D, k_width, k_height, 1, depth_format, k_depth_usage},
                           "host.depth", {})) {}
   HostImage color_image, depth_image;
   Image color, depth;
@@ -70,15 +88,18 @@ void to_transfer(VkCommandBuffer cmd, Image& image, VkImageLayout layout, VkAcce
   vkCmdPipelineBarrier2(cmd, &dependency);
 }
 
+// What the host keeps in its stencil (depth formats with one): the liquid must leave it as it was.
+constexpr uint8_t k_host_stencil = 0x5a;
+
 // The host's own pass, outside the graph: the colour cleared to magenta, the depth to 1 (the far
-// plane). Leaves both as transfer writes.
+// plane), the stencil to k_host_stencil. Leaves both as transfer writes.
 void host_clear(VkCommandBuffer cmd, HostTargets& t, float far_depth = 1.0f) {
   to_transfer(cmd, t.color, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_ACCESS_2_TRANSFER_WRITE_BIT, false);
   to_transfer(cmd, t.depth, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_ACCESS_2_TRANSFER_WRITE_BIT, false);
   const VkClearColorValue magenta{{1.0f, 0.0f, 1.0f, 1.0f}};
   const VkImageSubresourceRange color_range = t.color.full_range();
   vkCmdClearColorImage(cmd, t.color.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &magenta, 1, &color_range);
-  const VkClearDepthStencilValue far{far_depth, 0};
+  const VkClearDepthStencilValue far{far_depth, k_host_stencil};
   const VkImageSubresourceRange depth_range = t.depth.full_range();
   vkCmdClearDepthStencilImage(cmd, t.depth.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &far, 1, &depth_range);
   t.color.sync_state() = ImageSyncState::after_write(VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
@@ -97,14 +118,15 @@ std::vector<float> banded_depth(const std::vector<std::array<float, 3>>& bands, 
 }
 
 // The host reads an image back with its own copy, from the layout and access the graph left.
-std::vector<std::byte> host_read(engine::vk::Context& context, Image& image, uint32_t texel_bytes) {
+std::vector<std::byte> host_read(engine::vk::Context& context, Image& image, uint32_t texel_bytes,
+                                 std::optional<VkImageAspectFlags> aspect = std::nullopt) {
   engine::vk::Buffer buffer(context, VkDeviceSize(k_width) * k_height * texel_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                             engine::vk::MemoryUsage::HostVisible, "host.readback");
   engine::vk::CommandBuffer cmd(context);
   VkCommandBuffer c = cmd.begin();
   to_transfer(c, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_2_TRANSFER_READ_BIT, true);
   VkBufferImageCopy region{};
-  region.imageSubresource = {image.aspect(), 0, 0, 1};
+  region.imageSubresource = {aspect.value_or(image.aspect()), 0, 0, 1};
   region.imageExtent = {k_width, k_height, 1};
   vkCmdCopyImageToBuffer(c, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer.handle(), 1, &region);
   cmd.submit_and_wait();
@@ -118,7 +140,8 @@ std::vector<std::byte> host_read(engine::vk::Context& context, Image& image, uin
 struct Composite {
   engine::vk::Rgba8Image color;  // the raw texels for 4-byte formats
   std::vector<std::byte> color_bytes;
-  std::vector<float> depth;
+  std::vector<float> depth;     // 0..1, from any depth format
+  std::vector<uint8_t> stencil;  // formats with a stencil
   ImageSyncState color_state;  // where the graph left the host's colour
 };
 
@@ -139,7 +162,7 @@ struct FrameOptions {
 Composite composite_frame(liquid::LiquidNode& node, HostTargets& targets, int steps, const FrameOptions& o = {},
                           engine::graph::ImageHandle* final_color = nullptr,
                           engine::graph::ImageHandle* imported_color = nullptr) {
-  engine::vk::Context& context = test::gpu();
+  engine::vk::Context& context = node.context();
   liquid::LiquidRenderer renderer(context, node,
                                   {.width = k_width, .height = k_height, .fxaa = o.fxaa, .composite = true,
                                    .exposure = o.exposure});
@@ -170,9 +193,22 @@ Composite composite_frame(liquid::LiquidNode& node, HostTargets& targets, int st
   out.color_bytes = rgba;
   out.color = {k_width, k_height, std::vector<uint8_t>(size_t(k_width) * k_height * 4)};
   std::memcpy(out.color.pixels.data(), rgba.data(), std::min(rgba.size(), out.color.pixels.size()));
+  // Depth aspects copy out as 4 bytes a texel: a float, or D24's unsigned 24 bits in the low bytes.
+  const VkFormat depth_format = targets.depth.desc().format;
   const std::vector<std::byte> d = host_read(context, targets.depth, 4);
   out.depth.resize(size_t(k_width) * k_height);
   std::memcpy(out.depth.data(), d.data(), out.depth.size() * sizeof(float));
+  if (depth_format == VK_FORMAT_D24_UNORM_S8_UINT)
+    for (size_t i = 0; i < out.depth.size(); ++i) {
+      uint32_t bits = 0;
+      std::memcpy(&bits, &d[i * 4], 4);
+      out.depth[i] = float(bits & 0xffffffu) / float(0xffffffu);
+    }
+  if (engine::vk::has_stencil(depth_format)) {
+    const std::vector<std::byte> st = host_read(context, targets.depth, 1, VK_IMAGE_ASPECT_STENCIL_BIT);
+    out.stencil.resize(out.depth.size());
+    std::memcpy(out.stencil.data(), st.data(), out.stencil.size());
+  }
   return out;
 }
 
@@ -207,6 +243,49 @@ TEST_CASE("a host's own device is adopted, not owned, and runs the node with zer
   }
   // The context is gone; the host's device is still the host's to use and destroy.
   CHECK(vkDeviceWaitIdle(host.device) == VK_SUCCESS);
+}
+
+TEST_CASE("torn down in the documented order, the library leaves nothing alive on the host's device", "[host]") {
+  // The host's messenger outlives its device, so an object left alive is reported at vkDestroyDevice.
+  std::atomic<uint32_t> host_messages{0};
+  uint32_t library_messages = 0;
+  {
+    HostVulkan host(/*validation=*/true, &host_messages);
+    engine::vk::Context context(host.host_device(), engine::vk::ContextOptions{.print_validation_messages = false});
+    {
+      HostTargets targets(context);  // the host's images and their wrappers
+      liquid::LiquidNode node(context, test::shipped_scene("small_3d"), {.frames_in_flight = 2});
+      liquid::LiquidRenderer renderer(context, node, {.width = k_width, .height = k_height, .composite = true});
+      engine::graph::RenderGraph graph(&context);
+      engine::vk::CommandBuffer cmd(context);
+      for (int frame = 0; frame < 2; ++frame) {
+        graph.reset();
+        VkCommandBuffer c = cmd.begin();
+        host_clear(c, targets);
+        const liquid::LiquidImages images = node.add_to(graph, 2);
+        renderer.add_to(graph, images, liquid::default_camera(node),
+                        {graph.import_image("host.color", targets.color), graph.import_image("host.depth", targets.depth)});
+        graph.compile();
+        graph.execute(c);
+        cmd.submit_and_wait();
+      }
+      CHECK(node.diagnose().non_finite == 0);
+      // Destroyed in reverse: command buffer and graph, renderer, node, then the host's images.
+    }
+    library_messages = context.validation_message_count();
+  }  // the context, then the host's device and instance
+  CHECK(library_messages == 0u);
+  CHECK(host_messages.load() == 0u);
+
+  // The check can fail: a sampler left alive on a host's device is reported when it is destroyed.
+  std::atomic<uint32_t> leak_messages{0};
+  {
+    HostVulkan host(/*validation=*/true, &leak_messages);
+    VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    VkSampler leaked = VK_NULL_HANDLE;
+    REQUIRE(vkCreateSampler(host.device, &info, nullptr, &leaked) == VK_SUCCESS);
+  }
+  CHECK(leak_messages.load() > 0u);
 }
 
 TEST_CASE("options that choose or create a device are refused for a host's device, naming the option", "[host]") {
@@ -289,9 +368,9 @@ TEST_CASE("the liquid composites into a host's own images, which the host reads 
 
 TEST_CASE("FXAA is off by default when compositing, and when on it writes into the host's colour target", "[host]") {
   auto frame = [](std::optional<bool> fxaa, engine::graph::ImageHandle* final_color = nullptr,
-                  engine::graph::ImageHandle* imported = nullptr) {
+                  engine::graph::ImageHandle* imported = nullptr, VkFormat format = liquid::k_color_format) {
     liquid::LiquidNode node(test::gpu(), test::shipped_scene("small_3d"));
-    HostTargets targets(test::gpu());
+    HostTargets targets(test::gpu(), format);
     return composite_frame(node, targets, k_composite_steps, {.fxaa = fxaa}, final_color, imported);
   };
   const Composite off = frame(false);
@@ -308,6 +387,18 @@ TEST_CASE("FXAA is off by default when compositing, and when on it writes into t
   INFO(changed << " pixels smoothed of " << liquid_pixels << " liquid pixels");
   CHECK(changed > 0);                     // edges were smoothed in the host's image
   CHECK(changed < liquid_pixels);         // and only edges
+  // The other display-referred formats too, each with a pipeline of its own.
+  for (const VkFormat format : {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_A2B10G10R10_UNORM_PACK32}) {
+    INFO("format " << int(format));
+    const Composite plain = frame(false, nullptr, nullptr, format);
+    const Composite smoothed = frame(true, nullptr, nullptr, format);
+    size_t format_changed = 0;
+    for (size_t p = 0; p < size_t(k_width) * k_height; ++p)
+      format_changed += std::memcmp(&plain.color.pixels[p * 4], &smoothed.color.pixels[p * 4], 4) != 0;
+    INFO(format_changed << " pixels smoothed");
+    CHECK(format_changed > 0);
+    CHECK(format_changed < liquid_pixels);
+  }
   REQUIRE_NO_VALIDATION_MESSAGES();
 
   // A host colour target that cannot be copied from is refused before anything runs.
@@ -321,6 +412,11 @@ TEST_CASE("FXAA is off by default when compositing, and when on it writes into t
                                     import("host.depth", liquid::k_depth_format, k_depth_usage)};
   CHECK_THROWS_WITH(renderer.add_to(graph, node.add_to(graph, 1), liquid::default_camera(node), targets),
                     Catch::Contains("host.color") && Catch::Contains("VK_IMAGE_USAGE_TRANSFER_SRC_BIT"));
+  // FXAA before a host's tone map is refused: it is for display-referred colour.
+  const liquid::HostTargets hdr{import("host.hdr", VK_FORMAT_R16G16B16A16_SFLOAT, k_color_usage),
+                                import("host.depth", liquid::k_depth_format, k_depth_usage)};
+  CHECK_THROWS_WITH(renderer.add_to(graph, node.add_to(graph, 0), liquid::default_camera(node), hdr),
+                    Catch::Contains("host.hdr") && Catch::Contains("tone map"));
 }
 
 namespace {
@@ -581,7 +677,235 @@ TEST_CASE("the liquid composites into the host's colour formats: UNORM, sRGB, 10
                     Catch::Contains("host.color") && Catch::Contains("does not composite into"));
 }
 
-TEST_CASE("a 2D liquid composites with alpha into a rectangle of the host's target", "[host]") {
+TEST_CASE("a composited liquid filters the host's colour per channel with dual-source blending, by one grey "
+          "transmittance without it", "[host]") {
+  // Over the host's magenta (as much red as blue), water absorbs red first: what shows through it
+  // is bluer, channel by channel, where the device blends with two sources.
+  auto blue_over_red = [](engine::vk::Context& context, size_t& liquid) {
+    liquid::LiquidNode node(context, test::shipped_scene("small_3d"));
+    HostTargets targets(context);
+    const Composite f = composite_frame(node, targets, k_composite_steps, {});
+    double red = 0.0, blue = 0.0;
+    liquid = 0;
+    for (size_t i = 0; i < size_t(k_width) * k_height; ++i)
+      if (!is_magenta(f.color, i)) {
+        red += f.color.pixels[i * 4];
+        blue += f.color.pixels[i * 4 + 2];
+        ++liquid;
+      }
+    return blue / std::max(red, 1.0);
+  };
+  engine::vk::Context& context = test::gpu();
+  REQUIRE(context.supports_dual_source_blend());  // lavapipe has dualSrcBlend
+  size_t tinted_pixels = 0, grey_pixels = 0;
+  const double tinted = blue_over_red(context, tinted_pixels);
+  engine::vk::ContextOptions options{.validation = true};
+  options.enable_features = [](engine::vk::DeviceFeatures& enable, const engine::vk::DeviceFeatures&) {
+    enable.core.features.dualSrcBlend = VK_FALSE;
+  };
+  engine::vk::Context without(options);
+  CHECK_FALSE(without.supports_dual_source_blend());
+  const double grey = blue_over_red(without, grey_pixels);
+  INFO("blue / red over the liquid: " << tinted << " per channel, " << grey << " grey; " << tinted_pixels << " and "
+                                      << grey_pixels << " liquid pixels");
+  CHECK(tinted_pixels > 500);
+  CHECK(grey_pixels == tinted_pixels);  // the same coverage either way
+  CHECK(tinted > 1.3 * grey);
+  CHECK(without.validation_message_count() == 0u);
+  REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("the liquid composites against the host's depth formats and leaves their stencil as it was, and "
+          "refuses multisampled targets", "[host]") {
+  engine::vk::Context& context = test::gpu();
+  liquid::LiquidNode probe(context, test::shipped_scene("small_3d"));
+  const float fov = glm::radians(liquid::default_camera(probe).fov_y_degrees);
+  const float aspect = float(k_width) / float(k_height);
+  for (const bool reversed : {false, true}) {
+    const liquid::HostView view =
+        reversed ? host_view(probe, reversed_infinite(fov, aspect, 0.05f), true)
+                 : host_view(probe, flip_y(glm::perspectiveRH_ZO(fov, aspect, 0.05f, 40.0f)), false);
+    const float far_depth = reversed ? 0.0f : 1.0f;
+    auto frame = [&](VkFormat depth_format, float clear_depth) {
+      liquid::LiquidNode node(context, test::shipped_scene("small_3d"));
+      HostTargets targets(context, liquid::k_color_format, depth_format);
+      return composite_frame(node, targets, k_composite_steps, {.views = {view}, .far_depth = clear_depth});
+    };
+    const Composite reference = frame(VK_FORMAT_D32_SFLOAT, far_depth);
+    size_t liquid = 0;
+    for (size_t i = 0; i < size_t(k_width) * k_height; ++i) liquid += !is_magenta(reference.color, i);
+    REQUIRE(liquid > 500);
+    for (const VkFormat format : {VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D32_SFLOAT_S8_UINT}) {
+      INFO("depth format " << int(format) << (reversed ? ", reversed Z" : ", forward Z"));
+      if (!context.format_supports(format, VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT)) {
+        WARN("the device has no depth attachment of format " << int(format));
+        continue;
+      }
+      const Composite f = frame(format, far_depth);
+      size_t differ = 0, stencil_changed = 0;
+      float depth_error = 0.0f;
+      for (size_t i = 0; i < size_t(k_width) * k_height; ++i) {
+        differ += std::memcmp(&f.color.pixels[i * 4], &reference.color.pixels[i * 4], 4) != 0;
+        depth_error = std::max(depth_error, std::abs(f.depth[i] - reference.depth[i]));
+        stencil_changed += f.stencil[i] != k_host_stencil;
+      }
+      // The same picture and depth (D24 rounds to 2^-24), and the host's stencil untouched.
+      INFO(differ << " pixels differ from D32_SFLOAT's, largest depth difference " << depth_error << ", "
+                  << stencil_changed << " stencil values changed");
+      CHECK(differ == 0);
+      CHECK(depth_error < 1e-6f);
+      CHECK(stencil_changed == 0);
+      // The depth test is on: host depth at the near plane everywhere hides all the liquid.
+      const Composite hidden = frame(format, reversed ? 1.0f : 0.0f);
+      size_t shown = 0;
+      for (size_t i = 0; i < size_t(k_width) * k_height; ++i) shown += !is_magenta(hidden.color, i);
+      CHECK(shown == 0);
+    }
+  }
+  REQUIRE_NO_VALIDATION_MESSAGES();
+
+  // Multisampled targets are refused in one line naming the target: the host resolves first.
+  liquid::LiquidNode node(context, test::shipped_scene("small_3d"));
+  liquid::LiquidRenderer renderer(context, node, {.width = k_width, .height = k_height, .composite = true});
+  engine::graph::RenderGraph graph(&context);
+  ImageDesc msaa_color{ImageKind::Image2D, k_width, k_height, 1, liquid::k_color_format, k_color_usage};
+  msaa_color.samples = VK_SAMPLE_COUNT_4_BIT;
+  const liquid::HostTargets multisampled{
+      graph.import_image("host.msaa_color", msaa_color, {}),
+      graph.import_image("host.depth", ImageDesc{ImageKind::Image2D, k_width, k_height, 1, liquid::k_depth_format, k_depth_usage}, {})};
+  CHECK_THROWS_WITH(renderer.add_to(graph, node.add_to(graph, 0), liquid::default_camera(node), multisampled),
+                    Catch::Contains("host.msaa_color") && Catch::Contains("4 samples") && Catch::Contains("resolved"));
+  const liquid::HostTargets odd_depth{
+      graph.import_image("host.color", ImageDesc{ImageKind::Image2D, k_width, k_height, 1, liquid::k_color_format, k_color_usage}, {}),
+      graph.import_image("host.d16", ImageDesc{ImageKind::Image2D, k_width, k_height, 1, VK_FORMAT_D16_UNORM, k_depth_usage}, {})};
+  CHECK_THROWS_WITH(renderer.add_to(graph, node.add_to(graph, 0), liquid::default_camera(node), odd_depth),
+                    Catch::Contains("host.d16") && Catch::Contains("does not test against"));
+}
+
+TEST_CASE("a node's placement maps world positions, velocities and brushes into the liquid and back, and places "
+          "the composite", "[host]") {
+  engine::vk::Context& context = test::gpu();
+  liquid::Scene scene = test::shipped_scene("small_3d");
+  liquid::Obstacle ball;
+  ball.center = 0.5f * scene.domain;
+  ball.radius = 0.1f * scene.domain.y;
+  scene.obstacles.push_back(ball);
+  liquid::LiquidNode node(context, scene);
+  const liquid::Placement placement{.translation = {12.0f, -3.0f, 40.0f},
+                                    .rotation = glm::angleAxis(0.7f, glm::normalize(glm::vec3(0.3f, 1.0f, 0.2f))),
+                                    .scale = 2.5f};
+  node.set_placement(placement);
+  const glm::vec3 liquid_point{0.1f, 0.05f, 0.08f}, liquid_velocity{0.3f, -0.2f, 0.1f};
+  const glm::vec3 world_point = placement.point_to_world(liquid_point);
+  CHECK(glm::length(glm::vec3(placement.world_from_liquid() * glm::vec4(liquid_point, 1.0f)) - world_point) < 1e-4f);
+  CHECK(glm::length(placement.point_to_liquid(world_point) - liquid_point) < 1e-5f);
+
+  // An obstacle placed in world coordinates lands in the liquid's frame, and reads back either way.
+  node.set_obstacle_pose(0, world_point, placement.vector_to_world(liquid_velocity), liquid::Frame::World);
+  const liquid::ObstaclePose in_liquid = node.obstacle_poses(node.time())[0];
+  CHECK(glm::length(in_liquid.center - liquid_point) < 1e-5f);
+  CHECK(glm::length(in_liquid.velocity - liquid_velocity) < 1e-5f);
+  const liquid::ObstaclePose in_world = node.obstacle_poses(node.time(), liquid::Frame::World)[0];
+  CHECK(glm::length(in_world.center - world_point) < 1e-4f);
+  // A brush in world units: its radius and acceleration scale with the placement.
+  node.set_brushes({{.position = world_point, .radius = 0.25f, .acceleration = placement.vector_to_world({0, 5, 0})}},
+                   liquid::Frame::World);
+  const liquid::ForceBrush brush = node.simulation().brushes().at(0);
+  CHECK(glm::length(brush.position - liquid_point) < 1e-5f);
+  CHECK(brush.radius == Approx(0.1f));
+  CHECK(glm::length(brush.acceleration - glm::vec3(0, 5, 0)) < 1e-4f);
+  node.set_brushes({});
+  // Particles read back in the world are the liquid's, placed.
+  const liquid::ParticleSnapshot own = node.read_particles();
+  const liquid::ParticleSnapshot world = node.read_particles(liquid::Frame::World);
+  REQUIRE(own.positions.size() == world.positions.size());
+  float worst = 0.0f;
+  for (size_t i = 0; i < own.positions.size(); ++i) {
+    worst = std::max(worst, glm::length(glm::vec3(world.positions[i]) - placement.point_to_world(glm::vec3(own.positions[i]))));
+    worst = std::max(worst, glm::length(glm::vec3(world.velocities[i]) - placement.vector_to_world(glm::vec3(own.velocities[i]))));
+  }
+  CHECK(worst < 1e-4f);
+
+  // A placement that is not a rotation, translation and positive uniform scale is refused.
+  CHECK_THROWS_WITH(node.set_placement({.scale = 0.0f}), Catch::Contains("scale"));
+  CHECK_THROWS_WITH(node.set_placement({.rotation = glm::quat(2.0f, 0.0f, 0.0f, 0.0f)}), Catch::Contains("unit quaternion"));
+  CHECK_THROWS_WITH(node.set_placement({.translation = {std::nanf(""), 0.0f, 0.0f}}), Catch::Contains("non-finite"));
+
+  // A HostView without a model draws with the node's placement: the same picture as the model given.
+  const glm::mat4 model = placement.world_from_liquid();
+  liquid::LiquidNode probe(context, test::shipped_scene("small_3d"));
+  const float fov = glm::radians(liquid::default_camera(probe).fov_y_degrees);
+  liquid::HostView view = host_view(probe, flip_y(glm::perspectiveRH_ZO(fov, float(k_width) / float(k_height), 0.05f, 400.0f)), false);
+  view.view = view.view * glm::inverse(model);
+  auto frame = [&](bool placed, std::optional<glm::mat4> view_model) {
+    liquid::LiquidNode n(context, test::shipped_scene("small_3d"));
+    if (placed) n.set_placement(placement);
+    HostTargets targets(context);
+    liquid::HostView v = view;
+    v.model = view_model;
+    return composite_frame(n, targets, k_composite_steps, {.views = {v}});
+  };
+  const Composite explicit_model = frame(false, model);
+  const Composite from_node = frame(true, std::nullopt);
+  // The node keeps its rotation normalized, so the two matrices may differ in the last bits.
+  size_t liquid = 0;
+  const size_t differ = differing_pixels(explicit_model.color, from_node.color, liquid);
+  INFO(differ << " of " << liquid << " liquid pixels differ");
+  CHECK(liquid > 500);
+  CHECK(differ <= liquid / 100);
+  REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("a host samples the node's density outside the graph, from the state the graph leaves it in", "[host]") {
+  engine::vk::Context& context = test::gpu();
+  for (const char* name : {"dam_break_2d", "small_3d"}) {
+    INFO(name);
+    liquid::LiquidNode node(context, test::shipped_scene(name));
+    engine::vk::Image& density = node.density_image();
+    const ImageDesc& d = density.desc();
+    CHECK(d.format == VK_FORMAT_R16_SFLOAT);
+    CHECK(density.sampled_view() != VK_NULL_HANDLE);
+    engine::vk::Buffer buffer(context, VkDeviceSize(d.width) * d.height * d.depth_or_layers * 2,
+                              VK_BUFFER_USAGE_TRANSFER_DST_BIT, engine::vk::MemoryUsage::HostVisible, "host.density");
+    for (int frame = 0; frame < 2; ++frame) {
+      engine::graph::RenderGraph graph(&context);
+      node.add_to(graph, 2);
+      graph.compile();
+      engine::vk::CommandBuffer cmd(context);
+      VkCommandBuffer c = cmd.begin();
+      graph.execute(c);
+      // The host's own use, in the same command buffer: from where the graph left the density.
+      to_transfer(c, density, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_2_TRANSFER_READ_BIT, true);
+      VkBufferImageCopy region{};
+      region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+      region.imageExtent = {d.width, d.height, d.kind == ImageKind::Image3D ? d.depth_or_layers : 1};
+      vkCmdCopyImageToBuffer(c, density.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer.handle(), 1, &region);
+      density.sync_state() = ImageSyncState::after_read(VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                                        VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+      cmd.submit_and_wait();
+      buffer.invalidate();
+      // What the host copied is the node's own read-back of the same state, in the same texel order
+      // (a 3D image here: the test device has a geometry-shader path).
+      REQUIRE(node.grid_path() != liquid::GridPath::Atlas);
+      const std::vector<float> expected = node.read_density_ratio();
+      const auto* halves = static_cast<const uint16_t*>(buffer.mapped());
+      REQUIRE(expected.size() == size_t(d.width) * d.height * d.depth_or_layers);
+      size_t differ = 0;
+      double total = 0.0;
+      for (size_t i = 0; i < expected.size(); ++i) {
+        const float got = glm::unpackHalf1x16(halves[i]);
+        differ += got != expected[i];
+        total += got;
+      }
+      CHECK(differ == 0);
+      CHECK(total > 1.0);
+    }
+  }
+  // The node's graphs ran after the host's own reads, from the state it recorded: no hazard.
+  REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("a 2D liquid composites with alpha into a rectangle of the host's target, with or without its background", "[host]") {
   engine::vk::Context& context = test::gpu();
   const VkRect2D rect{{90, 10}, {64, 48}};
   // The host's target, cleared to magenta, with the panel drawn into its corner.
@@ -642,6 +966,43 @@ TEST_CASE("a 2D liquid composites with alpha into a rectangle of the host's targ
   CHECK(inside_liquid > 100);
   CHECK(inside_clear > 100);  // no background: the host's pixels show where there is no liquid
   CHECK(matching > inside_liquid * 8 / 10);
+
+  // With the background: the whole rectangle is the opaque view (its letterbox, background and
+  // walls too), and still nothing changes outside it.
+  {
+    engine::graph::RenderGraph with_background(&context);
+    engine::vk::CommandBuffer background_cmd(context);
+    VkCommandBuffer c = background_cmd.begin();
+    host_clear(c, targets);
+    panel_renderer.add_to(with_background, node.add_to(with_background, 0),
+                          liquid::HostPanel{with_background.import_image("host.color", targets.color), rect, true});
+    with_background.compile();
+    with_background.execute(c);
+    background_cmd.submit_and_wait();
+  }
+  const std::vector<std::byte> opaque_bytes = host_read(context, targets.color, 4);
+  size_t opaque_outside_changed = 0, opaque_inside = 0, opaque_matching = 0;
+  for (uint32_t y = 0; y < k_height; ++y)
+    for (uint32_t x = 0; x < k_width; ++x) {
+      const size_t i = size_t(y) * k_width + x;
+      const bool inside = x >= uint32_t(rect.offset.x) && x < uint32_t(rect.offset.x) + rect.extent.width &&
+                          y >= uint32_t(rect.offset.y) && y < uint32_t(rect.offset.y) + rect.extent.height;
+      const auto* texel = reinterpret_cast<const uint8_t*>(&opaque_bytes[i * 4]);
+      const bool magenta = std::memcmp(texel, k_magenta.data(), 4) == 0;
+      if (!inside) {
+        opaque_outside_changed += !magenta;
+        continue;
+      }
+      ++opaque_inside;
+      const size_t j = (size_t(y) - rect.offset.y) * rect.extent.width + (x - rect.offset.x);
+      bool same = !magenta;
+      for (int ch = 0; ch < 3; ++ch) same = same && std::abs(int(texel[ch]) - int(opaque.pixels[j * 4 + ch])) <= 8;
+      opaque_matching += same;
+    }
+  INFO(opaque_matching << " of " << opaque_inside << " panel pixels as in the opaque view with the background, "
+                       << opaque_outside_changed << " changed outside");
+  CHECK(opaque_outside_changed == 0);
+  CHECK(opaque_matching > opaque_inside * 95 / 100);
   REQUIRE_NO_VALIDATION_MESSAGES();
   // A rectangle outside the target is refused in one line.
   engine::graph::RenderGraph refused(&context);
@@ -766,4 +1127,50 @@ TEST_CASE("a context the library creates takes a host's extra extensions, featur
   options.queue_family_filter = nullptr;
   options.device_extensions = {"VK_NO_such_extension"};
   CHECK_THROWS_WITH(engine::vk::Context(options), Catch::Contains("VK_NO_such_extension"));
+}
+
+TEST_CASE("a host's own mesh, from its interleaved vertex buffer, is an obstacle it moves and turns each frame",
+          "[gpu][liquid][mesh][host]") {
+  engine::vk::Context& context = test::gpu();
+  liquid::Scene scene = liquid::parse_scene(R"({ "name": "host mesh", "dimension": 3, "domain": [0.3, 0.24, 0.2],
+    "grid_resolution": 15, "particle_spacing": 0.01, "stiffness": 9.8, "kernel_radius_cells": 3, "time_step": 0.0004,
+    "substeps": 5, "fluid_blocks": [ { "min": [0.0, 0.0, 0.0], "max": [0.3, 0.08, 0.2] } ] })", "host_mesh.json");
+  // A host's interleaved vertices: float3 position first, then whatever else (here a float3 normal).
+  struct Vertex {
+    glm::vec3 position;
+    glm::vec3 normal;
+  };
+  std::vector<Vertex> vertices;   // the mesh's own frame, metres
+  std::vector<uint32_t> indices;  // three per triangle, counter-clockwise seen from outside
+  for (const auto& [position, normal] : octahedron_corners(0.04f)) {
+    indices.push_back(uint32_t(vertices.size()));
+    vertices.push_back({position, normal});
+  }
+  scene.obstacles.push_back(liquid::mesh_obstacle(std::as_bytes(std::span(vertices)), sizeof(Vertex), indices,
+                                                  glm::vec3(0.15f, 0.17f, 0.1f), "boat"));
+  liquid::LiquidNode node(context, scene);
+  const size_t boat = scene.obstacles.size() - 1;
+  CHECK(node.scene().obstacles[boat].mesh.vertices.size() == 6);  // the split corners merged
+  engine::graph::RenderGraph graph(&context);
+  engine::vk::CommandBuffer cmd(context);
+  for (int frame = 0; frame < 4; ++frame) {
+    const glm::vec3 center(0.1f + 0.02f * float(frame), 0.17f, 0.1f);
+    const glm::vec3 velocity(0.02f / float(node.substeps() * node.time_step()), 0.0f, 0.0f);
+    const glm::quat rotation = glm::angleAxis(0.3f * float(frame), glm::vec3(0.0f, 1.0f, 0.0f));
+    // Each frame, before add_to(): where it is, how fast its centre moves, and its own turn and scale.
+    node.set_obstacle_pose(boat, center, velocity);
+    node.set_mesh_transform(boat, rotation, 1.0f);
+    graph.reset();
+    node.add_to(graph, node.substeps());
+    graph.compile();
+    graph.execute(cmd.begin());
+    cmd.submit_and_wait();
+  }
+  // Moved every step: voxelized every step.
+  CHECK(node.simulation().mesh_field()->voxelizations() == 4 * node.substeps());
+  CHECK_THROWS_AS(node.set_mesh_transform(boat + 1, glm::quat(1, 0, 0, 0), 1.0f), std::out_of_range);  // no such obstacle
+  CHECK_THROWS_AS(node.set_mesh_transform(boat, glm::quat(1, 0, 0, 0), 0.0f), std::invalid_argument);
+  const liquid::Diagnostics d = node.diagnose();
+  CHECK(d.inside_obstacles == 0);
+  REQUIRE_NO_VALIDATION_MESSAGES_ON(context);
 }

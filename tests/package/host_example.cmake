@@ -23,7 +23,8 @@ set(scene "${prefix}/${CMAKE_INSTALL_DATADIR}/rasterliquids/scenes/dam_break_3d.
 if(NOT EXISTS "${scene}")
   message(FATAL_ERROR "the install holds no shipped scenes: ${scene} is missing")
 endif()
-# 8 frames of 10 steps (0.18 s) of the 3D dam break at 160x120: the front reaches the box.
-run("${example_build}/liquid_host" "${scene}" --frames 8 --steps-per-frame 10
-    --width 160 --height 120 --out "${frames}" --validation)
+# 8 frames of 10 steps (0.18 s) of the 3D dam break at 160x120: the front reaches the box; the
+# 2D dam break in the corner panel.
+run("${example_build}/liquid_host" "${scene}" --panel "${prefix}/${CMAKE_INSTALL_DATADIR}/rasterliquids/scenes/dam_break_2d.json"
+    --frames 8 --steps-per-frame 10 --width 160 --height 120 --out "${frames}" --validation)
 run("${COMPARE}" "${frames}/frame_0007.png" host_example)

@@ -20,7 +20,7 @@ const std::vector<std::string>& pipeline_order() {
       "liquid.splat_spread_z", "liquid.pressure",       "liquid.potential",      "liquid.potential_x",
       "liquid.potential_y",    "liquid.potential_z",    "liquid.grid",           "liquid.particle",
       "liquid.occupancy",      "liquid.raymarch",       "liquid.view2d",         "liquid.height_field",
-      "fxaa"};
+      "fxaa.mark",             "fxaa"};
   return order;
 }
 

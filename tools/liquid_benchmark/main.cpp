@@ -284,6 +284,8 @@ int main(int argc, char** argv) {
                      "plain name; default point_sprite,separable, a mode this build's scenes lack being skipped")
           ->delimiter(',');
   std::string viewer_path;
+  app.add_flag("--composite", o.composite,
+               "also composite paper_3d into host targets of each colour and depth format (composite/*)");
   auto* viewer = app.add_option("--viewer", viewer_path,
                                 "also time liquid_viewer on dam_break_2d and dam_break_3d (configurations viewer/...): "
                                 "its frame rate at --width x --height under an Xvfb of its own; no value: the "

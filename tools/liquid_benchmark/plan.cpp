@@ -170,6 +170,34 @@ std::vector<Configuration> viewer_configurations(const Options& o) {
   return out;
 }
 
+// paper_3d's raymarch composited into a host's targets of each format the library takes, RGBA8 +
+// D32 first (the path before other formats existed), with the library's camera and no FXAA.
+std::vector<Configuration> composite_configurations(const Options& o) {
+  struct Target {
+    const char* label;
+    VkFormat color, depth;
+  };
+  const Target targets[] = {
+      {"rgba8_unorm+d32", VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D32_SFLOAT},
+      {"bgra8_srgb+d32", VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_D32_SFLOAT},
+      {"a2b10g10r10+d32", VK_FORMAT_A2B10G10R10_UNORM_PACK32, VK_FORMAT_D32_SFLOAT},
+      {"rgba16f+d32", VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_D32_SFLOAT},
+      {"b10g11r11+d32", VK_FORMAT_B10G11R11_UFLOAT_PACK32, VK_FORMAT_D32_SFLOAT},
+      {"rgba8_unorm+d24s8", VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D24_UNORM_S8_UINT},
+      {"rgba8_unorm+d32s8", VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D32_SFLOAT_S8_UINT},
+  };
+  std::vector<Configuration> out;
+  for (const Target& t : targets) {
+    Configuration c = make_configuration(std::string("composite/") + t.label, "composite", "paper_3d",
+                                         load_named_scene(o, "paper_3d"), Mode::SimulationAndRender, o.runs);
+    c.composite_color = t.color;
+    c.composite_depth = t.depth;
+    c.note = "paper_3d composited into host targets (library camera, FXAA off)";
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
 // Simulation only, from paper_2d_64k: particle count 16k..256k on its 256^2 grid, then grid
 // 128^2..1024^2 at 64k particles (the 256^2 point is shared with the first curve).
 std::vector<Configuration> scaling_configurations(const Options& o) {
@@ -219,6 +247,10 @@ Plan make_plan(const Options& o) {
   if (!o.no_scaling) {
     auto scaling = scaling_configurations(o);
     all.insert(all.end(), scaling.begin(), scaling.end());
+  }
+  if (o.composite && !o.scaling_only) {
+    auto composite = composite_configurations(o);
+    all.insert(all.end(), composite.begin(), composite.end());
   }
   if (o.viewer && !o.scaling_only) {
     auto viewer = viewer_configurations(o);

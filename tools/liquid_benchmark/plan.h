@@ -9,6 +9,7 @@
 #include "liquid/solver/grid_layout.h"
 
 #include <glm/glm.hpp>
+#include <vulkan/vulkan.h>
 
 #include <cstdint>
 #include <filesystem>
@@ -41,6 +42,9 @@ struct Options {
   // "paper_2d_64k:<mode>/sim" except the chapter's point_sprite, which keeps the plain name.
   std::vector<std::string> splat_modes = {"point_sprite", "separable"};
   bool splat_modes_given = false;  // asked for on the command line: a mode that cannot run is an error
+  // --composite: paper_3d's raymarch composited into host targets of each colour and depth format,
+  // as configurations "composite/<colour>+<depth>" (their first is today's RGBA8 + D32 path).
+  bool composite = false;
   // --viewer: liquid_viewer's frame rate on the dam breaks, as configurations "viewer/<scene>".
   std::optional<std::filesystem::path> viewer;
   int viewer_frames = 0;  // per viewer run; 0: 60 in 2D, 20 in 3D
@@ -66,6 +70,9 @@ struct Configuration {
   std::optional<liquid::GridPath> grid_path;  // 3D: the path forced by --3d-path
   std::string splat_mode;                     // paper_* rows: the splat mode it runs; else empty
   std::filesystem::path scene_file;           // group "viewer": the file liquid_viewer opens
+  // Group "composite": the host targets' formats the liquid is composited into.
+  VkFormat composite_color = VK_FORMAT_UNDEFINED;
+  VkFormat composite_depth = VK_FORMAT_UNDEFINED;
 };
 
 // Something the plan leaves out, and why (printed, and kept in the JSON's "skipped").

@@ -4,6 +4,8 @@
 
 #include "tools/common/frame_loop.h"
 
+#include "engine/vk/image.h"
+
 #include "liquid/camera.h"
 #include "liquid/node.h"
 #include "liquid/renderer.h"
@@ -12,6 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <memory>
+#include <optional>
 
 namespace tools::benchmark {
 
@@ -63,17 +66,35 @@ struct Bench {
                  .frames_in_flight = 1, .max_steps_per_frame = o.steps_per_frame, .grid_path = c.grid_path}),
         loop(context) {
     if (c.mode == Mode::SimulationAndRender) {
+      const bool composite = c.group == "composite";
       renderer = std::make_unique<liquid::LiquidRenderer>(
-          context, node, liquid::RenderSettings{.width = o.width, .height = o.height, .fxaa = true});
+          context, node,
+          liquid::RenderSettings{.width = o.width, .height = o.height, .fxaa = !composite, .composite = composite});
       camera = liquid::default_camera(node);
+      if (composite) {
+        using engine::vk::ImageDesc;
+        host_color.emplace(context,
+                           ImageDesc{engine::vk::ImageKind::Image2D, o.width, o.height, 1, c.composite_color,
+                                     VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT},
+                           "host.color");
+        host_depth.emplace(context,
+                           ImageDesc{engine::vk::ImageKind::Image2D, o.width, o.height, 1, c.composite_depth,
+                                     VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT},
+                           "host.depth");
+      }
     }
   }
 
-  // One frame: the solver's steps, then the rendering if any.
+  // One frame: the solver's steps, then the rendering if any (into the host's targets when
+  // compositing).
   tools::FrameTime frame() {
     return loop.run([&](engine::graph::RenderGraph& graph) {
       const liquid::LiquidImages images = node.add_to(graph, steps);
-      if (renderer) renderer->add_to(graph, images, camera);
+      if (renderer && host_color)
+        renderer->add_to(graph, images, camera,
+                         {graph.import_image("host.color", *host_color), graph.import_image("host.depth", *host_depth)});
+      else if (renderer)
+        renderer->add_to(graph, images, camera);
     });
   }
 
@@ -81,6 +102,7 @@ struct Bench {
   liquid::LiquidNode node;
   std::unique_ptr<liquid::LiquidRenderer> renderer;
   liquid::CameraView camera;
+  std::optional<engine::vk::Image> host_color, host_depth;  // group "composite"
   tools::FrameLoop loop;
 };
 

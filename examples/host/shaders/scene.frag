@@ -1,5 +1,6 @@
 #version 450
-// The host's shading: a checkered floor and a painted box, lit by one sun.
+// The host's shading in linear radiance (its HDR target; the tone map comes after the liquid): a
+// checkered floor and a painted box, lit by one sun and the sky.
 layout(location = 0) in vec3 v_normal;
 layout(location = 1) in vec3 v_world;
 layout(location = 2) flat in int v_is_box;
@@ -7,14 +8,13 @@ layout(location = 0) out vec4 out_color;
 
 void main() {
   vec3 sun = normalize(vec3(0.4, 0.8, 0.45));
-  float light = 0.35 + 0.65 * max(dot(normalize(v_normal), sun), 0.0);
+  vec3 light = vec3(1.3, 1.22, 1.1) * max(dot(normalize(v_normal), sun), 0.0) + vec3(0.2, 0.24, 0.3);
   vec3 base;
   if (v_is_box == 1) {
-    base = vec3(0.85, 0.35, 0.2);
+    base = vec3(0.7, 0.18, 0.07);
   } else {
-    ivec2 tile = ivec2(floor(v_world.xz / 0.1));
-    base = ((tile.x + tile.y) & 1) == 0 ? vec3(0.75, 0.74, 0.7) : vec3(0.55, 0.56, 0.58);
+    ivec2 tile = ivec2(floor(v_world.xz / 0.25));
+    base = ((tile.x + tile.y) & 1) == 0 ? vec3(0.42, 0.40, 0.36) : vec3(0.2, 0.21, 0.23);
   }
-  vec3 color = base * light;
-  out_color = vec4(pow(color, vec3(1.0 / 2.2)), 1.0);
+  out_color = vec4(base * light, 1.0);
 }

@@ -31,6 +31,9 @@ struct AccessInfo {
 };
 
 const AccessInfo& access_info(Access access);
+// The layout of `access` on an image of `format`: the table's, except a depth attachment of a
+// format with stencil, DEPTH_STENCIL_ATTACHMENT_OPTIMAL.
+VkImageLayout access_layout(Access access, VkFormat format);
 
 // Readable names for plan dumps and error messages.
 std::string stage_names(VkPipelineStageFlags2 stages);

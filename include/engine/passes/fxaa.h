@@ -1,5 +1,7 @@
 // FXAA as a generic graph pass any host can add: input image -> new anti-aliased image of the
-// same size and format (after Granite's add_fxaa). Knows nothing of what the input shows.
+// same size and format (after Granite's add_fxaa). Knows nothing of what the input shows. Two
+// passes: "NAME.mark" copies every pixel and marks the 2x2 quads that hold an edge in a depth
+// image; "NAME" runs FXAA behind the early depth test, on the marked quads alone.
 #pragma once
 
 #include "engine/graph/render_graph.h"
@@ -30,7 +32,8 @@ class FxaaPass {
                             const FxaaSettings& settings = {}, const std::string& name = "fxaa") const;
 
  private:
-  vk::GraphicsPipeline pipeline_;
+  vk::GraphicsPipeline mark_;      // pass one: the copy, and the quads with an edge marked in depth
+  vk::GraphicsPipeline pipeline_;  // pass two: FXAA on the marked quads only
   vk::Sampler sampler_;
   VkFormat format_;
 };

@@ -95,6 +95,8 @@ class Context {
   bool supports_vertex_layer_output() const { return vertex_layer_output_; }
   // Whether geometry shaders were enabled (geometryShader).
   bool supports_geometry_shader() const { return geometry_shader_; }
+  // dualSrcBlend enabled: BlendMode::Transmit can be used.
+  bool supports_dual_source_blend() const { return dual_source_blend_; }
 
   // Number of validation warnings and errors reported since creation (or the last reset).
   uint32_t validation_message_count() const { return validation_messages_.load(); }
@@ -151,6 +153,7 @@ class Context {
   bool owns_device_ = true;
   bool vertex_layer_output_ = false;
   bool geometry_shader_ = false;
+  bool dual_source_blend_ = false;
   std::atomic<uint32_t> validation_messages_{0};
   mutable std::string last_message_;
   PFN_vkSetDebugUtilsObjectNameEXT set_object_name_ = nullptr;

@@ -38,7 +38,8 @@ struct DeviceFeatures {
 
 // Sets every feature the library needs in `features` (leaving the others as they are).
 // The optional features (geometry shaders, gl_Layer from vertex shaders: ways of rendering into the
-// slices of 3D images) are set only where `supported` has them.
+// slices of 3D images; dual-source blending: a composited liquid's per-channel transmittance) are
+// set only where `supported` has them.
 void enable_required(DeviceFeatures& features, const DeviceFeatures& supported);
 
 // The required features and extensions absent from what was enabled, by name ("geometryShader",

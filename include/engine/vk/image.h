@@ -26,6 +26,8 @@ struct ImageDesc {
   uint32_t depth_or_layers = 1;  // depth for Image3D, layers for Image2DArray, 1 for Image2D
   VkFormat format = VK_FORMAT_R8G8B8A8_UNORM;
   VkImageUsageFlags usage = 0;
+  // More than one: a multisampled image (a host's MSAA target, wrapped); its passes must agree.
+  VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
 
   // Layers a pass renders into: slices of a 3D image, layers of an array.
   uint32_t render_layers() const { return kind == ImageKind::Image2D ? 1 : depth_or_layers; }
@@ -56,6 +58,9 @@ struct ImageSyncState {
 };
 
 bool is_depth_format(VkFormat format);
+// D24_UNORM_S8_UINT, D32_SFLOAT_S8_UINT: a depth format whose stencil travels with it (its
+// barriers cover both aspects, its attachment layout is DEPTH_STENCIL_ATTACHMENT_OPTIMAL).
+bool has_stencil(VkFormat format);
 uint32_t format_texel_size(VkFormat format);
 
 class Image {
@@ -79,7 +84,9 @@ class Image {
   VkImageView attachment_view() const { return objects_->attachment_view.get(); }
   const ImageDesc& desc() const { return desc_; }
   const std::string& name() const { return name_; }
+  // The aspect sampled and copied: depth for a depth format (its stencil stays where it is).
   VkImageAspectFlags aspect() const;
+  // Every aspect and layer: what a barrier covers (depth and stencil for a combined format).
   VkImageSubresourceRange full_range() const;
 
   ImageSyncState& sync_state() { return sync_; }

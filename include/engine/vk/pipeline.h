@@ -20,6 +20,10 @@ enum class BlendMode {
   None,      // overwrite
   Additive,  // dst + src on every channel (the splat's accumulation)
   Alpha,     // src.a * src + (1 - src.a) * dst
+  Min,       // min(dst, src) on every channel (a distance kept where it is the smallest)
+  // Dual-source (the device's dualSrcBlend): src + src1 * dst per colour channel, so a translucent
+  // surface filters what lies behind it channel by channel; alpha as Alpha's.
+  Transmit,
 };
 
 enum class DescriptorKind { SampledImage, UniformBuffer };

@@ -29,7 +29,14 @@ layout(constant_id = LIQUID_RAYMARCH_OUTPUT_ID) const int OUTPUT_ENCODING = LIQU
 layout(constant_id = LIQUID_RAYMARCH_BACKGROUND_ONLY_ID) const bool BACKGROUND_ONLY = false;
 
 layout(location = 0) in vec2 v_uv;
+#if TRANSMIT
+// Compositing with dual-source blending (BlendMode::Transmit): the host's colour behind is
+// multiplied by out_transmit per channel, so the liquid's absorption tints what shows through.
+layout(location = 0, index = 0) out vec4 out_color;
+layout(location = 0, index = 1) out vec4 out_transmit;
+#else
 layout(location = 0) out vec4 out_color;
+#endif
 
 const float k_no_hit = 1e30;
 // Refinements of a crossing. A constant, not a uniform: lavapipe (Mesa 22.3) compiles a fresh copy
@@ -83,6 +90,8 @@ vec3 floor_color(vec3 p) {
 }
 
 // Nearest obstacle hit along the ray: analytic for spheres and boxes, sphere tracing for metaballs.
+// Meshes are not traced: liquid/render/mesh_draw.h rasterizes them into the frame's colour and
+// depth first, and this pass is depth-tested against them.
 float trace_obstacles(vec3 origin, vec3 dir, out int hit_index) {
   float best = k_no_hit;
   hit_index = -1;
@@ -103,7 +112,7 @@ float trace_obstacles(vec3 origin, vec3 dir, out int hit_index) {
       vec3 local_origin = quat_rotate_inverse(q, origin - c), local_dir = quat_rotate_inverse(q, dir);
       vec2 span = intersect_box(local_origin, 1.0 / local_dir, -o.box_half_extent, o.box_half_extent);
       if (span.x <= span.y && span.x > 0.0) t = span.x;
-    } else {
+    } else if (kind == LIQUID_OBSTACLE_METABALLS) {
       float reach = 0.0;
       for (int b = 0; b < o.ball_count; ++b) {
         vec4 ball = u.balls[o.first_ball + b];
@@ -306,10 +315,11 @@ void main() {
     float spec = pow(max(dot(n, normalize(r.sun_direction - dir)), 0.0), 180.0);
     vec3 scattered = vec3(0.01, 0.05, 0.08) * (1.0 - exp(-2.0 * thickness));
     if (COMPOSITE) {
-      // What shows through is the host's colour behind (blending): it is dimmed by the mean
-      // transmittance; the rest is reflection, scattering and highlight.
-      vec3 transmittance = exp(-k_absorption * (thickness + 0.02));
-      float through = (1.0 - fresnel) * dot(transmittance, vec3(1.0 / 3.0));
+      // What shows through is the host's colour behind (blending): it is filtered by the
+      // transmittance, per channel with dual-source blending, else by its mean; the rest is
+      // reflection, scattering and highlight.
+      vec3 through_rgb = (1.0 - fresnel) * exp(-k_absorption * (thickness + 0.02));
+      float through = dot(through_rgb, vec3(1.0 / 3.0));
       vec3 own = fresnel * reflected + (1.0 - fresnel) * scattered + vec3(1.0, 0.97, 0.9) * spec * 1.5;
       float coverage = 1.0 - through;
       gl_FragDepth = clip_depth(p);
@@ -321,6 +331,12 @@ void main() {
         vec3 linear = clamp(own / max(coverage, 1e-3), 0.0, 1.0);
         out_color = vec4(OUTPUT_ENCODING == LIQUID_OUTPUT_LINEAR ? linear : pow(linear, vec3(1.0 / 2.2)), coverage);
       }
+#if TRANSMIT
+      // src + src1 * dst: the same light of its own (premultiplied here), the host's colour
+      // filtered channel by channel.
+      out_color.rgb *= coverage;
+      out_transmit = vec4(through_rgb, 0.0);
+#endif
       return;
     }
     float behind_t;

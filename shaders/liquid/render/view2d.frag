@@ -48,8 +48,9 @@ float tank_distance(vec2 q) {
   return min(min(left, right), bottom);
 }
 
-// Signed distance (m) to obstacle i in the plane.
-float obstacle_distance_2d(int i, vec2 p) { return obstacle_distance(i, vec3(p, 0.0)); }
+// Signed distance (m) to obstacle i in the plane (a box: its rectangle, turned). A mesh's is its
+// field's (MESH_FIELD=1, the scenes with meshes), sampled here in `meshes`.
+float obstacle_distance_2d(int i, vec2 p, MeshSample meshes) { return obstacle_distance(i, vec3(p, 0.0), meshes); }
 
 void main() {
   // Domain coordinates: q in pixels from the domain's bottom-left corner (y up), p in metres.
@@ -89,8 +90,9 @@ void main() {
   // Obstacles: solid grey with a darker outline, anti-aliased over one pixel of the distance.
   // The distance is metric near every surface (metaballs: a first-order estimate), so pixels are
   // metres times the scale; screen derivatives would break on the metaballs' field discontinuity.
+  MeshSample meshes = mesh_sample(vec3(p, 0.0), false);
   [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
-    float d_pixels = obstacle_distance_2d(i, p) * pc.pixels_per_metre;
+    float d_pixels = obstacle_distance_2d(i, p, meshes) * pc.pixels_per_metre;
     vec3 shade = mix(k_obstacle, k_obstacle_outline, smoothstep(-2.0, -1.0, d_pixels));
     color = mix(color, shade, coverage(d_pixels));
     alpha = mix(alpha, 1.0, coverage(d_pixels));

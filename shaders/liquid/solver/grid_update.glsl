@@ -20,9 +20,8 @@ layout(set = 0, binding = LIQUID_BINDING_GRID_POTENTIAL) uniform GRID_SAMPLER u_
 float pressure_at(ivec3 c, float coverage, int excluded) {
   c = clamp(c, ivec3(0), grid_cells() - 1);
   float rho = u.density_scale * fetch_grid(u_splat, c).a / coverage;
-  vec3 p = cell_center(c);
-  rho += obstacle_density(p, excluded);
-  if (shallow_water()) rho += u.rest_density * ground_height(p.xy) / u.rest_depth;
+  rho += obstacle_density_at_cell(c, excluded);
+  if (shallow_water()) rho += u.rest_density * ground_height(cell_center(c).xy) / u.rest_depth;
   return pressure_from_density(rho);
 }
 
@@ -80,15 +79,16 @@ vec3 grid_update(ivec3 c, vec4 splat, int excluded) {
 
   // Obstacles: inside, the liquid moves with the obstacle; near the surface, no relative
   // velocity into it. The obstacle's velocity is its material's at p (v + w x r).
+  MeshSample meshes = mesh_sample_at_cell(c, true);
   [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
     if (i == excluded) continue;
-    float d = obstacle_distance(i, p);
+    float d = obstacle_distance(i, p, meshes);
     if (d > h) continue;
     vec3 v_obstacle = obstacle_velocity_at(i, p);
     if (d < 0.0) {
       velocity = v_obstacle;
     } else {
-      vec3 normal = obstacle_normal(i, p);
+      vec3 normal = obstacle_normal(i, p, meshes);
       float into = dot(velocity - v_obstacle, normal);
       if (into < 0.0) velocity -= into * normal;
     }

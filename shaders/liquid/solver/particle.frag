@@ -100,17 +100,19 @@ void main() {
   // no-inflow condition removes it on the next step, where the reaction is measured
   // (docs/physics.md, "Bodies that float").
   float skin = 0.5 * cell_size();
-  [[unroll]] for (int pass = 0; pass < 2; ++pass)
+  [[unroll]] for (int pass = 0; pass < 2; ++pass) {
+    MeshSample meshes = mesh_sample(x_new, true);
     [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
-      float d = obstacle_distance(i, x_new);
+      float d = obstacle_distance(i, x_new, meshes);
       float reach = obstacle_dynamic(i) ? 0.1 * skin : skin;
       if (d >= reach) continue;
-      vec3 normal = obstacle_normal(i, x_new);
+      vec3 normal = obstacle_normal(i, x_new, meshes);
       x_new = clamp_to_bounds(x_new + (reach - d) * normal, lo, hi);
       if (obstacle_dynamic(i)) continue;
       float into = dot(v - obstacle_velocity_at(i, x_new), normal);
       if (into < 0.0) v -= into * normal;
     }
+  }
 
   // Walls: no velocity into a wall the particle was clamped against.
   for (int a = 0; a < DIM; ++a) {

@@ -19,8 +19,7 @@ void main() {
     return;
   }
   float rho = u.density_scale * fetch_grid(u_splat, c).a / cell_coverage(c);
-  vec3 p = cell_center(c);
-  rho += obstacle_density(p, -1);
-  if (shallow_water()) rho += u.rest_density * ground_height(p.xy) / u.rest_depth;
+  rho += obstacle_density_at_cell(c, -1);
+  if (shallow_water()) rho += u.rest_density * ground_height(cell_center(c).xy) / u.rest_depth;
   out_pressure = pressure_from_density(rho);
 }

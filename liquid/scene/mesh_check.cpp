@@ -1,0 +1,73 @@
+#include "liquid/scene/mesh_check.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <tuple>
+
+namespace liquid {
+
+void weld_positions(TriangleMesh& mesh) {
+  const auto key = [](glm::vec3 v) { return std::make_tuple(v.x, v.y, v.z); };
+  std::map<std::tuple<float, float, float>, uint32_t> index_of;
+  std::vector<glm::vec3> vertices;
+  std::vector<uint32_t> remap(mesh.vertices.size());
+  for (size_t i = 0; i < mesh.vertices.size(); ++i) {
+    auto [it, added] = index_of.try_emplace(key(mesh.vertices[i]), uint32_t(vertices.size()));
+    if (added) vertices.push_back(mesh.vertices[i]);
+    remap[i] = it->second;
+  }
+  std::vector<uint32_t> indices;
+  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    uint32_t v[3];
+    for (int k = 0; k < 3; ++k) v[k] = mesh.indices[t + k] < remap.size() ? remap[mesh.indices[t + k]] : UINT32_MAX;
+    if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) continue;  // collapsed to a line or a point
+    indices.insert(indices.end(), v, v + 3);
+  }
+  mesh.vertices = std::move(vertices);
+  mesh.indices = std::move(indices);
+}
+
+std::string mesh_problem(const TriangleMesh& mesh) {
+  if (mesh.indices.size() % 3 != 0)
+    return "the index count (" + std::to_string(mesh.indices.size()) + ") is not a multiple of 3";
+  const size_t triangles = mesh.indices.size() / 3;
+  if (triangles == 0) return "the mesh has no triangles";
+  for (uint32_t i : mesh.indices)
+    if (i >= mesh.vertices.size())
+      return "index " + std::to_string(i) + " is past the " + std::to_string(mesh.vertices.size()) + " vertices";
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (uint32_t i : mesh.indices) {
+    const glm::vec3 v = mesh.vertices[i];
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) return "a vertex is not finite";
+    lo = glm::min(lo, v);
+    hi = glm::max(hi, v);
+  }
+  const glm::vec3 extent = hi - lo;
+  const float largest = std::max(extent.x, std::max(extent.y, extent.z));
+  if (!(largest > 0.0f) || std::min(extent.x, std::min(extent.y, extent.z)) <= 1e-6f * largest)
+    return "degenerate extent (" + std::to_string(extent.x) + " x " + std::to_string(extent.y) + " x " +
+           std::to_string(extent.z) + "): the mesh encloses no volume";
+  // Each directed edge once, and its reverse once: every edge shared by two triangles that agree
+  // on which side is outside.
+  std::map<std::pair<uint32_t, uint32_t>, int> directed;
+  for (size_t t = 0; t < triangles; ++t)
+    for (int k = 0; k < 3; ++k) ++directed[{mesh.indices[3 * t + k], mesh.indices[3 * t + (k + 1) % 3]}];
+  size_t bad = 0;
+  std::pair<uint32_t, uint32_t> example{};
+  for (const auto& [edge, count] : directed) {
+    const auto reverse = directed.find({edge.second, edge.first});
+    if (count != 1 || reverse == directed.end() || reverse->second != 1) {
+      if (bad++ == 0) example = edge;
+    }
+  }
+  if (bad > 0)
+    return "the mesh is not closed: " + std::to_string(bad) +
+           " edges are not shared by exactly two triangles of opposite orientation (e.g. vertices " +
+           std::to_string(example.first) + "-" + std::to_string(example.second) + ")";
+  return "";
+}
+
+}  // namespace liquid
