@@ -68,37 +68,47 @@ RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const Li
   return {color, {}, color};
 }
 
+namespace {
+
+// A host target's format, after checking it is a single-sampled 2D image of the renderer's size.
+// An MSAA host resolves its scene first: the liquid is one surface per pixel, drawn into the
+// resolved colour with the resolved depth (as a TAA or deferred engine's post-scene passes are).
+VkFormat checked_target_format(const engine::graph::RenderGraph& graph, engine::graph::ImageHandle image,
+                               const char* what, const RenderSettings& settings) {
+  const engine::vk::ImageDesc& d = graph.image_desc(image);
+  const std::string target = std::string("liquid: the host's ") + what + " target '" + graph.image_name(image) + "'";
+  if (d.kind != engine::vk::ImageKind::Image2D || d.width != settings.width || d.height != settings.height)
+    throw std::invalid_argument(target + " must be a " + std::to_string(settings.width) + "x" +
+                                std::to_string(settings.height) + " 2D image");
+  if (d.samples != VK_SAMPLE_COUNT_1_BIT)
+    throw std::invalid_argument(target + " has " + std::to_string(int(d.samples)) +
+                                " samples; composite into the resolved single-sample colour and depth");
+  return d.format;
+}
+
+[[noreturn]] void refuse_format(const engine::graph::RenderGraph& graph, engine::graph::ImageHandle image,
+                                const char* what, const std::string& why) {
+  throw std::invalid_argument(std::string("liquid: the host's ") + what + " target '" + graph.image_name(image) +
+                              "' has format " + std::to_string(int(graph.image_desc(image).format)) + ", " + why);
+}
+
+}  // namespace
+
 RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
                                      const HostView& view, const HostTargets& targets) {
   if (!settings_.composite || !raymarch_) throw std::logic_error("liquid: add_to with host targets needs RenderSettings::composite");
-  const auto check = [&](engine::graph::ImageHandle image, const char* what) {
-    const engine::vk::ImageDesc& d = graph.image_desc(image);
-    if (d.kind != engine::vk::ImageKind::Image2D || d.width != settings_.width || d.height != settings_.height)
-      throw std::invalid_argument(std::string("liquid: the host's ") + what + " target '" + graph.image_name(image) +
-                                  "' must be a " + std::to_string(settings_.width) + "x" +
-                                  std::to_string(settings_.height) + " 2D image");
-    // An MSAA host resolves its scene first: the liquid is one surface per pixel, drawn into the
-    // resolved colour with the resolved depth (as a TAA or deferred engine's post-scene passes are).
-    if (d.samples != VK_SAMPLE_COUNT_1_BIT)
-      throw std::invalid_argument(std::string("liquid: the host's ") + what + " target '" + graph.image_name(image) +
-                                  "' has " + std::to_string(int(d.samples)) +
-                                  " samples; composite into the resolved single-sample colour and depth");
-    return d.format;
-  };
-  const VkFormat color_format = check(targets.color, "colour");
+  const VkFormat color_format = checked_target_format(graph, targets.color, "colour", settings_);
   if (!composite_output_encoding(color_format) ||
       !node_.context().format_supports(color_format, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT))
-    throw std::invalid_argument("liquid: the host's colour target '" + graph.image_name(targets.color) + "' has format " +
-                                std::to_string(int(color_format)) +
-                                ", which the liquid does not composite into (R8G8B8A8 or B8G8R8A8 UNORM or SRGB, "
-                                "A2B10G10R10_UNORM, R16G16B16A16_SFLOAT or B10G11R11_UFLOAT, blendable on the device)");
-  const VkFormat depth_format = check(targets.depth, "depth");
+    refuse_format(graph, targets.color, "colour",
+                  "which the liquid does not composite into (R8G8B8A8 or B8G8R8A8 UNORM or SRGB, A2B10G10R10_UNORM, "
+                  "R16G16B16A16_SFLOAT or B10G11R11_UFLOAT, blendable on the device)");
+  const VkFormat depth_format = checked_target_format(graph, targets.depth, "depth", settings_);
   if (!is_composite_depth_format(depth_format) ||
       !node_.context().format_supports(depth_format, VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT))
-    throw std::invalid_argument("liquid: the host's depth target '" + graph.image_name(targets.depth) + "' has format " +
-                                std::to_string(int(depth_format)) +
-                                ", which the liquid does not test against (D32_SFLOAT, D24_UNORM_S8_UINT or "
-                                "D32_SFLOAT_S8_UINT, a depth attachment on the device)");
+    refuse_format(graph, targets.depth, "depth",
+                  "which the liquid does not test against (D32_SFLOAT, D24_UNORM_S8_UINT or D32_SFLOAT_S8_UINT, "
+                  "a depth attachment on the device)");
   // FXAA works on display-referred colour: an HDR target is the host's to tone map first.
   if (fxaa_ && composite_output_encoding(color_format) == LIQUID_OUTPUT_HDR)
     throw std::invalid_argument("liquid: FXAA into the host's HDR colour target '" + graph.image_name(targets.color) +

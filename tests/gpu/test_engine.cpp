@@ -101,9 +101,9 @@ TEST_CASE("a graph with a barrier removed is caught by synchronization validatio
   vk::Context& context = test::gpu();
   REQUIRE_NO_VALIDATION_MESSAGES();
   context.reset_validation_message_count();
-  // The FXAA pass samples the pattern right after it was rendered: without its barrier this is a
-  // read-after-write hazard (and a layout mismatch) that the layer must report.
-  render_pattern(context, "fxaa");
+  // FXAA's first pass samples the pattern right after it was rendered: without its barrier this is
+  // a read-after-write hazard (and a layout mismatch) that the layer must report.
+  render_pattern(context, "fxaa.mark");
   const uint32_t messages = context.validation_message_count();
   context.reset_validation_message_count();
   CHECK(messages > 0);

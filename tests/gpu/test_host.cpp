@@ -939,12 +939,15 @@ TEST_CASE("a 2D liquid composites with alpha into a rectangle of the host's targ
   cmd.submit_and_wait();
   const engine::vk::Rgba8Image opaque = back.rgba8();
 
+  const auto in_rect = [&](uint32_t x, uint32_t y) {
+    return x >= uint32_t(rect.offset.x) && x < uint32_t(rect.offset.x) + rect.extent.width &&
+           y >= uint32_t(rect.offset.y) && y < uint32_t(rect.offset.y) + rect.extent.height;
+  };
   size_t outside_changed = 0, inside_liquid = 0, inside_clear = 0, matching = 0;
   for (uint32_t y = 0; y < k_height; ++y)
     for (uint32_t x = 0; x < k_width; ++x) {
       const size_t i = size_t(y) * k_width + x;
-      const bool inside = x >= uint32_t(rect.offset.x) && x < uint32_t(rect.offset.x) + rect.extent.width &&
-                          y >= uint32_t(rect.offset.y) && y < uint32_t(rect.offset.y) + rect.extent.height;
+      const bool inside = in_rect(x, y);
       if (!inside) {
         outside_changed += !is_magenta(panel, i);
         continue;
@@ -985,8 +988,7 @@ TEST_CASE("a 2D liquid composites with alpha into a rectangle of the host's targ
   for (uint32_t y = 0; y < k_height; ++y)
     for (uint32_t x = 0; x < k_width; ++x) {
       const size_t i = size_t(y) * k_width + x;
-      const bool inside = x >= uint32_t(rect.offset.x) && x < uint32_t(rect.offset.x) + rect.extent.width &&
-                          y >= uint32_t(rect.offset.y) && y < uint32_t(rect.offset.y) + rect.extent.height;
+      const bool inside = in_rect(x, y);
       const auto* texel = reinterpret_cast<const uint8_t*>(&opaque_bytes[i * 4]);
       const bool magenta = std::memcmp(texel, k_magenta.data(), 4) == 0;
       if (!inside) {
