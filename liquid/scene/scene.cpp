@@ -332,7 +332,7 @@ void read_contents(const Reader& r, const Json& doc, Scene& scene) {
   scene.fluid_blocks = read_array<FluidBlock>(r, doc, "fluid_blocks", read_fluid_block);
   scene.emitters = read_array<Emitter>(r, doc, "emitters", read_emitter);
   scene.obstacles = read_array<Obstacle>(r, doc, "obstacles", read_obstacle);
-  // The body reaction pass repeats the chapter's grid update; the splat-adjoint pressure and
+  // The body force pass integrates the chapter's cell pressure; the splat-adjoint pressure and
   // shallow water's ground term are not in it.
   // Nor does it read the mesh field: bodies and meshes are not yet in one scene.
   const bool meshes = std::any_of(scene.obstacles.begin(), scene.obstacles.end(),

@@ -24,7 +24,7 @@ BodyIntegrationPass::BodyIntegrationPass(engine::vk::Context& context, int dimen
       nearest_(context, VK_FILTER_NEAREST) {}
 
 ImageHandle BodyIntegrationPass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                                        ImageHandle current, const BodyReactionImages& reaction, ImageHandle next) const {
+                                        ImageHandle current, const BodyForceImages& force, ImageHandle next) const {
   struct Data {
     engine::passes::PassBindings bindings;
     ImageHandle out;
@@ -37,8 +37,8 @@ ImageHandle BodyIntegrationPass::add_to(engine::graph::RenderGraph& graph, const
             d.bindings = engine::passes::PassBindings(pipeline_);
             d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
             d.bindings.bind_image(b, LIQUID_BINDING_BODIES, current, s);
-            d.bindings.bind_image(b, LIQUID_BINDING_BODY_FORCE, reaction.force, s);
-            d.bindings.bind_image(b, LIQUID_BINDING_BODY_TORQUE, reaction.torque, s);
+            d.bindings.bind_image(b, LIQUID_BINDING_BODY_FORCE, force.force, s);
+            d.bindings.bind_image(b, LIQUID_BINDING_BODY_TORQUE, force.torque, s);
             d.out = b.write(next, Access::ColorAttachmentWrite);
           },
           [](PassContext& ctx, const Data& d) {

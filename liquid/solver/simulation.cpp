@@ -82,9 +82,8 @@ Simulation::Simulation(engine::vk::Context& context, const Scene& scene, const L
   if (meshes) mesh_field_ = std::make_unique<MeshField>(context, scene_, setup_, layout_, specialization);
   const bool dynamic = std::any_of(scene.obstacles.begin(), scene.obstacles.end(), [](const Obstacle& o) { return o.dynamic; });
   if (dynamic) {
-    body_grid_ = std::make_unique<BodyGridPass>(context, layout_, specialization);
-    body_reaction_ = std::make_unique<BodyReactionPass>(context, layout_, int(scene.obstacles.size()),
-                                                        setup_.particle_mass, specialization);
+    body_force_ = std::make_unique<BodyForcePass>(context, layout_, int(scene.obstacles.size()), setup_.particle_mass,
+                                                  specialization);
     body_integration_ = std::make_unique<BodyIntegrationPass>(context, setup_.dimension, specialization);
   }
   const std::vector<glm::vec4> body_texels = initial_body_texels(scene_, setup_);
@@ -290,16 +289,15 @@ LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
     splat = add_splat(graph, slice, particles[cur], splat, active_);
     grids = add_grid(graph, slice, splat, bodies[s.body_current], grids, pressure, mesh_field);
     if (body_integration_) {
-      // The liquid's reaction on the bodies at the pose the grid pass used, then their step; the
+      // The liquid's pressure on the bodies at the pose the grid pass used, then their step; the
       // particle pass keeps particles out of where they are at its end.
-      std::vector<BodyWithout> without;
+      std::vector<int> dynamic;
       for (size_t i = 0; i < scene_.obstacles.size(); ++i)
-        if (scene_.obstacles[i].dynamic)
-          without.push_back({int(i), body_grid_->add_to(graph, slice, splat, bodies[s.body_current], int(i))});
-      const BodyReactionImages reaction = body_reaction_->add_to(graph, slice, particles[cur].positions, grids.velocity,
-                                                                 without, bodies[s.body_current], active_);
+        if (scene_.obstacles[i].dynamic) dynamic.push_back(int(i));
+      const BodyForceImages force = body_force_->add_to(graph, slice, splat, particles[cur].positions, active_,
+                                                        bodies[s.body_current], dynamic);
       const int body_next = 1 - s.body_current;
-      bodies[body_next] = body_integration_->add_to(graph, slice, bodies[s.body_current], reaction, bodies[body_next]);
+      bodies[body_next] = body_integration_->add_to(graph, slice, bodies[s.body_current], force, bodies[body_next]);
       s.body_current = body_next;
     }
     particles[next] = particle_update_->add_to(graph, slice, particles[cur], splat, grids, bodies[s.body_current],

@@ -11,9 +11,8 @@
 #include "liquid/analysis/diagnostics.h"
 #include "liquid/physics/setup.h"
 #include "liquid/scene.h"
-#include "liquid/solver/body_grid.h"
+#include "liquid/solver/body_force.h"
 #include "liquid/solver/body_integration.h"
-#include "liquid/solver/body_reaction.h"
 #include "liquid/solver/grid.h"
 #include "liquid/solver/mesh_field.h"
 #include "liquid/solver/particle_update.h"
@@ -125,8 +124,7 @@ class Simulation {
   std::unique_ptr<GridPass> grid_;
   std::unique_ptr<PressurePass> pressure_;  // only with the splat-adjoint pressure
   std::unique_ptr<ParticleUpdatePass> particle_update_;
-  std::unique_ptr<BodyGridPass> body_grid_;                // only with dynamic obstacles
-  std::unique_ptr<BodyReactionPass> body_reaction_;
+  std::unique_ptr<BodyForcePass> body_force_;              // only with dynamic obstacles
   std::unique_ptr<BodyIntegrationPass> body_integration_;
   std::unique_ptr<MeshField> mesh_field_;  // only with mesh obstacles
   std::unique_ptr<LiquidState> state_;

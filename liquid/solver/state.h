@@ -24,7 +24,7 @@ namespace liquid {
 constexpr VkFormat k_particle_format = VK_FORMAT_R32G32B32A32_SFLOAT;  // positions and velocities
 constexpr VkFormat k_grid_velocity_format = VK_FORMAT_R32G32B32A32_SFLOAT;
 constexpr VkFormat k_density_format = VK_FORMAT_R16_SFLOAT;  // rho / rho0, for rendering
-constexpr VkFormat k_body_format = VK_FORMAT_R32G32B32A32_SFLOAT;  // body state, reaction force and torque
+constexpr VkFormat k_body_format = VK_FORMAT_R32G32B32A32_SFLOAT;  // body state, the liquid's force and torque
 
 // The splat's format for a scene's `requested` one and what the device can blend into. Auto takes
 // RGBA32F where it is blendable and falls back to RGBA16F (`fell_back`) where it is not. Throws

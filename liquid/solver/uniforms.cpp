@@ -63,6 +63,8 @@ gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& set
                                 " entries, not " + std::to_string(gpu::k_wall_table_size) + " (make it with make_setup)");
   for (size_t k = 0; k < setup.wall_share_beyond.size(); ++k)
     u.wall_kernel_beyond[k / 4][k % 4] = setup.wall_share_beyond[k];
+  for (size_t k = 0; k < std::min(setup.body_share_beyond.size(), setup.wall_share_beyond.size()); ++k)
+    u.body_kernel_beyond[k / 4][k % 4] = setup.body_share_beyond[k];
 
   int ball = 0;
   for (size_t i = 0; i < scene.obstacles.size(); ++i) {

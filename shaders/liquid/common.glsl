@@ -337,15 +337,14 @@ vec3 obstacle_normal(int index, vec3 p) {
 // to zero one band outside. Added to the fluid density before the pressure, so the pressure
 // gradient pushes liquid away from the obstacle. A dynamic obstacle adds none: the pressure is
 // clamped at 0 below rho0 (pressure_from_density), so any density an obstacle adds where liquid is
-// acts as a wall a band further out, and a body riding on that cushion floats a band too high; the
-// no-inflow condition and the particle pass hold the liquid at its surface instead
-// (docs/physics.md, "Bodies that float", with the drafts measured each way).
-// `excluded`: an obstacle left out (the body grid pass's liquid without that body), or -1.
-float obstacle_density(vec3 p, MeshSample meshes, int excluded) {
+// acts as a wall a band further out, and a body riding on that cushion floats a band too high.
+// The liquid next to a body reads its density with the body's kernel coverage instead, as at the
+// walls (body_coverage in grid_update.glsl; docs/physics.md, "Bodies that float").
+float obstacle_density(vec3 p, MeshSample meshes) {
   float band = u.obstacle_band;
   float total = 0.0;
   [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
-    if (i == excluded || obstacle_dynamic(i)) continue;
+    if (obstacle_dynamic(i)) continue;
     float d = obstacle_distance(i, p, meshes);
     total += clamp(1.0 - d / band, 0.0, 2.0);
   }
@@ -353,9 +352,7 @@ float obstacle_density(vec3 p, MeshSample meshes, int excluded) {
 }
 
 // At cell c's centre (the grid passes), the meshes' field read there.
-float obstacle_density_at_cell(ivec3 c, int excluded) {
-  return obstacle_density(cell_center(c), mesh_sample_at_cell(c, false), excluded);
-}
+float obstacle_density_at_cell(ivec3 c) { return obstacle_density(cell_center(c), mesh_sample_at_cell(c, false)); }
 
 // Shallow water (section 6, figure 4): ground height b(x, y) in metres; read as extra density
 // rho0 * b / rest_depth so that P = g (h + b).

@@ -38,9 +38,9 @@
 #define LIQUID_BODY_ACCELERATION 6      // xyz m/s^2 of the last step (the added-mass term)
 #define LIQUID_BODY_ANGULAR_ACCELERATION 7
 #define LIQUID_BODY_TEXELS 8
-// The reaction pass's two targets (one texel per obstacle): force (N) and torque (N m).
-#define LIQUID_BODY_REACTION_FORCE 0
-#define LIQUID_BODY_REACTION_TORQUE 1
+// The body force pass's two targets (one texel per obstacle): force (N) and torque (N m).
+#define LIQUID_BODY_TARGET_FORCE 0
+#define LIQUID_BODY_TARGET_TORQUE 1
 
 // Mesh obstacles: each has one channel of the mesh field (RGBA), so at most four per scene.
 #define LIQUID_MAX_MESH_OBSTACLES 4
@@ -75,16 +75,15 @@
 #define LIQUID_BINDING_PARTICLE_GRID_VELOCITY 4
 // The body-state texture, read where dynamic obstacles are evaluated (grid, particle, body passes).
 #define LIQUID_BINDING_BODIES 5
-// The body grid pass reads the splat at LIQUID_BINDING_GRID_SPLAT, as the grid pass does (it
-// repeats the grid pass's update without one body). The body reaction pass reads the particles'
-// positions and the grid pass's u' at the particle pass's bindings, and this one's u' without the
-// body at its own. The integration pass: the reaction's force and torque.
-#define LIQUID_BINDING_BODY_GRID_VELOCITY 6
+// The body force and exchange passes read the splat at LIQUID_BINDING_GRID_SPLAT, as the grid pass
+// does (the pressure they integrate, the velocity the no-inflow condition meets); the exchange
+// pass the particles' positions at its own. The integration pass: their force and torque.
+#define LIQUID_BINDING_BODY_PARTICLES 2
 #define LIQUID_BINDING_BODY_FORCE 1
 #define LIQUID_BINDING_BODY_TORQUE 2
 // The mesh obstacles' signed distance field (the MESH_FIELD variants of the grid, pressure and
 // particle passes and of the 2D view), and the passes that build it (liquid/solver/mesh_field.h).
-#define LIQUID_BINDING_MESH_FIELD 7  // past the bodies' 5 and 6
+#define LIQUID_BINDING_MESH_FIELD 7  // past the bodies' 5
 #define LIQUID_BINDING_MESH_TRIANGLES 1     // mesh_raster.vert, mesh_draw.vert: the triangles' corners
 #define LIQUID_BINDING_MESH_INSIDE 1        // mesh_field.frag: the signed crossing counts
 #define LIQUID_BINDING_MESH_BAND 2          // mesh_field.frag: the unsigned narrow-band distance
@@ -210,6 +209,9 @@ LIQUID_STRUCT(SolverUniforms) {
   Brush brushes[LIQUID_MAX_BRUSHES];
   EmitterRange emitters[LIQUID_MAX_EMITTERS];
   Body bodies[LIQUID_MAX_OBSTACLES];
+  // The same share beyond a dynamic body's surface k + 0.5 cells from a cell centre, as the
+  // scene's lattice sees it (uniform liquid reads its rest density there): [k / 4][k % 4].
+  vec4 body_kernel_beyond[LIQUID_WALL_TABLE_SIZE / 4];
 };
 
 // The textures of a mesh's triangles (3 texels per triangle: its corners in the mesh's frame) are

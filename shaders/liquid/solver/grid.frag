@@ -11,7 +11,7 @@
 // potential Phi = W^T P that potential.frag smoothed from pressure.frag's P with the splat's own
 // kernel, which makes the pressure force the gradient of an energy (docs/physics.md).
 // Outputs: target 0 = (u', fluid flag), target 1 = rho / rho0 (for rendering and diagnostics). The
-// update itself is grid_update.glsl's, which the body reaction pass repeats.
+// update itself is grid_update.glsl's.
 #extension GL_GOOGLE_include_directive : require
 #define LIQUID_BODIES
 #include "liquid/common.glsl"
@@ -29,6 +29,6 @@ void main() {
     return;
   }
   vec4 splat = fetch_grid(u_splat, c);
-  out_velocity = vec4(grid_update(c, splat, -1), splat.a > k_fluid_epsilon ? 1.0 : 0.0);
+  out_velocity = vec4(grid_update(c, splat), splat.a > k_fluid_epsilon ? 1.0 : 0.0);
   out_density = u.density_scale * splat.a / u.rest_density;
 }

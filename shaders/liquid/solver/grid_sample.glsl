@@ -1,5 +1,4 @@
-// The grid's velocity at a particle (section 5), shared by the particle pass (particle.frag) and
-// the body reaction pass (body_reaction.vert), which must see exactly what a particle receives.
+// The grid's velocity at a particle (section 5), for the particle pass (particle.frag).
 // Include after common.glsl.
 #ifndef LIQUID_GRID_SAMPLE_GLSL
 #define LIQUID_GRID_SAMPLE_GLSL

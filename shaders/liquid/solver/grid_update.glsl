@@ -1,6 +1,6 @@
-// The grid pass's update of one cell (section 4), shared by the grid pass (grid.frag) and the body
-// reaction pass (body_reaction.vert), which repeats it without one dynamic obstacle to measure what
-// that obstacle did to the liquid. Include after common.glsl; SPLAT_ADJOINT as in grid.frag.
+// The grid pass's update of one cell (section 4, grid.frag) and the pressure it reads, which the
+// body force pass (body_force.vert) integrates over each dynamic body's surface. Include after
+// common.glsl; SPLAT_ADJOINT as in grid.frag.
 #ifndef LIQUID_GRID_UPDATE_GLSL
 #define LIQUID_GRID_UPDATE_GLSL
 #include "liquid/solver/pressure.glsl"
@@ -14,13 +14,29 @@ layout(set = 0, binding = LIQUID_BINDING_GRID_SPLAT) uniform GRID_SAMPLER u_spla
 layout(set = 0, binding = LIQUID_BINDING_GRID_POTENTIAL) uniform GRID_SAMPLER u_potential;
 #endif
 
+// Share of the kernel at p outside the dynamic bodies, each taken as the plane through its nearest
+// surface point: the liquid beside a body lacks the body's share of its kernel, as beside a wall,
+// and without dividing by this it reads low, at zero pressure under the clamp, so the layer under a
+// body could hold it anywhere (docs/physics.md, "Bodies that float"). Clamped: deep inside a body
+// the kernel reaches only a few particles.
+const float k_min_body_coverage = 0.05;
+float body_coverage(vec3 p) {
+  float coverage = 1.0;
+  [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
+    if (!obstacle_dynamic(i)) continue;
+    float d = obstacle_distance(i, p) / cell_size();
+    coverage *= d >= 0.0 ? 1.0 - body_mass_beyond(d) : body_mass_beyond(-d);
+  }
+  return max(coverage, k_min_body_coverage);
+}
+
 // Pressure at neighbour cell c (clamped into the grid, which makes the difference one-sided at the
-// walls) whose kernel share inside the domain is `coverage`: liquid plus obstacle or ground density,
-// without obstacle `excluded` (-1: with all).
-float pressure_at(ivec3 c, float coverage, int excluded) {
+// walls) whose kernel share inside the domain is `coverage`: liquid (read without the dynamic
+// bodies' hole) plus obstacle or ground density.
+float pressure_at(ivec3 c, float coverage) {
   c = clamp(c, ivec3(0), grid_cells() - 1);
-  float rho = u.density_scale * fetch_grid(u_splat, c).a / coverage;
-  rho += obstacle_density_at_cell(c, excluded);
+  float rho = u.density_scale * fetch_grid(u_splat, c).a / (coverage * body_coverage(cell_center(c)));
+  rho += obstacle_density_at_cell(c);
   if (shallow_water()) rho += u.rest_density * ground_height(cell_center(c).xy) / u.rest_depth;
   return pressure_from_density(rho);
 }
@@ -35,10 +51,22 @@ float potential_at(ivec3 c, int a, int offset) {
 }
 #endif
 
-// u' of cell c whose splat is `splat`, without obstacle `excluded` (-1: with all): the splatted
-// velocity, accelerated by -grad P + g + f_ext over dt, then no flow through the walls or into
-// obstacles.
-vec3 grid_update(ivec3 c, vec4 splat, int excluded) {
+// Obstacle i's condition on the velocity at cell centre p: inside, the liquid moves with the
+// obstacle; within a cell of its surface, no relative velocity into it. The obstacle's velocity is
+// its material's at p (v + w x r).
+vec3 obstacle_condition(int i, vec3 p, vec3 velocity, MeshSample meshes) {
+  float d = obstacle_distance(i, p, meshes);
+  if (d > cell_size()) return velocity;
+  vec3 v_obstacle = obstacle_velocity_at(i, p);
+  if (d < 0.0 && !obstacle_dynamic(i)) return v_obstacle;
+  vec3 normal = obstacle_normal(i, p, meshes);
+  float into = dot(velocity - v_obstacle, normal);
+  return into < 0.0 ? velocity - into * normal : velocity;
+}
+
+// u' of cell c whose splat is `splat`: the splatted velocity, accelerated by -grad P + g + f_ext
+// over dt, then no flow through the walls or into obstacles.
+vec3 grid_update(ivec3 c, vec4 splat) {
   ivec3 n = grid_cells();
   float h = cell_size();
   float dt = u.dt;
@@ -61,14 +89,14 @@ vec3 grid_update(ivec3 c, vec4 splat, int excluded) {
 
   // Eq. 3: central differences of the pressure.
   vec3 grad_p;
-  grad_p.x = pressure_at(c + ivec3(1, 0, 0), above.x * here.y * here.z, excluded) -
-             pressure_at(c - ivec3(1, 0, 0), below.x * here.y * here.z, excluded);
-  grad_p.y = pressure_at(c + ivec3(0, 1, 0), here.x * above.y * here.z, excluded) -
-             pressure_at(c - ivec3(0, 1, 0), here.x * below.y * here.z, excluded);
+  grad_p.x = pressure_at(c + ivec3(1, 0, 0), above.x * here.y * here.z) -
+             pressure_at(c - ivec3(1, 0, 0), below.x * here.y * here.z);
+  grad_p.y = pressure_at(c + ivec3(0, 1, 0), here.x * above.y * here.z) -
+             pressure_at(c - ivec3(0, 1, 0), here.x * below.y * here.z);
   grad_p.z = 0.0;
 #if DIM == 3
-  grad_p.z = pressure_at(c + ivec3(0, 0, 1), here.x * here.y * above.z, excluded) -
-             pressure_at(c - ivec3(0, 0, 1), here.x * here.y * below.z, excluded);
+  grad_p.z = pressure_at(c + ivec3(0, 0, 1), here.x * here.y * above.z) -
+             pressure_at(c - ivec3(0, 0, 1), here.x * here.y * below.z);
 #endif
 #endif
   grad_p /= 2.0 * h;
@@ -77,22 +105,8 @@ vec3 grid_update(ivec3 c, vec4 splat, int excluded) {
   vec3 acceleration = -grad_p + u.gravity + external_acceleration(p);
   velocity += dt * acceleration;
 
-  // Obstacles: inside, the liquid moves with the obstacle; near the surface, no relative
-  // velocity into it. The obstacle's velocity is its material's at p (v + w x r).
   MeshSample meshes = mesh_sample_at_cell(c, true);
-  [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
-    if (i == excluded) continue;
-    float d = obstacle_distance(i, p, meshes);
-    if (d > h) continue;
-    vec3 v_obstacle = obstacle_velocity_at(i, p);
-    if (d < 0.0) {
-      velocity = v_obstacle;
-    } else {
-      vec3 normal = obstacle_normal(i, p, meshes);
-      float into = dot(velocity - v_obstacle, normal);
-      if (into < 0.0) velocity -= into * normal;
-    }
-  }
+  [[unroll]] for (int i = 0; i < obstacle_count(); ++i) velocity = obstacle_condition(i, p, velocity, meshes);
 
   // Section 4's wall condition: in a cell next to a wall, the velocity component normal to that
   // wall is zero.

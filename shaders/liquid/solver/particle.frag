@@ -96,8 +96,8 @@ void main() {
   // to its surface and loses its velocity into it, relative to the obstacle's material there.
   // A dynamic obstacle's particles are moved only, and only out of it (a twentieth of a cell
   // beyond its surface, not half a cell, which would leave a gap the body's buoyancy counts): a
-  // velocity change here would be momentum the body reaction pass does not see; the grid pass's
-  // no-inflow condition removes it on the next step, where the reaction is measured
+  // velocity change here would be momentum the body's force does not count; the grid pass's
+  // no-inflow condition removes it on the next step, where the body exchange pass counts it
   // (docs/physics.md, "Bodies that float").
   float skin = 0.5 * cell_size();
   [[unroll]] for (int pass = 0; pass < 2; ++pass) {

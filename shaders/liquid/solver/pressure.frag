@@ -19,7 +19,7 @@ void main() {
     return;
   }
   float rho = u.density_scale * fetch_grid(u_splat, c).a / cell_coverage(c);
-  rho += obstacle_density_at_cell(c, -1);
+  rho += obstacle_density_at_cell(c);
   if (shallow_water()) rho += u.rest_density * ground_height(cell_center(c).xy) / u.rest_depth;
   out_pressure = pressure_from_density(rho);
 }

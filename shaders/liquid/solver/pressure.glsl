@@ -15,6 +15,20 @@ float kernel_mass_beyond(int k) {
   return beyond;
 }
 
+// The kernel's share beyond a dynamic body's surface (the body table) `distance` cells from a cell
+// centre (any distance >= 0): linear between the table's half-cell points, from one half on it.
+float body_mass_beyond_entry(int k) {
+  float beyond = 0.0;
+  [[unroll]] for (int i = 0; i < LIQUID_WALL_TABLE_SIZE; ++i)
+    beyond = k == i ? u.body_kernel_beyond[i / 4][i % 4] : beyond;
+  return beyond;
+}
+float body_mass_beyond(float distance) {
+  if (distance < 0.5) return mix(0.5, body_mass_beyond_entry(0), 2.0 * distance);
+  int k = int(floor(distance - 0.5));
+  return mix(body_mass_beyond_entry(k), body_mass_beyond_entry(k + 1), distance - 0.5 - float(k));
+}
+
 // Share of the kernel inside the domain along one axis, for the cell at index i of n: near a wall
 // the kernel is cut off and the splatted density reads low, which would pull liquid against the
 // wall; dividing by the share removes that bias. It is 1 from r cells away from both walls.

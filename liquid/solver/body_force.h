@@ -1,0 +1,45 @@
+// The liquid's force and torque on each dynamic obstacle over one step, reduced on the raster
+// pipeline by additive blending into the obstacle's texel of two 1 x N RGBA32F targets, two draws
+// per dynamic obstacle: its pressure, F = -rho0 sum P n dA over its surface (a point per grid cell;
+// shaders/liquid/solver/body_force.vert), and the opposite of the momentum its no-inflow condition
+// gives the liquid it runs into (a point per particle; body_exchange.vert).
+#pragma once
+
+#include "engine/vk/pipeline.h"
+#include "engine/vk/sampler.h"
+#include "engine/vk/uniform_arena.h"
+#include "liquid/solver/grid_layout.h"
+#include "liquid/solver/images.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace liquid {
+
+struct BodyForceImages {
+  ImageHandle force;   // texel (0, i): N on obstacle i
+  ImageHandle torque;  // texel (0, i): N m about its centre
+};
+
+class BodyForcePass {
+ public:
+  BodyForcePass(engine::vk::Context& context, const GridLayout& layout, int obstacles, float particle_mass,
+                const std::vector<int32_t>& specialization);
+
+  // From the step's `splat` (the grid pass's pressure and arriving velocity), the particles'
+  // `positions` before their update (the first `active`) and the body state the grid pass read,
+  // for the dynamic obstacles `dynamic_obstacles` (their indices).
+  BodyForceImages add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle splat,
+                         ImageHandle positions, int active, ImageHandle bodies,
+                         const std::vector<int>& dynamic_obstacles) const;
+
+ private:
+  engine::vk::GraphicsPipeline pressure_;  // a point per cell
+  engine::vk::GraphicsPipeline exchange_;  // a point per particle
+  engine::vk::Sampler nearest_;
+  uint32_t obstacles_ = 0;
+  uint32_t cells_ = 0;
+  float particle_mass_ = 0.0f;
+};
+
+}  // namespace liquid
