@@ -51,9 +51,10 @@ float potential_at(ivec3 c, int a, int offset) {
 }
 #endif
 
-// Obstacle i's condition on the velocity at cell centre p: inside, the liquid moves with the
-// obstacle; within a cell of its surface, no relative velocity into it. The obstacle's velocity is
-// its material's at p (v + w x r).
+// Obstacle i's condition on the velocity at cell centre p: inside a static obstacle the liquid moves
+// with it; inside a dynamic one and within a cell of any surface, no relative velocity into it (a
+// body's force has no viscous part, so its inside may not drag the liquid along either:
+// docs/physics.md, "Bodies that float"). The obstacle's velocity is its material's at p (v + w x r).
 vec3 obstacle_condition(int i, vec3 p, vec3 velocity, MeshSample meshes) {
   float d = obstacle_distance(i, p, meshes);
   if (d > cell_size()) return velocity;
