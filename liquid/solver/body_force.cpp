@@ -19,9 +19,9 @@ struct BodyExchangePush {
 };
 
 // Both pipelines blend points into the two targets, reading the solver's block, the splat and the
-// bodies; the exchange also reads the particles.
+// bodies; the exchange also reads the particles, the splat-adjoint pressure's force the cells' P.
 engine::vk::GraphicsPipelineDesc point_reduction(const char* name, std::span<const uint32_t> vertex,
-                                                 bool particles, uint32_t push_size,
+                                                 uint32_t extra_binding, uint32_t push_size,
                                                  const std::vector<int32_t>& specialization) {
   engine::vk::GraphicsPipelineDesc desc{
       .name = name,
@@ -35,30 +35,39 @@ engine::vk::GraphicsPipelineDesc point_reduction(const char* name, std::span<con
                    {LIQUID_BINDING_BODIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
       .push_constant_size = push_size,
       .specialization = specialization};
-  if (particles)
-    desc.bindings.push_back({LIQUID_BINDING_BODY_PARTICLES, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT});
+  if (extra_binding != 0)
+    desc.bindings.push_back({extra_binding, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT});
   return desc;
 }
 }  // namespace
 
 BodyForcePass::BodyForcePass(engine::vk::Context& context, const GridLayout& layout, int obstacles,
-                             float particle_mass, const std::vector<int32_t>& specialization)
-    : pressure_(context, point_reduction("liquid.body_force",
-                                         layout.pick(liquid_shaders::body_force_vert_2d, liquid_shaders::body_force_vert_3d,
-                                                     liquid_shaders::body_force_vert_3d_atlas),
-                                         false, sizeof(BodyForcePush), specialization)),
+                             float particle_mass, bool splat_adjoint, const std::vector<int32_t>& specialization)
+    : pressure_(context,
+                splat_adjoint
+                    ? point_reduction("liquid.body_force",
+                                      layout.pick(liquid_shaders::body_force_adjoint_vert_2d,
+                                                  liquid_shaders::body_force_adjoint_vert_3d,
+                                                  liquid_shaders::body_force_adjoint_vert_3d_atlas),
+                                      LIQUID_BINDING_BODY_CELL_PRESSURE, sizeof(BodyForcePush), specialization)
+                    : point_reduction("liquid.body_force",
+                                      layout.pick(liquid_shaders::body_force_vert_2d, liquid_shaders::body_force_vert_3d,
+                                                  liquid_shaders::body_force_vert_3d_atlas),
+                                      0, sizeof(BodyForcePush), specialization)),
       exchange_(context, point_reduction("liquid.body_exchange",
                                          layout.pick(liquid_shaders::body_exchange_vert_2d,
                                                      liquid_shaders::body_exchange_vert_3d,
                                                      liquid_shaders::body_exchange_vert_3d_atlas),
-                                         true, sizeof(BodyExchangePush), specialization)),
+                                         LIQUID_BINDING_BODY_PARTICLES, sizeof(BodyExchangePush), specialization)),
       nearest_(context, VK_FILTER_NEAREST),
+      splat_adjoint_(splat_adjoint),
       obstacles_(uint32_t(obstacles)),
       cells_(uint32_t(layout.cell_count())),
       particle_mass_(particle_mass) {}
 
 BodyForceImages BodyForcePass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                                      ImageHandle splat, ImageHandle positions, int active, ImageHandle bodies,
+                                      ImageHandle splat, ImageHandle cell_pressure, ImageHandle positions, int active,
+                                      ImageHandle bodies,
                                       const std::vector<int>& dynamic_obstacles) const {
   const engine::vk::ImageDesc desc{engine::vk::ImageKind::Image2D, 1, obstacles_, 1, k_body_format, 0};
   BodyForceImages out{graph.create_image("liquid.body_force", desc), graph.create_image("liquid.body_torque", desc)};
@@ -84,6 +93,8 @@ BodyForceImages BodyForcePass::add_to(engine::graph::RenderGraph& graph, const e
                       d.bindings.bind_image(b, LIQUID_BINDING_GRID_SPLAT, splat, s);
                       d.bindings.bind_image(b, LIQUID_BINDING_BODIES, bodies, s);
                       if (exchange) d.bindings.bind_image(b, LIQUID_BINDING_BODY_PARTICLES, positions, s);
+                      if (!exchange && splat_adjoint_)
+                        d.bindings.bind_image(b, LIQUID_BINDING_BODY_CELL_PRESSURE, cell_pressure, s);
                       d.out.force = b.write(out.force, Access::ColorAttachmentBlend, start);
                       d.out.torque = b.write(out.torque, Access::ColorAttachmentBlend, start);
                     },

@@ -63,12 +63,21 @@ SeparableBlur::SeparableBlur(engine::vk::Context& context, const GridLayout& lay
 
 ImageHandle SeparableBlur::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
                                   ImageHandle& source, ImageHandle& scratch) const {
+  return chain(graph, uniforms, &source, &scratch, &source);
+}
+
+ImageHandle SeparableBlur::add_to_keeping(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
+                                          ImageHandle source, ImageHandle& first, ImageHandle& second) const {
+  return chain(graph, uniforms, &source, &first, &second);
+}
+
+ImageHandle SeparableBlur::chain(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
+                                 ImageHandle* input, ImageHandle* first, ImageHandle* second) const {
   struct Data {
     engine::passes::PassBindings bindings;
     ImageHandle out;
   };
-  ImageHandle* input = &source;
-  ImageHandle* output = &scratch;
+  ImageHandle* output = first;
   for (const engine::vk::GraphicsPipeline& pipeline : axes_) {
     *output =
         graph
@@ -85,7 +94,8 @@ ImageHandle SeparableBlur::add_to(engine::graph::RenderGraph& graph, const engin
                   engine::passes::draw_fullscreen(ctx.cmd, ctx.layers);
                 })
             .out;
-    std::swap(input, output);
+    input = output;
+    output = output == first ? second : first;
   }
   return *input;
 }

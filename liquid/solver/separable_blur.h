@@ -29,11 +29,20 @@ class SeparableBlur {
   // Both must be grid images of the blur's format.
   ImageHandle add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle& source,
                      ImageHandle& scratch) const;
+  // The same, leaving `source` as it is: source -> first -> second (-> first). Returns the one that
+  // holds the result.
+  ImageHandle add_to_keeping(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
+                             ImageHandle source, ImageHandle& first, ImageHandle& second) const;
 
   // How many passes add_to declares: one per axis it spreads.
   int passes() const { return int(axes_.size()); }
 
  private:
+  // The passes from `input`, writing `first`, `second`, `first` ... in turn, each reading the last
+  // one's output.
+  ImageHandle chain(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle* input,
+                    ImageHandle* first, ImageHandle* second) const;
+
   std::vector<engine::vk::GraphicsPipeline> axes_;
   engine::vk::Sampler nearest_;
 };

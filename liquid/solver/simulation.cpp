@@ -83,7 +83,7 @@ Simulation::Simulation(engine::vk::Context& context, const Scene& scene, const L
   const bool dynamic = std::any_of(scene.obstacles.begin(), scene.obstacles.end(), [](const Obstacle& o) { return o.dynamic; });
   if (dynamic) {
     body_force_ = std::make_unique<BodyForcePass>(context, layout_, int(scene.obstacles.size()), setup_.particle_mass,
-                                                  specialization);
+                                                  setup_.splat_adjoint_pressure, specialization);
     body_integration_ = std::make_unique<BodyIntegrationPass>(context, setup_.dimension, specialization);
   }
   const std::vector<glm::vec4> body_texels = initial_body_texels(scene_, setup_);
@@ -224,8 +224,11 @@ std::vector<EmissionRange> Simulation::emit(double end_time, int& next_index) {
 
 Simulation::PressureImages Simulation::create_pressure_images(engine::graph::RenderGraph& graph) const {
   if (!pressure_) return {};
-  return {graph.create_image("liquid.pressure", pressure_->image_desc()),
-          graph.create_image("liquid.potential", pressure_->image_desc())};
+  PressureImages images{graph.create_image("liquid.pressure", pressure_->image_desc()),
+                        graph.create_image("liquid.potential", pressure_->image_desc()), {}};
+  if (body_force_ && setup_.splat == SplatMode::Separable)  // the body force reads P after the spread
+    images.scratch = graph.create_image("liquid.potential_scratch", pressure_->image_desc());
+  return images;
 }
 
 ImageHandle Simulation::add_splat(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
@@ -239,7 +242,7 @@ GridImages Simulation::add_grid(engine::graph::RenderGraph& graph, const engine:
                                 PressureImages& pressure, ImageHandle mesh_field) const {
   if (!pressure_) return grid_->add_to(graph, slice, splat, bodies, grids, {}, mesh_field);
   const ImageHandle potential =
-      pressure_->add_to(graph, slice, splat, pressure.pressure, pressure.potential, mesh_field);
+      pressure_->add_to(graph, slice, splat, bodies, pressure.pressure, pressure.potential, pressure.scratch, mesh_field);
   return grid_->add_to(graph, slice, splat, bodies, grids, potential, mesh_field);
 }
 
@@ -294,8 +297,8 @@ LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
       std::vector<int> dynamic;
       for (size_t i = 0; i < scene_.obstacles.size(); ++i)
         if (scene_.obstacles[i].dynamic) dynamic.push_back(int(i));
-      const BodyForceImages force = body_force_->add_to(graph, slice, splat, particles[cur].positions, active_,
-                                                        bodies[s.body_current], dynamic);
+      const BodyForceImages force = body_force_->add_to(graph, slice, splat, pressure.pressure, particles[cur].positions,
+                                                        active_, bodies[s.body_current], dynamic);
       const int body_next = 1 - s.body_current;
       bodies[body_next] = body_integration_->add_to(graph, slice, bodies[s.body_current], force, bodies[body_next]);
       s.body_current = body_next;

@@ -93,6 +93,7 @@ class Simulation {
   // The splat-adjoint pressure's two grid images for one graph (invalid handles without it).
   struct PressureImages {
     ImageHandle pressure, potential;
+    ImageHandle scratch;  // with dynamic bodies: the separable spread's second image, so P is kept
   };
   PressureImages create_pressure_images(engine::graph::RenderGraph& graph) const;
   // One step's grid pass, after the splat-adjoint pressure passes when the scene uses them.

@@ -79,6 +79,8 @@
 // does (the pressure they integrate, the velocity the no-inflow condition meets); the exchange
 // pass the particles' positions at its own. The integration pass: their force and torque.
 #define LIQUID_BINDING_BODY_PARTICLES 2
+// With the splat-adjoint pressure, the body force pass reads pressure.frag's cell pressure P.
+#define LIQUID_BINDING_BODY_CELL_PRESSURE 3
 #define LIQUID_BINDING_BODY_FORCE 1
 #define LIQUID_BINDING_BODY_TORQUE 2
 // The mesh obstacles' signed distance field (the MESH_FIELD variants of the grid, pressure and

@@ -41,6 +41,10 @@ liquid::Scene pool_scene(const Pool& pool, float density, float bottom_height, g
   // the test's seconds.
   scene.pic_ratio = 0.3f;
   scene.substeps = 25;
+  // The splat-adjoint pressure with the separable splat, as the shipped physical scenes: its still
+  // water is hydrostatic (docs/physics.md, "Bodies that float").
+  scene.pressure_force = liquid::PressureForce::SplatAdjoint;
+  scene.splat = liquid::SplatMode::Separable;
   glm::vec3 top = pool.domain;
   top.y = pool.depth;
   scene.fluid_blocks.push_back({glm::vec3(0.0f), top, glm::vec3(0.0f)});

@@ -14,22 +14,6 @@ layout(set = 0, binding = LIQUID_BINDING_GRID_SPLAT) uniform GRID_SAMPLER u_spla
 layout(set = 0, binding = LIQUID_BINDING_GRID_POTENTIAL) uniform GRID_SAMPLER u_potential;
 #endif
 
-// Share of the kernel at p outside the dynamic bodies, each taken as the plane through its nearest
-// surface point: the liquid beside a body lacks the body's share of its kernel, as beside a wall,
-// and without dividing by this it reads low, at zero pressure under the clamp, so the layer under a
-// body could hold it anywhere (docs/physics.md, "Bodies that float"). Clamped: deep inside a body
-// the kernel reaches only a few particles.
-const float k_min_body_coverage = 0.05;
-float body_coverage(vec3 p) {
-  float coverage = 1.0;
-  [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
-    if (!obstacle_dynamic(i)) continue;
-    float d = obstacle_distance(i, p) / cell_size();
-    coverage *= d >= 0.0 ? 1.0 - body_mass_beyond(d) : body_mass_beyond(-d);
-  }
-  return max(coverage, k_min_body_coverage);
-}
-
 // Pressure at neighbour cell c (clamped into the grid, which makes the difference one-sided at the
 // walls) whose kernel share inside the domain is `coverage`: liquid (read without the dynamic
 // bodies' hole) plus obstacle or ground density.

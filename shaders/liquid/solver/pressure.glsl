@@ -37,6 +37,24 @@ float axis_coverage(int i, int n) {
   return (1.0 - kernel_mass_beyond(i)) * (1.0 - kernel_mass_beyond(n - 1 - i));
 }
 
+// Share of the kernel at p outside the dynamic bodies, each taken as the plane through its nearest
+// surface point (1 in shaders without LIQUID_BODIES): the liquid beside a body lacks the body's
+// share of its kernel, as beside a wall, and without dividing by this it reads low, at zero
+// pressure under the clamp, so the layer under a body could hold it anywhere (docs/physics.md,
+// "Bodies that float"). Clamped: deep inside a body the kernel reaches only a few particles.
+const float k_min_body_coverage = 0.05;
+float body_coverage(vec3 p) {
+  float coverage = 1.0;
+#ifdef LIQUID_BODIES
+  [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
+    if (!obstacle_dynamic(i)) continue;
+    float d = obstacle_distance(i, p) / cell_size();
+    coverage *= d >= 0.0 ? 1.0 - body_mass_beyond(d) : body_mass_beyond(-d);
+  }
+#endif
+  return max(coverage, k_min_body_coverage);
+}
+
 // Liquid (default): Becker and Teschner's Tait form, which the chapter cites, clamped at zero:
 // P = max(k ((rho/rho0)^gamma - 1), 0). Its gradient equals the printed P = k (rho/rho0)^gamma's
 // wherever rho > rho0, but below rest density (the free surface, empty cells) it exerts no pull
