@@ -332,14 +332,17 @@ void read_contents(const Reader& r, const Json& doc, Scene& scene) {
   scene.fluid_blocks = read_array<FluidBlock>(r, doc, "fluid_blocks", read_fluid_block);
   scene.emitters = read_array<Emitter>(r, doc, "emitters", read_emitter);
   scene.obstacles = read_array<Obstacle>(r, doc, "obstacles", read_obstacle);
-  // The body force pass has no term for shallow water's ground, nor does it read the mesh field:
-  // bodies and meshes are not yet in one scene.
+  // The body force is the reaction of the splat-adjoint pressure's energy (the chapter's pressure
+  // force is no gradient of one); it has no term for shallow water's ground, nor does it read the
+  // mesh field: bodies and meshes are not yet in one scene.
   const bool meshes = std::any_of(scene.obstacles.begin(), scene.obstacles.end(),
                                   [](const Obstacle& o) { return o.shape == ObstacleShape::Mesh; });
   for (size_t i = 0; i < scene.obstacles.size(); ++i)
-    if (scene.obstacles[i].dynamic && (shallow || meshes))
+    if (scene.obstacles[i].dynamic && (shallow || meshes || scene.pressure_force != PressureForce::SplatAdjoint))
       r.fail(element("obstacles", i) + ".dynamic",
-             shallow ? "not available in shallow_water mode" : "not available in a scene with mesh obstacles");
+             shallow  ? "not available in shallow_water mode"
+             : meshes ? "not available in a scene with mesh obstacles"
+                      : "needs \"pressure_force\": \"splat_adjoint\" (the body force is the reaction of its energy)");
   if (!shallow && Reader::find(doc, "ground")) r.fail("ground", "only allowed in shallow_water mode");
   scene.ground = read_array<GroundHill>(r, doc, "ground", read_ground_hill);
   if (const Json* v = Reader::find(doc, "camera")) {

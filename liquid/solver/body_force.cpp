@@ -19,7 +19,7 @@ struct BodyExchangePush {
 };
 
 // Both pipelines blend points into the two targets, reading the solver's block, the splat and the
-// bodies; the exchange also reads the particles, the splat-adjoint pressure's force the cells' P.
+// bodies; the exchange also reads the particles, the pressure force the cells' P.
 engine::vk::GraphicsPipelineDesc point_reduction(const char* name, std::span<const uint32_t> vertex,
                                                  uint32_t extra_binding, uint32_t push_size,
                                                  const std::vector<int32_t>& specialization) {
@@ -42,25 +42,17 @@ engine::vk::GraphicsPipelineDesc point_reduction(const char* name, std::span<con
 }  // namespace
 
 BodyForcePass::BodyForcePass(engine::vk::Context& context, const GridLayout& layout, int obstacles,
-                             float particle_mass, bool splat_adjoint, const std::vector<int32_t>& specialization)
-    : pressure_(context,
-                splat_adjoint
-                    ? point_reduction("liquid.body_force",
-                                      layout.pick(liquid_shaders::body_force_adjoint_vert_2d,
-                                                  liquid_shaders::body_force_adjoint_vert_3d,
-                                                  liquid_shaders::body_force_adjoint_vert_3d_atlas),
-                                      LIQUID_BINDING_BODY_CELL_PRESSURE, sizeof(BodyForcePush), specialization)
-                    : point_reduction("liquid.body_force",
-                                      layout.pick(liquid_shaders::body_force_vert_2d, liquid_shaders::body_force_vert_3d,
-                                                  liquid_shaders::body_force_vert_3d_atlas),
-                                      0, sizeof(BodyForcePush), specialization)),
+                             float particle_mass, const std::vector<int32_t>& specialization)
+    : pressure_(context, point_reduction("liquid.body_force",
+                                         layout.pick(liquid_shaders::body_force_vert_2d, liquid_shaders::body_force_vert_3d,
+                                                     liquid_shaders::body_force_vert_3d_atlas),
+                                         LIQUID_BINDING_BODY_CELL_PRESSURE, sizeof(BodyForcePush), specialization)),
       exchange_(context, point_reduction("liquid.body_exchange",
                                          layout.pick(liquid_shaders::body_exchange_vert_2d,
                                                      liquid_shaders::body_exchange_vert_3d,
                                                      liquid_shaders::body_exchange_vert_3d_atlas),
                                          LIQUID_BINDING_BODY_PARTICLES, sizeof(BodyExchangePush), specialization)),
       nearest_(context, VK_FILTER_NEAREST),
-      splat_adjoint_(splat_adjoint),
       obstacles_(uint32_t(obstacles)),
       cells_(uint32_t(layout.cell_count())),
       particle_mass_(particle_mass) {}
@@ -93,8 +85,7 @@ BodyForceImages BodyForcePass::add_to(engine::graph::RenderGraph& graph, const e
                       d.bindings.bind_image(b, LIQUID_BINDING_GRID_SPLAT, splat, s);
                       d.bindings.bind_image(b, LIQUID_BINDING_BODIES, bodies, s);
                       if (exchange) d.bindings.bind_image(b, LIQUID_BINDING_BODY_PARTICLES, positions, s);
-                      if (!exchange && splat_adjoint_)
-                        d.bindings.bind_image(b, LIQUID_BINDING_BODY_CELL_PRESSURE, cell_pressure, s);
+                      if (!exchange) d.bindings.bind_image(b, LIQUID_BINDING_BODY_CELL_PRESSURE, cell_pressure, s);
                       d.out.force = b.write(out.force, Access::ColorAttachmentBlend, start);
                       d.out.torque = b.write(out.torque, Access::ColorAttachmentBlend, start);
                     },

@@ -1,10 +1,9 @@
 // The liquid's force and torque on each dynamic obstacle over one step, reduced on the raster
 // pipeline by additive blending into the obstacle's texel of two 1 x N RGBA32F targets, two draws
-// per dynamic obstacle: its pressure, F = -rho0 sum P n dA over its surface (a point per grid cell;
+// per dynamic obstacle: its pressure, the reaction of the liquid's energy to the body's kernel
+// coverage from the cells' pressure P of the splat-adjoint pressure pass (a point per grid cell;
 // shaders/liquid/solver/body_force.vert), and the opposite of the momentum its no-inflow condition
-// gives the liquid it runs into (a point per particle; body_exchange.vert). With the splat-adjoint
-// pressure the first draw is the reaction of the liquid's energy to the body's kernel coverage,
-// from the cells' pressure P that pressure.frag writes (body_force.vert, BODY_ADJOINT).
+// gives the liquid it runs into (a point per particle; body_exchange.vert).
 #pragma once
 
 #include "engine/vk/pipeline.h"
@@ -26,12 +25,12 @@ struct BodyForceImages {
 class BodyForcePass {
  public:
   BodyForcePass(engine::vk::Context& context, const GridLayout& layout, int obstacles, float particle_mass,
-                bool splat_adjoint, const std::vector<int32_t>& specialization);
+                const std::vector<int32_t>& specialization);
 
-  // From the step's `splat` (the grid pass's pressure and arriving velocity), the particles'
-  // `positions` before their update (the first `active`) and the body state the grid pass read,
-  // for the dynamic obstacles `dynamic_obstacles` (their indices); with the splat-adjoint pressure,
-  // `cell_pressure` is the step's P (PressurePass), else it is not read.
+  // From the step's `splat` (the velocity arriving at the bodies), its cells' pressure
+  // `cell_pressure` (PressurePass), the particles' `positions` before their update (the first
+  // `active`) and the body state the grid pass read, for the dynamic obstacles `dynamic_obstacles`
+  // (their indices).
   BodyForceImages add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle splat,
                          ImageHandle cell_pressure, ImageHandle positions, int active, ImageHandle bodies,
                          const std::vector<int>& dynamic_obstacles) const;
@@ -40,7 +39,6 @@ class BodyForcePass {
   engine::vk::GraphicsPipeline pressure_;  // a point per cell
   engine::vk::GraphicsPipeline exchange_;  // a point per particle
   engine::vk::Sampler nearest_;
-  bool splat_adjoint_ = false;
   uint32_t obstacles_ = 0;
   uint32_t cells_ = 0;
   float particle_mass_ = 0.0f;

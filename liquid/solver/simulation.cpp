@@ -83,7 +83,7 @@ Simulation::Simulation(engine::vk::Context& context, const Scene& scene, const L
   const bool dynamic = std::any_of(scene.obstacles.begin(), scene.obstacles.end(), [](const Obstacle& o) { return o.dynamic; });
   if (dynamic) {
     body_force_ = std::make_unique<BodyForcePass>(context, layout_, int(scene.obstacles.size()), setup_.particle_mass,
-                                                  setup_.splat_adjoint_pressure, specialization);
+                                                  specialization);
     body_integration_ = std::make_unique<BodyIntegrationPass>(context, setup_.dimension, specialization);
   }
   const std::vector<glm::vec4> body_texels = initial_body_texels(scene_, setup_);

@@ -16,9 +16,11 @@ using Json = nlohmann::json;
 
 namespace {
 
-// A 2D pool with one box obstacle whose keys are `box` (merged over a plain box).
+// A 2D pool (the splat-adjoint pressure, which dynamic bodies need) with one box obstacle whose
+// keys are `box` (merged over a plain box).
 Json pool_with(const Json& box, int dimension = 2) {
   Json j = Json::parse(R"({ "dimension": 2, "domain": [1.0, 0.6], "particle_spacing": 0.01,
+                            "pressure_force": "splat_adjoint",
                             "fluid_blocks": [{ "min": [0.0, 0.0], "max": [1.0, 0.2] }] })");
   Json obstacle = {{"shape", "box"}, {"center", {0.5, 0.3}}, {"half_extent", {0.1, 0.05}}};
   if (dimension == 3) {
@@ -74,9 +76,9 @@ TEST_CASE("bad dynamic and rotation keys are refused naming the field", "[scene]
   balls["obstacles"][0] = {{"shape", "metaballs"}, {"balls", {{{"center", {0.5, 0.3}}, {"radius", 0.1}}}},
                            {"dynamic", true}, {"density", 500}};
   REQUIRE_THROWS_WITH(parse(balls), Contains("obstacles[0].dynamic: metaball obstacles cannot be dynamic"));
-  Json adjoint = pool_with({{"dynamic", true}, {"density", 500}});
-  adjoint["pressure_force"] = "splat_adjoint";
-  CHECK(parse(adjoint).obstacles[0].dynamic);  // the body force reads the splat-adjoint pressure too
+  Json chapter = pool_with({{"dynamic", true}, {"density", 500}});
+  chapter["pressure_force"] = "chapter";
+  REQUIRE_THROWS_WITH(parse(chapter), Contains("obstacles[0].dynamic: needs \"pressure_force\": \"splat_adjoint\""));
 }
 
 TEST_CASE("a rotated box's signed distance is taken in its own frame", "[bodies]") {

@@ -13,8 +13,8 @@
 
 namespace {
 
-// A pool of still water `depth` deep with a box of `density` floating in it (chapter's pressure,
-// small grid): `half_extent` of the box, its centre `drop` above where its bottom would sit at
+// A pool of still water `depth` deep with a box of `density` floating in it (the splat-adjoint
+// pressure, small grid): `half_extent` of the box, its centre `drop` above where its bottom would sit at
 // its expected draft.
 struct Pool {
   int dimension = 2;
@@ -24,6 +24,7 @@ struct Pool {
   glm::vec3 half_extent{0.08f, 0.05f, 0.08f};
   float spacings_per_cell = 2.0f;
   float kernel_radius_cells = 3.0f;
+  float pic_ratio = 0.3f;
 };
 
 liquid::Scene pool_scene(const Pool& pool, float density, float bottom_height, glm::vec3 velocity = glm::vec3(0.0f)) {
@@ -39,7 +40,7 @@ liquid::Scene pool_scene(const Pool& pool, float density, float bottom_height, g
   scene.gamma = 5.0f;
   // A viscous liquid (PIC 0.3 per step): the pool's sloshing and the body's bobbing die out within
   // the test's seconds.
-  scene.pic_ratio = 0.3f;
+  scene.pic_ratio = pool.pic_ratio;
   scene.substeps = 25;
   // The splat-adjoint pressure with the separable splat, as the shipped physical scenes: its still
   // water is hydrostatic (docs/physics.md, "Bodies that float").
@@ -104,11 +105,10 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 // Archimedes for a box of 500 kg/m^3, dropped with its bottom on the surface: it comes to rest
 // partly under water, the liquid bearing its weight. The target, a draft within 5 % of half its
-// height, is not met (measured 30 % short in 2D, 26 % in 3D: docs/physics.md, "Bodies that float");
-// what is checked is what holds: the liquid's force equal to the weight within 2 %, a draft between
-// half of and the expected one, and the vertical speed under `speed_bound` (the target, 1 cm/s, is met
-// in 2D; the 3D box still bobs at 1 to 2 cm/s).
-void check_floating_box(const Pool& pool, double settle_seconds, double measure_seconds, double speed_bound) {
+// height, is not met (measured 6.6 % short in 2D, 30 % in 3D: docs/physics.md, "Bodies that
+// float"); what is checked is what holds: the liquid's force equal to the weight within 2 %, a draft
+// short of the expected one by less than `draft_bound` of it, and the vertical speed under 1 cm/s.
+void check_floating_box(const Pool& pool, double settle_seconds, double measure_seconds, double draft_bound) {
   const auto start = std::chrono::steady_clock::now();
   liquid::LiquidNode node(test::gpu(), pool_scene(pool, 500.0f, pool.depth));
   const int count = node.active_particles();
@@ -131,10 +131,10 @@ void check_floating_box(const Pool& pool, double settle_seconds, double measure_
                       << " N vs weight " << weight << " N; " << seconds_since(start) << " s wall");
   WARN(pool.dimension << "D draft " << draft << " m, expected " << expected << " m (error " << 100.0 * error
                       << " %), largest vertical speed " << max_speed << " m/s");
-  CHECK(draft > 0.5 * expected);
+  CHECK(draft > (1.0 - draft_bound) * expected);
   CHECK(draft < expected);
   CHECK(std::abs(body.force.y - weight) < 0.02 * weight);
-  CHECK(max_speed < speed_bound);
+  CHECK(max_speed < 0.01);
   test::require_conserved(node, node.diagnose(), count);
 }
 
@@ -142,7 +142,7 @@ void check_floating_box(const Pool& pool, double settle_seconds, double measure_
 
 TEST_CASE("a 2D box of half the water's density comes to rest partly under water, the liquid bearing its weight",
           "[gpu][liquid][bodies]") {
-  check_floating_box(Pool{}, 1.6, 0.4, 0.01);
+  check_floating_box(Pool{}, 1.6, 0.4, 0.1);
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
@@ -156,21 +156,24 @@ TEST_CASE("a 3D box of half the water's density comes to rest partly under water
   pool.depth = 0.12f;
   pool.half_extent = {0.08f, 0.05f, 0.08f};
   pool.spacings_per_cell = 1.0f;
-  check_floating_box(pool, 0.8, 0.4, 0.02);
+  check_floating_box(pool, 0.8, 0.4, 0.4);
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
-// A coarser pool for the longer runs.
-Pool deep_pool() {
+// A coarser pool for the longer runs; `pic_ratio` lower for the runs where a body must travel
+// through the liquid (the 0.3 per step of the settling tests is a liquid viscous enough that a
+// dense box sinks at under a centimetre per second).
+Pool deep_pool(float pic_ratio = 0.3f) {
   Pool pool;
   pool.cells = 32;
   pool.depth = 0.2f;
   pool.half_extent = {0.09f, 0.06f, 0.09f};  // 4 cells from its centre to its top: past the 3-cell kernel
+  pool.pic_ratio = pic_ratio;
   return pool;
 }
 
-// A box of the water's density put under water stays where it is. The target, within 5 % of its
-// start height over 5 s, is not met: the start-up lifts it 7 % (docs/physics.md); checked: 10 %.
+// A box of the water's density put under water stays where it is: within 5 % of its start height
+// over 5 s (measured -2.5 to +2.5 %).
 TEST_CASE("a 2D box as dense as water stays where it is put under water", "[gpu][liquid][bodies]") {
   const Pool pool = deep_pool();
   const float start_bottom = 0.05f;
@@ -182,35 +185,35 @@ TEST_CASE("a 2D box as dense as water stays where it is put under water", "[gpu]
   INFO("centre from " << start << " m: between " << lowest << " and " << highest << " m over 5 s, " << track.height.back()
                       << " m at the end");
   WARN("neutral box: " << 100.0 * (lowest - start) / start << " to " << 100.0 * (highest - start) / start << " % of its start height");
-  CHECK(lowest > 0.9 * start);
-  CHECK(highest < 1.1 * start);
+  CHECK(lowest > 0.95 * start);
+  CHECK(highest < 1.05 * start);
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
-// The target, a box of 1,200 kg/m^3 sinking to the floor, is not met: the liquid under it holds it
-// (docs/physics.md, "Bodies that float": the pool's pressure is not hydrostatic cell by cell, and a
-// body at rest on it is held within about 1.2 times its hydrostatic support). Checked: it is not
-// lifted by more than a cell and comes to rest.
-TEST_CASE("a 2D box denser than water is not lifted by the liquid", "[gpu][liquid][bodies]") {
-  const Pool pool = deep_pool();
+// A box of 1,200 kg/m^3 sinks. The target, to the floor, is not met: it sinks ever slower, 2.5 cm
+// above the floor after 4 s at 0.3 cm/s (in a less viscous liquid, PIC 0.01, it comes to rest 2 cm
+// above it; docs/physics.md). Checked: it has sunk by 40 % of its start height over the
+// floor and is still sinking.
+TEST_CASE("a 2D box denser than water sinks", "[gpu][liquid][bodies]") {
+  const Pool pool = deep_pool(0.05f);
   liquid::LiquidNode node(test::gpu(), pool_scene(pool, 1200.0f, 0.05f));
   const int count = node.active_particles();
-  run_body(node, 2.0);
+  run_body(node, 4.0);
   const liquid::BodyState b = node.read_bodies().at(0);
   const double bottom = b.pose.center.y - pool.half_extent.y;
   INFO("bottom " << bottom << " m above the floor after " << node.time() << " s, vertical speed " << b.pose.velocity.y
                  << " m/s");
-  CHECK(bottom < 0.05 + node.cell_size());
-  CHECK(std::abs(b.pose.velocity.y) < 0.01);
+  CHECK(bottom < 0.6 * 0.05);
+  CHECK(b.pose.velocity.y < 0.0);
   test::require_conserved(node, node.diagnose(), count);
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
 // Boxes of 500, 1000 and 1200 kg/m^3 put at the same height in the same pool end in the order of
-// their density. The target, the light box half its half-height above the neutral one after 1.5 s,
-// is not met (1.9 cm of 3; docs/physics.md); checked: a quarter of it, and the order.
+// their density, the light box more than half its half-height above the neutral one after 1.5 s
+// (measured 4.8 cm, against 3), the neutral one above the dense one (measured 0.74 cm; checked 0.5).
 TEST_CASE("boxes lighter than, as dense as and denser than water end in the order of their density", "[gpu][liquid][bodies]") {
-  const Pool pool = deep_pool();
+  const Pool pool = deep_pool(0.05f);
   const float start_bottom = 0.05f;
   std::vector<double> heights;
   for (const float density : {500.0f, 1000.0f, 1200.0f}) {
@@ -222,20 +225,20 @@ TEST_CASE("boxes lighter than, as dense as and denser than water end in the orde
   }
   INFO("centre heights after 1.5 s: " << heights[0] << ", " << heights[1] << ", " << heights[2] << " m (started at "
                                       << start_bottom + pool.half_extent.y << " m)");
-  CHECK(heights[0] > heights[1] + 0.25 * pool.half_extent.y);
-  CHECK(heights[1] > heights[2]);
+  CHECK(heights[0] > heights[1] + 0.5 * pool.half_extent.y);
+  CHECK(heights[1] > heights[2] + 0.005);
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
-// The target is the two within 10 %; the liquid receives 76 % of the body's loss (docs/physics.md:
-// the chapter's pressure force does not conserve momentum), so what is checked is that it receives
-// most of it and never more.
-TEST_CASE("a body thrown into a pool gives the liquid most of the momentum it loses, never more", "[gpu][liquid][bodies]") {
+// The two within 10 % (measured: the liquid receives 93 %). In a FLIP liquid (PIC 0): the PIC blend
+// does not conserve momentum (the grid's velocity is splatted with the kernel and read back
+// trilinearly), and with the settling tests' 0.3 per step the liquid keeps 66 % (docs/physics.md).
+TEST_CASE("a body thrown into a pool gives the liquid the momentum it loses", "[gpu][liquid][bodies]") {
   // A light box thrown sideways and down into a wide pool. Horizontally nothing else acts on the two
   // until the pressure waves reach a wall (at the speed of sound, sqrt(k gamma) = 7 m/s), so the
   // box's loss of horizontal momentum over the first instants of the impact must be the liquid's
   // gain. (Vertically the floor and gravity take part.)
-  Pool pool = deep_pool();
+  Pool pool = deep_pool(0.0f);
   pool.domain.x = 0.72f;
   pool.cells = 48;
   liquid::Scene scene = pool_scene(pool, 500.0f, pool.depth + 0.005f, glm::vec3(1.5f, -1.0f, 0.0f));
@@ -260,8 +263,8 @@ TEST_CASE("a body thrown into a pool gives the liquid most of the momentum it lo
                << " (ratio " << liquid_gain / body_loss << ")");
   CHECK(body_loss > 0.1 * before.mass * before.pose.velocity.x);  // a real impact
   WARN("ratio " << liquid_gain / body_loss);
-  CHECK(liquid_gain > 0.6 * body_loss);
-  CHECK(liquid_gain < 1.05 * body_loss);
+  CHECK(liquid_gain > 0.9 * body_loss);
+  CHECK(liquid_gain < 1.1 * body_loss);
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 

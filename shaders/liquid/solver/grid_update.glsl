@@ -1,6 +1,6 @@
-// The grid pass's update of one cell (section 4, grid.frag) and the pressure it reads, which the
-// body force pass (body_force.vert) integrates over each dynamic body's surface. Include after
-// common.glsl; SPLAT_ADJOINT as in grid.frag.
+// The grid pass's update of one cell (section 4, grid.frag), with the no-inflow condition the body
+// exchange pass (body_exchange.vert) also applies. Include after common.glsl; SPLAT_ADJOINT as in
+// grid.frag.
 #ifndef LIQUID_GRID_UPDATE_GLSL
 #define LIQUID_GRID_UPDATE_GLSL
 #include "liquid/solver/pressure.glsl"
@@ -14,12 +14,12 @@ layout(set = 0, binding = LIQUID_BINDING_GRID_SPLAT) uniform GRID_SAMPLER u_spla
 layout(set = 0, binding = LIQUID_BINDING_GRID_POTENTIAL) uniform GRID_SAMPLER u_potential;
 #endif
 
-// Pressure at neighbour cell c (clamped into the grid, which makes the difference one-sided at the
-// walls) whose kernel share inside the domain is `coverage`: liquid (read without the dynamic
-// bodies' hole) plus obstacle or ground density.
+// The chapter's pressure at neighbour cell c (clamped into the grid, which makes the difference
+// one-sided at the walls) whose kernel share inside the domain is `coverage`: liquid plus obstacle
+// or ground density. (Dynamic bodies need the splat-adjoint pressure, whose P is pressure.frag's.)
 float pressure_at(ivec3 c, float coverage) {
   c = clamp(c, ivec3(0), grid_cells() - 1);
-  float rho = u.density_scale * fetch_grid(u_splat, c).a / (coverage * body_coverage(cell_center(c)));
+  float rho = u.density_scale * fetch_grid(u_splat, c).a / coverage;
   rho += obstacle_density_at_cell(c);
   if (shallow_water()) rho += u.rest_density * ground_height(cell_center(c).xy) / u.rest_depth;
   return pressure_from_density(rho);

@@ -1,7 +1,7 @@
 #version 450
 // Splat-adjoint pressure, first pass: the pressure P of every cell (section 2.1's Tait form with the
 // walls' coverage, plus the obstacles' and the ground's artificial density, section 6), exactly as
-// grid.frag computes it for its neighbours (with the dynamic bodies' kernel coverage, grid_update.glsl).
+// grid.frag computes it for its neighbours, with the dynamic bodies' kernel coverage (body_coverage).
 // potential.frag then smooths it.
 // Output: target 0 = P (m^2/s^2).
 #extension GL_GOOGLE_include_directive : require
