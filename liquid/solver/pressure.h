@@ -28,17 +28,19 @@ constexpr VkFormat k_pressure_format = VK_FORMAT_R32_SFLOAT;
 
 class PressurePass {
  public:
+  // `active_region`: its passes compute the step's active region only (active_region.h).
   PressurePass(engine::vk::Context& context, const GridLayout& layout, SplatMode splat,
-               const std::vector<int32_t>& specialization, bool meshes = false);
+               const std::vector<int32_t>& specialization, bool meshes, bool active_region);
 
   // Grid-sized descriptions of the two intermediate images (the node creates them as transients).
   engine::vk::ImageDesc image_desc() const { return desc_; }
 
   // Reads `splat`, writes P into `pressure` and smooths it into Phi (both handles are advanced to
   // their new versions); returns Phi, which is in `potential`, or in `pressure` for the separable
-  // splat's spread in 2D (its passes alternate between the two images).
+  // splat's spread in 2D (its passes alternate between the two images). `region`: the step's active
+  // region (valid exactly when the pass was made for one).
   ImageHandle add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle splat,
-                     ImageHandle& pressure, ImageHandle& potential, ImageHandle mesh_field = {}) const;
+                     ImageHandle& pressure, ImageHandle& potential, ImageHandle mesh_field, ImageHandle region) const;
 
  private:
   engine::vk::GraphicsPipeline pressure_;
@@ -46,6 +48,8 @@ class PressurePass {
   std::optional<SeparableBlur> spread_;                     // the separable splat's passes
   engine::vk::Sampler nearest_;  // also the mesh field's (P reads the obstacles' density at cell centres)
   engine::vk::ImageDesc desc_;
+  GridLayout layout_;
+  bool active_region_ = false;
 };
 
 }  // namespace liquid

@@ -10,6 +10,7 @@
 #include "liquid/analysis/diagnostics.h"
 #include "liquid/physics/setup.h"
 #include "liquid/scene.h"
+#include "liquid/solver/active_region.h"
 #include "liquid/solver/grid.h"
 #include "liquid/solver/mesh_field.h"
 #include "liquid/solver/particle_update.h"
@@ -89,11 +90,15 @@ class Simulation {
     ImageHandle pressure, potential;
   };
   PressureImages create_pressure_images(engine::graph::RenderGraph& graph) const;
+  // The scene's splat of the first `active` particles into `splat`, and the step's active region
+  // (active_region.h; invalid when the grid passes compute every cell).
+  struct Splat {
+    ImageHandle splat, region;
+  };
+  Splat add_splat(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
+                  const ParticleImages& particles, ImageHandle splat, int active) const;
   // One step's grid pass, after the splat-adjoint pressure passes when the scene uses them.
-  // The scene's splat of the first `active` particles into `splat`.
-  ImageHandle add_splat(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
-                        const ParticleImages& particles, ImageHandle splat, int active) const;
-  GridImages add_grid(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice, ImageHandle splat,
+  GridImages add_grid(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice, const Splat& splat,
                       const GridImages& grids, PressureImages& pressure, ImageHandle mesh_field) const;
   // The mesh field for obstacles at `poses` (voxelized again when a mesh moved); invalid without meshes.
   ImageHandle update_mesh_field(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
@@ -111,6 +116,7 @@ class Simulation {
   uint32_t frames_in_flight_ = 2;
   std::unique_ptr<SplatPass> splat_;                     // the scene's splat: the chapter's point sprites,
   std::unique_ptr<SeparableSplatPass> separable_splat_;  // or the separable deposit and spread
+  std::unique_ptr<ActiveRegion> active_region_;  // 3D, unless LiquidOptions::active_region is off
   std::unique_ptr<GridPass> grid_;
   std::unique_ptr<PressurePass> pressure_;  // only with the splat-adjoint pressure
   std::unique_ptr<ParticleUpdatePass> particle_update_;

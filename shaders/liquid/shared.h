@@ -61,6 +61,11 @@
 #define LIQUID_BINDING_MESH_INSIDE 1        // mesh_field.frag: the signed crossing counts
 #define LIQUID_BINDING_MESH_BAND 2          // mesh_field.frag: the unsigned narrow-band distance
 // Views.
+// The active region (liquid/solver/active_region.h): the 3D grid passes' vertex shader reads the
+// rectangle of each slice; the reduction passes read the marks (a grid) and then the rows' spans.
+#define LIQUID_BINDING_ACTIVE_REGION 9
+#define LIQUID_BINDING_ACTIVE_MARKS 1
+#define LIQUID_BINDING_ACTIVE_ROWS 1
 #define LIQUID_BINDING_VIEW_UNIFORMS 1      // raymarch, height field: the view's own block
 #define LIQUID_BINDING_VIEW2D_DENSITY 1
 #define LIQUID_BINDING_VIEW2D_DEPTH 2        // view2d.frag: view2d_depth.frag's depth below the surface
@@ -160,6 +165,7 @@ LIQUID_STRUCT(SolverUniforms) {
   float rest_depth;        // shallow water: depth at rest, m
   int atlas_columns;       // the atlas path: columns and rows of slice tiles (liquid/solver/grid_layout.h);
   int atlas_rows;          // 1 and 1 otherwise
+  int active_region_margin_cells;  // 3D: how far the grid passes' region reaches past the marks (active_region.h)
   // Fraction of the kernel's mass beyond a wall k + 0.5 cells from a cell centre: [k / 4][k % 4].
   LIQUID_ALIGN16 vec4 wall_kernel_beyond[LIQUID_WALL_TABLE_SIZE / 4];
   Obstacle obstacles[LIQUID_MAX_OBSTACLES];
