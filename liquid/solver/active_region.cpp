@@ -34,6 +34,10 @@ engine::vk::ImageDesc plain_image(uint32_t width, uint32_t height, VkFormat form
 
 }  // namespace
 
+int active_region_bands(const GridLayout& layout) {
+  return (layout.cells.y + LIQUID_ACTIVE_REGION_BAND_ROWS - 1) / LIQUID_ACTIVE_REGION_BAND_ROWS;
+}
+
 int active_region_margin_cells(const SimulationSetup& setup) {
   const int r = int(std::ceil(setup.kernel_radius_cells));
   const int splat = setup.splat == SplatMode::Separable ? r + 1 : 0;
@@ -50,7 +54,7 @@ ActiveRegion::ActiveRegion(engine::vk::Context& context, const GridLayout& layou
                                           LIQUID_BINDING_ACTIVE_ROWS, k_rectangle_format, specialization)),
       nearest_(context, VK_FILTER_NEAREST),
       rows_desc_(plain_image(uint32_t(layout.cells.y), uint32_t(layout.cells.z), k_rows_format)),
-      slices_desc_(plain_image(uint32_t(layout.cells.z), 1, k_rectangle_format)) {}
+      slices_desc_(plain_image(uint32_t(active_region_bands(layout)), uint32_t(layout.cells.z), k_rectangle_format)) {}
 
 ImageHandle ActiveRegion::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
                                  ImageHandle marks) const {
@@ -101,7 +105,8 @@ void draw_grid_cells(const PassContext& ctx, const GridLayout& layout, bool acti
     engine::passes::draw_fullscreen(ctx.cmd, ctx.layers);
     return;
   }
-  vkCmdDraw(ctx.cmd, k_rectangle_vertices, uint32_t(layout.cells.z), 0, 0);  // an instance per slice
+  // An instance per band of each slice.
+  vkCmdDraw(ctx.cmd, k_rectangle_vertices, uint32_t(active_region_bands(layout) * layout.cells.z), 0, 0);
 }
 
 }  // namespace liquid

@@ -2,17 +2,18 @@
 // through the air), and the full-screen grid passes (the separable splat's spreads, the pressure and
 // potential passes, the grid pass) cost the same for an empty cell as for a full one. So after the
 // step's particles are on the grid (the separable splat's deposit, or the point-sprite splat), two
-// small passes reduce that grid's marks to one rectangle of cells per slice: every marked cell of
-// the slices within `margin` of it, widened by `margin` in x and y. The step's grid passes then
-// draw those rectangles instead of whole slices (shaders/liquid/solver/active_region.vert) into
-// targets cleared to zero first.
+// small passes reduce that grid's marks to one rectangle of cells per band of
+// LIQUID_ACTIVE_REGION_BAND_ROWS rows of each slice: every marked cell of the slices and rows within
+// `margin` of the band, widened by `margin` in x and y and kept within the band. The step's grid
+// passes then draw those rectangles instead of whole slices (shaders/liquid/solver/
+// active_region.vert) into targets cleared to zero first.
 //
 // Same results: a pass's value outside the region is what the whole-grid pass would have written,
 // zero, wherever a later pass reads it (margin_cells() says why); the grid pass's velocity in a
 // cell without liquid, which nothing reads (its fluid flag is 0), is zero there instead of its
 // gravity step. A test runs the same scenes both ways and compares the particles bit for bit.
 //   liquid.active_rows    one fragment per row (y, z): the span of marked x (active_rows.frag)
-//   liquid.active_slices  one fragment per slice: its rectangle (active_slices.frag)
+//   liquid.active_slices  one fragment per band of a slice: its rectangle (active_slices.frag)
 // 2D grids (and so shallow water) are not trimmed: their passes cost little beside the splat's
 // points, and two more passes with their barriers would cost about what they save.
 #pragma once
@@ -39,13 +40,16 @@ namespace liquid {
 //     gathers the pressure r cells around them (the pressure is not zero outside the liquid near
 //     obstacles): + r + 2.
 int active_region_margin_cells(const SimulationSetup& setup);
+// Bands of LIQUID_ACTIVE_REGION_BAND_ROWS rows per slice (the last may be shorter).
+int active_region_bands(const GridLayout& layout);
 
 class ActiveRegion {
  public:
   ActiveRegion(engine::vk::Context& context, const GridLayout& layout, const std::vector<int32_t>& specialization);
 
   // Declares the two reductions of `marks` (a grid whose alpha is non-zero where particles put
-  // weight) and returns the rectangles: a cells.z x 1 RGBA32F image, texel z = (x0, y0, x1, y1).
+  // weight) and returns the rectangles: a bands x cells.z RGBA32F image, texel (band, z) =
+  // (x0, y0, x1, y1).
   ImageHandle add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
                      ImageHandle marks) const;
 

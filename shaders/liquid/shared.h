@@ -66,6 +66,9 @@
 #define LIQUID_BINDING_ACTIVE_REGION 9
 #define LIQUID_BINDING_ACTIVE_MARKS 1
 #define LIQUID_BINDING_ACTIVE_ROWS 1
+// The active region is a rectangle per band of this many rows of each slice, so the air between a
+// pool and liquid above it is skipped too.
+#define LIQUID_ACTIVE_REGION_BAND_ROWS 8
 #define LIQUID_BINDING_VIEW_UNIFORMS 1      // raymarch, height field: the view's own block
 #define LIQUID_BINDING_VIEW2D_DENSITY 1
 #define LIQUID_BINDING_VIEW2D_DEPTH 2        // view2d.frag: view2d_depth.frag's depth below the surface

@@ -1,7 +1,8 @@
 #version 450
 // The 3D grid passes' vertex shader when a step computes only its active region
-// (liquid/solver/active_region.h): instance z draws slice z's rectangle of cells (two triangles, six
-// vertices) instead of the whole slice, or nothing when the slice has none. On the layered paths
+// (liquid/solver/active_region.h): instance i draws the rectangle of cells of band i % bands of
+// slice i / bands (two triangles, six vertices), or nothing when the band has none, instead of
+// whole slices. On the layered paths
 // the slice is a layer: written here as gl_Layer (VERTEX_LAYER=1), or routed by the layered
 // full-screen geometry shader from v_layer; on the atlas path the rectangle is placed in the slice's
 // tile. The same outputs as the full-screen vertex shaders, so every grid fragment shader runs
@@ -26,8 +27,9 @@ layout(location = 1) flat out int v_layer;  // the slice, on the layered paths (
 const vec2 k_corners[6] = vec2[](vec2(0, 0), vec2(1, 0), vec2(1, 1), vec2(0, 0), vec2(1, 1), vec2(0, 1));
 
 void main() {
-  int z = gl_InstanceIndex;
-  vec4 rectangle = texelFetch(u_region, ivec2(z, 0), 0);  // (x0, y0, x1, y1) cells, inclusive
+  int bands = textureSize(u_region, 0).x;
+  int z = gl_InstanceIndex / bands;
+  vec4 rectangle = texelFetch(u_region, ivec2(gl_InstanceIndex - z * bands, z), 0);  // (x0, y0, x1, y1), inclusive
   vec2 lo = rectangle.xy;
   vec2 hi = rectangle.x <= rectangle.z ? rectangle.zw + 1.0 : lo;  // empty: a degenerate pair
   vec2 pixel = mix(lo, hi, k_corners[gl_VertexIndex]);
