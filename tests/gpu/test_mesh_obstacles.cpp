@@ -45,7 +45,7 @@ void check_sphere_field(liquid::LiquidNode& node, glm::vec3 center, float radius
   const std::vector<glm::vec4> field = sim.mesh_field()->read(node.context());
   const float h = node.cell_size(), band = sim.mesh_field()->band();
   const glm::ivec3 n = node.grid_cells();
-  float worst = 0.0f;
+  float worst = 0.0f, worst_at = 0.0f;
   int wrong_sign = 0, compared = 0;
   for (int z = 0; z < n.z; ++z)
     for (int y = 0; y < n.y; ++y)
@@ -56,14 +56,17 @@ void check_sphere_field(liquid::LiquidNode& node, glm::vec3 center, float radius
         const float d = field[size_t(x) + size_t(n.x) * (size_t(y) + size_t(n.y) * z)].x;
         if (std::abs(exact) > 0.1f * h && (d < 0.0f) != (exact < 0.0f)) ++wrong_sign;
         if (std::abs(exact) < band - 0.1f * h) {
-          worst = std::max(worst, std::abs(d - exact));
+          if (std::abs(d - exact) > worst) {
+            worst = std::abs(d - exact);
+            worst_at = exact;
+          }
           ++compared;
         } else if (std::abs(exact) > band + 0.1f * h && std::abs(d) < band * 0.999f) {
           ++wrong_sign;  // beyond the band the field holds the clamp
         }
       }
-  INFO("cells compared " << compared << ", worst |field - exact| " << worst / h << " cells, wrong sign or clamp "
-                         << wrong_sign);
+  INFO("cells compared " << compared << ", worst |field - exact| " << worst / h << " cells (where the exact distance is "
+                         << worst_at / h << " cells), wrong sign or clamp " << wrong_sign);
   CHECK(compared > 100);
   CHECK(wrong_sign == 0);
   CHECK(worst < 0.25f * h);
