@@ -208,9 +208,6 @@ ImageHandle MeshField::update(engine::graph::RenderGraph& graph, const engine::v
     push.local_to_world = placements[k];
     push.slot = int(k);
     push.band = band_;
-    // Enough for a seed within LIQUID_MESH_SEED_CELLS of the surface to reach a cell at the band's
-    // edge along each axis, with half a cell for the seed's offset from the cell's foot point.
-    push.reach = int(std::ceil(band_cells - gpu::k_mesh_seed_cells + 0.5f));
     const glm::ivec3 cells = layout_.cells;
     push.box_min = glm::ivec4(glm::clamp(glm::ivec3(glm::floor(lo - band_cells)), glm::ivec3(0), cells), 0);
     push.box_max = glm::ivec4(glm::clamp(glm::ivec3(glm::ceil(hi + band_cells)), glm::ivec3(0), cells), 0);
@@ -237,6 +234,13 @@ ImageHandle MeshField::update(engine::graph::RenderGraph& graph, const engine::v
   reset.insert(reset.end(), boxes.begin(), boxes.end());
   unconfirmed_ = std::exchange(written_, boxes);
 
+  // The jump flood's steps: halving down to 1, then the field pass's 1. Together they reach, along
+  // each axis, the cells a seed within LIQUID_MESH_SEED_CELLS of the surface must reach at the
+  // band's edge, with half a cell for the seed's offset from the cell's foot point.
+  const int reach = int(std::ceil(band_cells - gpu::k_mesh_seed_cells + 0.5f));
+  std::vector<int> spread_steps{1};
+  while (2 * spread_steps.front() - 1 + 1 < reach) spread_steps.insert(spread_steps.begin(), 2 * spread_steps.front());
+
   const engine::vk::ImageDesc nearest_desc = layout_.image_desc(k_nearest_format, 0);
   const ImageHandle inside = add_inside_pass(graph, uniforms, graph.latest(inside_handle_), pushes, inside_instances);
   ImageHandle nearest = graph.create_image("liquid.mesh_nearest", nearest_desc);
@@ -244,14 +248,13 @@ ImageHandle MeshField::update(engine::graph::RenderGraph& graph, const engine::v
   ImageHandle depth = graph.create_image("liquid.mesh_seed_depth", depth_desc(layout_));
   for (size_t k = 0; k < meshes_.size(); ++k) {
     nearest = add_seed_pass(graph, uniforms, k, nearest, depth, pushes[k], seed_instances[k]);
-    // Spread along every axis, then the field pass's neighbourhood.
-    for (int axis = 0; axis < layout_.dimension; ++axis) {
-      pushes[k].axis = axis;
-      const char* names[] = {"liquid.mesh_spread_x", "liquid.mesh_spread_y", "liquid.mesh_spread_z"};
-      const BoxPass pass{names[axis], &spread_, Access::ColorAttachmentWrite};
-      spread = add_box_pass(graph, uniforms, pass, nearest, ImageHandle{}, spread, pushes[k], {});
+    for (int step : spread_steps) {
+      pushes[k].step = step;
+      spread = add_box_pass(graph, uniforms, {"liquid.mesh_spread", &spread_, Access::ColorAttachmentWrite}, nearest,
+                            ImageHandle{}, spread, pushes[k]);
       std::swap(nearest, spread);
     }
+    pushes[k].step = 1;
     const BoxPass pass{"liquid.mesh_field", &field_pipeline_, Access::ColorAttachmentBlend};
     field = add_box_pass(graph, uniforms, pass, nearest, inside, field, pushes[k], k == 0 ? reset : std::vector<MeshBox>{});
   }

@@ -32,7 +32,7 @@
 // The seed pass writes each triangle's exact closest point into the cells within this many cells of
 // it: half a cell's diagonal, so every cell the surface crosses is seeded, the spread passes
 // carrying the closest points on to the whole band. The seed pass's cost grows with its cube.
-#define LIQUID_MESH_SEED_CELLS 0.8660254
+#define LIQUID_MESH_SEED_CELLS 1.5
 // The closest point of a cell no seed reached, and what a mesh's field draw leaves in the other
 // meshes' channels (MIN blending keeps the smaller); above any band.
 #define LIQUID_MESH_FAR 1.0e4
@@ -182,8 +182,8 @@ LIQUID_STRUCT(SolverUniforms) {
 LIQUID_PUSH(MeshRasterPush) {
   mat4 local_to_world;     // the mesh's transform: centre + rotation * scale * vertex
   int slot;                // the mesh field's channel
-  int axis;                // the spread passes: the axis they search along
-  int reach;               // the spread passes: the cells searched on either side
+  int step;                // the spread and field passes: cells between the neighbours they read
+  int unused;
   float band;              // m: the field's band (the seed pass's depth scale)
   ivec4 box_min;           // the cells within the band of the mesh's bounds, [box_min, box_max) (xyz)
   ivec4 box_max;
