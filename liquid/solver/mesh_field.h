@@ -2,25 +2,27 @@
 // layout, RGBA32F) holding each mesh's signed distance (m, negative inside) in its own channel,
 // which the grid, pressure and particle passes sample as they evaluate an analytic obstacle's
 // (common.glsl, MESH_FIELD). Redone in a step when a mesh's placement changed, and only over each
-// mesh's box (the cells within the band of its bounds; the field is the band outside every box):
-//   liquid.mesh_inside    each triangle drawn, looking along z, into the slices whose span between
-//                         cell centres it crosses: +-1 by its facing, added by blending
-//                         (mesh_inside.frag). Summed from a cell up (the field pass): non-zero inside.
-//   liquid.mesh_seed      per triangle and slice within LIQUID_MESH_SEED_CELLS (a cell) of it, the
-//                         rectangle of cells within that of its part in the slice: the exact closest
-//                         point, the closest kept by the depth test (mesh_seed.frag).
-//   liquid.mesh_spread_x  full-screen passes over the box (scissored), one per axis: each cell takes
-//   liquid.mesh_spread_y  the closest to it of the points held along the axis up to the band's reach
-//   liquid.mesh_field     (mesh_spread.frag; a one-step separable jump flood). The last axis's pass
-//                         writes the field: the distance, clamped to the band, signed by the counts.
+// mesh's box (the cells within the band of its bounds; the field holds the band outside every box):
+//   liquid.mesh_inside  each triangle drawn, looking along z, into the slices whose span between
+//                       cell centres it crosses: +-1 by its facing, added by blending
+//                       (mesh_inside.frag). The field pass sums them from a cell up: non-zero inside.
+//   liquid.mesh_seed    per triangle and slice within LIQUID_MESH_SEED_CELLS (1.5 cells) of it, a
+//                       triangle holding the cells within that of its part in the slice: the exact
+//                       closest point, the closest kept by the depth test (mesh_seed.frag).
+//   liquid.mesh_spread  a jump flood over the box (full-screen passes cut to it by the scissor):
+//                       each cell takes the closest to it of the points held by the 27 cells `step`
+//                       apart around it, steps halving to 1 (mesh_spread.frag).
+//   liquid.mesh_field   one more step of 1, then the distance, clamped to the band and signed by the
+//                       counts, MIN-blended into the mesh's channel.
 // The band is obstacle_band + LIQUID_MESH_FIELD_MARGIN_CELLS cells: what the obstacle density and
-// its normal read. Within a cell of the surface the distance is exact (the seeds); beyond, it is
-// the distance to the closest of the seeds' points, a little over the exact one where the closest
-// surface point lies between them (docs/lavapipe-performance.md, "Mesh obstacles"). Graphics
-// pipeline only; every 3D path (layered by the vertex or geometry shader, or the atlas's tiles). In
-// 2D the grid's cells lie at z = 0: the mesh's cross-section. The seed, spread and field passes run
-// once per mesh. Shaders: shaders/liquid/solver/mesh_raster.vert, mesh_raster.geom,
-// mesh_inside.frag, mesh_seed.frag, mesh_spread.frag.
+// its normal read. Within the seed band the distance is exact (where the grid pass reads the
+// normal); beyond, it is the distance to the closest of the seeds' points, at most about a tenth of
+// a cell over the exact one where the closest surface point lies between them
+// (docs/lavapipe-performance.md, "Mesh obstacles"). Graphics pipeline only; every 3D path (layered
+// by the vertex or geometry shader, or the atlas's tiles). In 2D the grid's cells lie at z = 0: the
+// mesh's cross-section. The seed, spread and field passes run once per mesh. Shaders:
+// shaders/liquid/solver/mesh_raster.vert, mesh_raster.geom, mesh_inside.frag, mesh_seed.frag,
+// mesh_spread.frag.
 #pragma once
 
 #include "engine/passes/bindings.h"
