@@ -234,12 +234,12 @@ ImageHandle MeshField::update(engine::graph::RenderGraph& graph, const engine::v
   reset.insert(reset.end(), boxes.begin(), boxes.end());
   unconfirmed_ = std::exchange(written_, boxes);
 
-  // The jump flood's steps: halving down to 1, then the field pass's 1. Together they reach, along
-  // each axis, the cells a seed within LIQUID_MESH_SEED_CELLS of the surface must reach at the
-  // band's edge, with half a cell for the seed's offset from the cell's foot point.
+  // The jump flood's steps, halving down to 1: with the field pass's 1 they reach 2 * first cells
+  // along each axis, which must be as far as a seed within LIQUID_MESH_SEED_CELLS of the surface
+  // is from a cell at the band's edge, plus half a cell for the seed's offset from the cell's foot.
   const int reach = int(std::ceil(band_cells - gpu::k_mesh_seed_cells + 0.5f));
   std::vector<int> spread_steps{1};
-  while (2 * spread_steps.front() - 1 + 1 < reach) spread_steps.insert(spread_steps.begin(), 2 * spread_steps.front());
+  while (2 * spread_steps.front() < reach) spread_steps.insert(spread_steps.begin(), 2 * spread_steps.front());
 
   const engine::vk::ImageDesc nearest_desc = layout_.image_desc(k_nearest_format, 0);
   const ImageHandle inside = add_inside_pass(graph, uniforms, graph.latest(inside_handle_), pushes, inside_instances);
