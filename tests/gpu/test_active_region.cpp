@@ -1,14 +1,16 @@
 // The active region (liquid/solver/active_region.h): a 3D step whose grid passes compute only the
 // cells near liquid gives bit for bit the particles of one that computes every cell, on every 3D
-// path, with either splat and either pressure force, with an obstacle the liquid has not reached
-// (whose artificial density makes the splat-adjoint pressure non-zero where no liquid is) and an
-// emitter adding particles where there were none; and it does trim: the cells it skips are the
-// zeros of the cleared targets, where the whole grid writes its gravity step.
+// path, with either splat and either pressure force, with obstacles the liquid has not reached
+// (an analytic sphere and a mesh one, whose artificial density makes the splat-adjoint pressure
+// non-zero where no liquid is) and an emitter adding particles where there were none; and it does
+// trim: the cells it skips are the zeros of the cleared targets, where the whole grid writes its
+// gravity step.
 #include "engine/graph/render_graph.h"
 #include "liquid/node.h"
 #include "liquid/scene.h"
 #include "tests/gpu/liquid_helpers.h"
 #include "tests/support/gpu.h"
+#include "tests/support/meshes.h"
 
 #include <catch2/catch.hpp>
 
@@ -60,7 +62,8 @@ TEMPLATE_TEST_CASE("the active region gives the particles of the whole grid bit 
                    test::AtlasPath) {
   for (const auto& [splat, pressure] : {std::pair{"point_sprite", "chapter"}, std::pair{"separable", "splat_adjoint"}}) {
     INFO(splat << " splat, " << pressure << " pressure");
-    const liquid::Scene scene = liquid::parse_scene(pool_with_jet(splat, pressure), "active_region.json");
+    liquid::Scene scene = liquid::parse_scene(pool_with_jet(splat, pressure), "active_region.json");
+    scene.obstacles.push_back(test::mesh_obstacle_of(test::icosphere(0.04f, 2), glm::vec3(0.3f, 0.45f, 0.1f)));
     const int steps = 40;  // the jet crosses about 2.4 cm (a cell) of air, the pool sloshes
     const Run region = run(TestType::path, scene, true, steps);
     const Run whole = run(TestType::path, scene, false, steps);
@@ -70,7 +73,7 @@ TEMPLATE_TEST_CASE("the active region gives the particles of the whole grid bit 
     CHECK(region.particles.velocities == whole.particles.velocities);
     // The pool fills 3 of 40 rows and its region reaches 9 rows above it at most (the splat-adjoint
     // margin, 2 r + 3), the jet's 9 rows around row 15: the top 15 rows, over a third of the grid,
-    // are skipped. The whole grid's zeros are the cells inside the sphere, still.
+    // are skipped. The whole grid's zeros are the cells inside the spheres, still.
     const size_t cells = region.grid_velocity.size();
     INFO("cells " << cells << ", zero with the region " << zero_cells(region.grid_velocity) << ", whole grid "
                   << zero_cells(whole.grid_velocity));

@@ -93,6 +93,18 @@ void emit(int index, EmitterRange e) {
   out_velocity = vec4(e.velocity, 0.0);
 }
 
+// Obstacle i: a particle at x inside it or within `skin` of it is moved back to that distance from
+// its surface (kept in [lo, hi]) and loses its velocity v into it, relative to the obstacle.
+void push_out(int i, MeshSample meshes, float skin, vec3 lo, vec3 hi, inout vec3 x, inout vec3 v) {
+  if (i >= obstacle_count()) return;
+  float d = obstacle_distance(i, x, meshes);
+  if (d >= skin) return;
+  vec3 normal = obstacle_normal(i, x, meshes);
+  x = clamp_to_bounds(x + (skin - d) * normal, lo, hi);
+  float into = dot(v - u.obstacles[i].velocity, normal);
+  if (into < 0.0) v -= into * normal;
+}
+
 void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy);
   int index = texel.y * u.particle_texture_width + texel.x;
@@ -133,14 +145,9 @@ void main() {
   float skin = 0.5 * cell_size();
   [[unroll]] for (int pass = 0; pass < 2; ++pass) {
     MeshSample meshes = mesh_sample(x_new, true);
-    [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
-      float d = obstacle_distance(i, x_new, meshes);
-      if (d >= skin) continue;
-      vec3 normal = obstacle_normal(i, x_new, meshes);
-      x_new = clamp_to_bounds(x_new + (skin - d) * normal, lo, hi);
-      float into = dot(v - u.obstacles[i].velocity, normal);
-      if (into < 0.0) v -= into * normal;
-    }
+#define LIQUID_PUSH_OUT(i) push_out(i, meshes, skin, lo, hi, x_new, v);
+    FOR_EACH_OBSTACLE(LIQUID_PUSH_OUT)
+#undef LIQUID_PUSH_OUT
   }
 
   // Walls: no velocity into a wall the particle was clamped against.
