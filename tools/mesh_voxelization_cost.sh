@@ -5,7 +5,8 @@
 # pool. Each is run with the torus moving (voxelized every step) and standing still (voxelized
 # once), and the scene once without it: moving - still is the voxelization, still - none what
 # sampling the field costs the grid and particle passes. Prints liquid_run's median wall time per
-# step and GPU time per pass (the three liquid.mesh_* passes are one voxelization).
+# step and GPU time per pass (the liquid.mesh_* passes are one voxelization; liquid.mesh_spread's
+# median is one of its passes, of which there are log2 of the band's reach: 2 at the default band).
 # Usage: tools/mesh_voxelization_cost.sh [BUILD_DIR] [STEPS]   (figures: docs/lavapipe-performance.md)
 set -euo pipefail
 build=${1:-build}

@@ -133,6 +133,22 @@ engine::vk::HostDevice HostVulkan::host_device() const {
   return host;
 }
 
+namespace {
+
+// The first memory type `requirements` allow that has every one of `properties`.
+uint32_t memory_type(VkPhysicalDevice physical_device, const VkMemoryRequirements& requirements,
+                     VkMemoryPropertyFlags properties) {
+  VkPhysicalDeviceMemoryProperties memory_properties{};
+  vkGetPhysicalDeviceMemoryProperties(physical_device, &memory_properties);
+  for (uint32_t type = 0; type < memory_properties.memoryTypeCount; ++type)
+    if ((requirements.memoryTypeBits & (1u << type)) &&
+        (memory_properties.memoryTypes[type].propertyFlags & properties) == properties)
+      return type;
+  throw std::runtime_error("no memory type for a host resource");
+}
+
+}  // namespace
+
 HostImage::HostImage(VkPhysicalDevice physical_device, VkDevice device_, uint32_t width, uint32_t height,
                      VkFormat format, VkImageUsageFlags usage)
     : device(device_) {
@@ -149,13 +165,7 @@ HostImage::HostImage(VkPhysicalDevice physical_device, VkDevice device_, uint32_
   host_check(vkCreateImage(device, &info, nullptr, &image), "vkCreateImage");
   VkMemoryRequirements requirements{};
   vkGetImageMemoryRequirements(device, image, &requirements);
-  VkPhysicalDeviceMemoryProperties memory_properties{};
-  vkGetPhysicalDeviceMemoryProperties(physical_device, &memory_properties);
-  uint32_t type = 0;
-  while (type < memory_properties.memoryTypeCount &&
-         !((requirements.memoryTypeBits & (1u << type)) &&
-           (memory_properties.memoryTypes[type].propertyFlags & VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT)))
-    ++type;
+  const uint32_t type = memory_type(physical_device, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
   VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
   alloc.allocationSize = requirements.size;
   alloc.memoryTypeIndex = type;
@@ -165,5 +175,32 @@ HostImage::HostImage(VkPhysicalDevice physical_device, VkDevice device_, uint32_
 
 HostImage::~HostImage() {
   if (image) vkDestroyImage(device, image, nullptr);
+  if (memory) vkFreeMemory(device, memory, nullptr);
+}
+
+HostBuffer::HostBuffer(VkPhysicalDevice physical_device, VkDevice device_, const void* bytes, VkDeviceSize size_,
+                       VkBufferUsageFlags usage)
+    : device(device_), size(size_) {
+  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+  info.size = size;
+  info.usage = usage;
+  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  host_check(vkCreateBuffer(device, &info, nullptr, &buffer), "vkCreateBuffer");
+  VkMemoryRequirements requirements{};
+  vkGetBufferMemoryRequirements(device, buffer, &requirements);
+  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  alloc.allocationSize = requirements.size;
+  alloc.memoryTypeIndex = memory_type(physical_device, requirements,
+                                      VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+  host_check(vkAllocateMemory(device, &alloc, nullptr, &memory), "vkAllocateMemory");
+  host_check(vkBindBufferMemory(device, buffer, memory, 0), "vkBindBufferMemory");
+  void* mapped = nullptr;
+  host_check(vkMapMemory(device, memory, 0, size, 0, &mapped), "vkMapMemory");
+  std::memcpy(mapped, bytes, size_t(size));
+  vkUnmapMemory(device, memory);
+}
+
+HostBuffer::~HostBuffer() {
+  if (buffer) vkDestroyBuffer(device, buffer, nullptr);
   if (memory) vkFreeMemory(device, memory, nullptr);
 }

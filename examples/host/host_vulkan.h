@@ -1,6 +1,7 @@
 // The host's own Vulkan objects, made with plain Vulkan as an engine would: an instance (with the
 // validation layer and synchronization validation when asked), a device that enables what the
-// liquid library needs (engine/vk/device_requirements.h), and images with their own memory.
+// liquid library needs (engine/vk/device_requirements.h), and images and buffers with their own
+// memory.
 #pragma once
 
 #include "engine/vk/context.h"
@@ -46,6 +47,20 @@ struct HostImage {
   VkDevice device = VK_NULL_HANDLE;
   VkImage image = VK_NULL_HANDLE;
   VkDeviceMemory memory = VK_NULL_HANDLE;
+};
+
+// A buffer in host-visible, coherent memory, filled once from `bytes` (the host's geometry).
+struct HostBuffer {
+  HostBuffer(VkPhysicalDevice physical_device, VkDevice device, const void* bytes, VkDeviceSize size,
+             VkBufferUsageFlags usage);
+  ~HostBuffer();
+  HostBuffer(const HostBuffer&) = delete;
+  HostBuffer& operator=(const HostBuffer&) = delete;
+
+  VkDevice device = VK_NULL_HANDLE;
+  VkBuffer buffer = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  VkDeviceSize size = 0;
 };
 
 // Throws std::runtime_error naming the call when a Vulkan call fails.

@@ -1,6 +1,7 @@
 // liquid_host: a host engine using RasterLiquids as a game engine would. It owns the Vulkan
-// instance, device and queue, its targets, its camera and its scene (a floor and a box standing in
-// the water), and each frame adds the liquid to its own command buffer:
+// instance, device and queue, its targets, its camera and its scene (a floor and a paddle turning in
+// the water, a mesh of its own that it also gives the liquid), and each frame adds the liquid to its
+// own command buffer:
 //   host scene pass (plain Vulkan: HDR colour, reversed-Z depth, its own orbiting camera)
 //   -> liquid node (splat, grid, particle per step) -> liquid renderer, composited into the HDR
 //      scene through the host's camera, the tank placed rotated in the host's world
@@ -9,6 +10,7 @@
 // Two frames are in flight, each with its own render graph, command buffer and fence.
 //   liquid_host SCENE.json [--panel SCENE_2D.json] [--frames N] [--steps-per-frame K] [--width W]
 //               [--height H] [--out DIR] [--validation]
+#include "host_mesh.h"
 #include "host_vulkan.h"
 #include "scene_pass.h"
 #include "tone_map_pass.h"
@@ -23,6 +25,7 @@
 #include "liquid/scene.h"
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include <array>
 #include <cmath>
@@ -31,6 +34,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -124,6 +128,8 @@ struct FrameSlot {
   int frame = -1;
 };
 
+constexpr float k_paddle_turn_rate = 3.0f;  // rad/s about the vertical
+
 std::filesystem::path frame_path(const Options& o, int frame) {
   char name[32];
   std::snprintf(name, sizeof name, "frame_%04d.png", frame);
@@ -134,15 +140,15 @@ int run(const Options& o) {
   HostVulkan vulkan(o.validation);
   engine::vk::Context context(vulkan.host_device());
 
-  // The scene, with a box standing in the water's path: an obstacle for the liquid, geometry for
-  // the host (both from the same numbers).
+  // The scene, with the host's paddle standing in the water's path: its own mesh, drawn by its scene
+  // pass and given to the liquid from the same vertex and index bytes.
   liquid::Scene scene = liquid::load_scene(o.scene);
   if (scene.dimension != 3) throw std::invalid_argument(o.scene + ": the host example composites a 3D scene");
-  liquid::Obstacle box;
-  box.shape = liquid::ObstacleShape::Box;
-  box.half_extent = {0.05f * scene.domain.x, 0.3f * scene.domain.y, 0.12f * scene.domain.z};
-  box.center = {0.5f * scene.domain.x, box.half_extent.y, 0.5f * scene.domain.z};
-  scene.obstacles.push_back(box);
+  const HostMesh paddle = board_mesh({0.025f * scene.domain.x, 0.3f * scene.domain.y, 0.22f * scene.domain.z});
+  const glm::vec3 paddle_center{0.6f * scene.domain.x, 0.3f * scene.domain.y, 0.5f * scene.domain.z};
+  scene.obstacles.push_back(liquid::mesh_obstacle(std::as_bytes(std::span(paddle.vertices)), sizeof(HostVertex),
+                                                  paddle.indices, paddle_center, "the host's paddle"));
+  const size_t paddle_index = scene.obstacles.size() - 1;
   constexpr uint32_t k_frames_in_flight = 2;
   liquid::LiquidNode node(context, scene, liquid::LiquidOptions{.frames_in_flight = k_frames_in_flight});
   // The tank in the host's world: turned 35 degrees about the vertical (gravity stays down), moved
@@ -151,11 +157,9 @@ int run(const Options& o) {
                       .rotation = glm::angleAxis(glm::radians(35.0f), glm::vec3(0.0f, 1.0f, 0.0f))});
   liquid::LiquidRenderer renderer(
       context, node, liquid::RenderSettings{.width = o.width, .height = o.height, .composite = true, .exposure = 1.0f});
-  const glm::mat4 box_model = node.placement().world_from_liquid() * glm::translate(glm::mat4(1.0f), box.center) *
-                              glm::scale(glm::mat4(1.0f), box.half_extent);
   const glm::mat4 floor_model = glm::scale(glm::mat4(1.0f), glm::vec3(4.0f));  // 8 m of floor around the origin
   const glm::vec3 orbit_target = node.placement().point_to_world(scene.domain * glm::vec3(0.5f, 0.25f, 0.5f));
-  ScenePass scene_pass(context);
+  ScenePass scene_pass(context, vulkan, floor_mesh(), paddle);
   ToneMapPass tone_map(context);
 
   // An optional 2D liquid in a corner of the display, as a HUD panel.
@@ -203,11 +207,18 @@ int run(const Options& o) {
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     host_check(vkBeginCommandBuffer(slot.cmd, &begin), "vkBeginCommandBuffer");
 
+    // The paddle turns about the vertical at a steady rate; the liquid voxelizes it where the host
+    // draws it (the turn is set before this frame's steps and holds through them).
+    const glm::quat paddle_turn =
+        glm::angleAxis(k_paddle_turn_rate * float(node.time()), glm::vec3(0.0f, 1.0f, 0.0f));
+    node.set_mesh_transform(paddle_index, paddle_turn, 1.0f);
+    const glm::mat4 paddle_model = node.placement().world_from_liquid() *
+                                   glm::translate(glm::mat4(1.0f), paddle_center) * glm::mat4_cast(paddle_turn);
     // The host's camera turns a little each frame around the tank.
     const HostCamera camera =
         orbit_camera(orbit_target, 1.25f * glm::length(scene.domain), 0.75f * glm::length(scene.domain),
                      0.4f + 0.02f * float(frame), aspect);
-    scene_pass.record(slot.cmd, hdr.image, depth.image, camera.projection * camera.view, floor_model, box_model);
+    scene_pass.record(slot.cmd, hdr.image, depth.image, camera.projection * camera.view, floor_model, paddle_model);
     engine::graph::RenderGraph& graph = slot.graph;
     graph.reset();
     const engine::graph::ImageHandle host_hdr = graph.import_image("host.hdr", hdr.image);
@@ -239,7 +250,7 @@ int run(const Options& o) {
   for (auto& slot : slots) finish(*slot);
   // Reads need no frame of the node in flight: every fence has signalled.
   const liquid::Diagnostics d = node.diagnose();
-  std::printf("liquid_host: %d frames in %s, %d particles, %d inside the box, %u validation message(s)\n", o.frames,
+  std::printf("liquid_host: %d frames in %s, %d particles, %d inside the paddle, %u validation message(s)\n", o.frames,
               o.out.string().c_str(), d.active_particles, d.inside_obstacles, context.validation_message_count());
   if (panel_node) {
     const liquid::Diagnostics p = panel_node->diagnose();

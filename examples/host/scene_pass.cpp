@@ -3,6 +3,11 @@
 #include "engine/vk/context.h"
 #include "host_shaders.h"
 
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
 namespace {
 
 struct ScenePush {
@@ -11,8 +16,7 @@ struct ScenePush {
 };
 static_assert(sizeof(ScenePush) <= 128, "push constants: lavapipe allows 128 bytes");
 
-constexpr uint32_t k_floor_vertices = 6;
-constexpr uint32_t k_box_vertices = 36;  // 6 faces of 2 triangles
+constexpr uint32_t k_vertex_binding = 0;
 
 // A barrier from wherever the graph (or the previous frame) left `image` to `layout` for `stages`.
 VkImageMemoryBarrier2 to_attachment(engine::vk::Image& image, VkImageLayout layout, VkPipelineStageFlags2 stages,
@@ -32,7 +36,30 @@ VkImageMemoryBarrier2 to_attachment(engine::vk::Image& image, VkImageLayout layo
 
 }  // namespace
 
-ScenePass::ScenePass(engine::vk::Context& context)
+struct ScenePass::Buffers {
+  std::vector<HostVertex> vertices;  // padded to scene.vert's whole array (the uniform block's size)
+  std::vector<uint32_t> indices;
+  Range floor, paddle;
+
+  Range append(const HostMesh& mesh) {
+    const Range range{uint32_t(indices.size()), uint32_t(mesh.indices.size()), int32_t(vertices.size())};
+    vertices.insert(vertices.end(), mesh.vertices.begin(), mesh.vertices.end());
+    indices.insert(indices.end(), mesh.indices.begin(), mesh.indices.end());
+    return range;
+  }
+  Buffers(const HostMesh& floor_mesh, const HostMesh& paddle_mesh)
+      : floor(append(floor_mesh)), paddle(append(paddle_mesh)) {
+    if (vertices.size() > k_max_vertices)
+      throw std::invalid_argument("the host's meshes have more than " + std::to_string(k_max_vertices) + " vertices");
+    vertices.resize(k_max_vertices);
+  }
+};
+
+ScenePass::ScenePass(engine::vk::Context& context, const HostVulkan& vulkan, const HostMesh& floor,
+                     const HostMesh& paddle)
+    : ScenePass(context, vulkan, Buffers(floor, paddle)) {}
+
+ScenePass::ScenePass(engine::vk::Context& context, const HostVulkan& vulkan, const Buffers& buffers)
     : pipeline_(context, engine::vk::GraphicsPipelineDesc{.name = "host.scene",
                                                          .vertex = host_shaders::scene_vert,
                                                          .fragment = host_shaders::scene_frag,
@@ -41,10 +68,20 @@ ScenePass::ScenePass(engine::vk::Context& context)
                                                          .depth_test = true,
                                                          .depth_write = true,
                                                          .depth_compare = VK_COMPARE_OP_GREATER_OR_EQUAL,
-                                                         .push_constant_size = sizeof(ScenePush)}) {}
+                                                         .bindings = {{k_vertex_binding,
+                                                                       engine::vk::DescriptorKind::UniformBuffer,
+                                                                       VK_SHADER_STAGE_VERTEX_BIT}},
+                                                         .push_constant_size = sizeof(ScenePush)}),
+      vertices_(vulkan.physical_device, vulkan.device, buffers.vertices.data(),
+                buffers.vertices.size() * sizeof(HostVertex), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
+      indices_(vulkan.physical_device, vulkan.device, buffers.indices.data(), buffers.indices.size() * sizeof(uint32_t),
+               VK_BUFFER_USAGE_INDEX_BUFFER_BIT),
+      floor_(buffers.floor),
+      paddle_(buffers.paddle) {}
 
 void ScenePass::record(VkCommandBuffer cmd, engine::vk::Image& color, engine::vk::Image& depth,
-                       const glm::mat4& view_projection, const glm::mat4& floor_model, const glm::mat4& box_model) const {
+                       const glm::mat4& view_projection, const glm::mat4& floor_model,
+                       const glm::mat4& paddle_model) const {
   constexpr VkPipelineStageFlags2 k_color_stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
   constexpr VkPipelineStageFlags2 k_depth_stages =
       VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
@@ -80,10 +117,12 @@ void ScenePass::record(VkCommandBuffer cmd, engine::vk::Image& color, engine::vk
   rendering.pDepthAttachment = &depth_attachment;
   vkCmdBeginRendering(cmd, &rendering);
   pipeline_.bind(cmd, width, height);
-  pipeline_.push_constants(cmd, ScenePush{view_projection, floor_model});
-  vkCmdDraw(cmd, k_floor_vertices, 1, 0, 0);
-  pipeline_.push_constants(cmd, ScenePush{view_projection, box_model});
-  vkCmdDraw(cmd, k_box_vertices, 1, k_floor_vertices, 0);
+  pipeline_.push_uniform(cmd, k_vertex_binding, vertices_.buffer, 0, vertices_.size);
+  vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
+  for (const auto& [range, model] : {std::pair{floor_, floor_model}, std::pair{paddle_, paddle_model}}) {
+    pipeline_.push_constants(cmd, ScenePush{view_projection, model});
+    vkCmdDrawIndexed(cmd, range.index_count, 1, range.first_index, range.vertex_offset, 0);
+  }
   vkCmdEndRendering(cmd);
 
   // Where this pass leaves the targets: the graph's first use of them waits for these writes.

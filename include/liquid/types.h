@@ -48,6 +48,10 @@ struct LiquidOptions {
   // How 3D grids are stored and rendered into (GridPath above). Empty: the environment
   // variable LIQUID_3D_PATH (geometry, vertex-layer or atlas) if set, else the best the device has.
   std::optional<GridPath> grid_path;
+  // 3D: each step's grid passes compute only the cells near liquid (per slice, the rectangle within
+  // a few kernel radii of the particles) and clear the rest; the particles come out bit for bit the
+  // same. False computes every cell (for comparison: liquid_benchmark --whole-grid).
+  bool active_region = true;
   // Where the node says, once, which 3D path and splat format it chose when that is worth knowing
   // ("liquid: 3D path: ..."); no sink, no messages.
   std::function<void(const std::string&)> log;

@@ -4,6 +4,10 @@
 // coverage from the cells' pressure P of the splat-adjoint pressure pass (a point per grid cell;
 // shaders/liquid/solver/body_force.vert), and the opposite of the momentum its no-inflow condition
 // gives the liquid it runs into (a point per particle; body_exchange.vert).
+// The active region (active_region.h) needs no margin for them: the pressure read is non-zero only
+// where the splat is (the bodies add no artificial density), the exchange reads the splat at the
+// particles' own cells, and the region holds both exactly (a test compares bodies and particles
+// with and without it).
 #pragma once
 
 #include "engine/vk/pipeline.h"

@@ -1,7 +1,7 @@
 #include "liquid/solver/grid.h"
 
 #include "engine/passes/bindings.h"
-#include "engine/passes/fullscreen.h"
+#include "liquid/solver/active_region.h"
 #include "liquid/solver/images.h"
 #include "liquid/solver/mesh_field.h"
 #include "liquid/solver/state.h"
@@ -23,7 +23,8 @@ std::span<const uint32_t> grid_fragment_shader(const SimulationSetup& setup, con
                       layout.pick(grid_frag_2d_mesh, grid_frag_3d_mesh, grid_frag_3d_atlas_mesh));
 }
 
-std::vector<engine::vk::DescriptorBinding> grid_bindings(const SimulationSetup& setup, bool meshes) {
+std::vector<engine::vk::DescriptorBinding> grid_bindings(const SimulationSetup& setup, bool meshes,
+                                                         bool active_region) {
   std::vector<engine::vk::DescriptorBinding> bindings{
       {LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
       {LIQUID_BINDING_GRID_SPLAT, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
@@ -31,29 +32,32 @@ std::vector<engine::vk::DescriptorBinding> grid_bindings(const SimulationSetup& 
   if (setup.splat_adjoint_pressure)
     bindings.push_back({LIQUID_BINDING_GRID_POTENTIAL, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
   add_mesh_field_binding(meshes, bindings);
+  add_active_region_binding(active_region, bindings);
   return bindings;
 }
 
 }  // namespace
 
 GridPass::GridPass(engine::vk::Context& context, const SimulationSetup& setup, const GridLayout& layout,
-                   const std::vector<int32_t>& specialization, bool meshes)
+                   const std::vector<int32_t>& specialization, bool meshes, bool active_region)
     : pipeline_(context,
                 engine::vk::GraphicsPipelineDesc{
                     .name = "liquid.grid",
                     // 3D: every slice is a layer of the target (or a tile of the atlas).
-                    .vertex = grid_pass_shaders(layout).vertex,
-                    .geometry = grid_pass_shaders(layout).geometry,
+                    .vertex = grid_pass_shaders(layout, active_region).vertex,
+                    .geometry = grid_pass_shaders(layout, active_region).geometry,
                     .fragment = grid_fragment_shader(setup, layout, meshes),
                     .color_formats = {k_grid_velocity_format, k_density_format},
-                    .bindings = grid_bindings(setup, meshes),
+                    .bindings = grid_bindings(setup, meshes, active_region),
                     .specialization = specialization}),
       nearest_(context, VK_FILTER_NEAREST),
-      splat_adjoint_(setup.splat_adjoint_pressure) {}
+      splat_adjoint_(setup.splat_adjoint_pressure),
+      layout_(layout),
+      active_region_(active_region) {}
 
 GridImages GridPass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
                             ImageHandle splat, ImageHandle bodies, const GridImages& grids, ImageHandle potential,
-                            ImageHandle mesh_field) const {
+                            ImageHandle mesh_field, ImageHandle region) const {
   if (splat_adjoint_ != potential.valid())
     throw std::logic_error(splat_adjoint_ ? "liquid.grid: the splat-adjoint pressure needs the potential image"
                                           : "liquid.grid: a potential image was given to the chapter's grid pass");
@@ -71,12 +75,14 @@ GridImages GridPass::add_to(engine::graph::RenderGraph& graph, const engine::vk:
             d.bindings.bind_image(b, LIQUID_BINDING_BODIES, bodies, nearest_.handle());
             if (potential.valid()) d.bindings.bind_image(b, LIQUID_BINDING_GRID_POTENTIAL, potential, nearest_.handle());
             bind_mesh_field(d.bindings, b, mesh_field, nearest_);
-            d.out.velocity = b.write(grids.velocity, Access::ColorAttachmentWrite);
-            d.out.density = b.write(grids.density, Access::ColorAttachmentWrite);
+            const engine::graph::AttachmentOptions load =
+                bind_active_region(d.bindings, b, region, active_region_, nearest_);
+            d.out.velocity = b.write(grids.velocity, Access::ColorAttachmentWrite, load);
+            d.out.density = b.write(grids.density, Access::ColorAttachmentWrite, load);
           },
-          [](PassContext& ctx, const Data& d) {
+          [this](PassContext& ctx, const Data& d) {
             d.bindings.bind_and_push(ctx);
-            engine::passes::draw_fullscreen(ctx.cmd, ctx.layers);
+            draw_grid_cells(ctx, layout_, active_region_);
           })
       .out;
 }

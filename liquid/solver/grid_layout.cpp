@@ -1,6 +1,7 @@
 #include "liquid/solver/grid_layout.h"
 
 #include "engine/passes/fullscreen.h"
+#include "liquid_shaders.h"
 
 #include <iterator>
 #include <stdexcept>
@@ -86,7 +87,13 @@ size_t GridLayout::texel_index(int x, int y, int z) const {
   return ax + ay * size_t(cells.x) * tiles.x;
 }
 
-GridPassShaders grid_pass_shaders(const GridLayout& layout) {
+GridPassShaders grid_pass_shaders(const GridLayout& layout, bool active_region) {
+  if (active_region) {
+    if (layout.atlas()) return {liquid_shaders::active_region_vert_atlas, {}};
+    if (layout.path == GridPath::GeometryShader)
+      return {liquid_shaders::active_region_vert_gs, engine::passes::fullscreen_layered_geometry_shader()};
+    return {liquid_shaders::active_region_vert_layer, {}};
+  }
   if (!layout.layered()) return {engine::passes::fullscreen_vertex_shader(), {}};
   if (layout.path == GridPath::GeometryShader)
     return {engine::passes::fullscreen_layered_vertex_shader(), engine::passes::fullscreen_layered_geometry_shader()};

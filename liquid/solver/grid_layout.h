@@ -78,11 +78,13 @@ struct GridLayout {
 };
 
 // The vertex (and geometry) shaders of a full-screen pass over every cell of a grid: one triangle
-// over a 2D image or atlas, or one per slice routed by the path's layered pair.
+// over a 2D image or atlas, or one per slice routed by the path's layered pair; with
+// `active_region` (3D only), each slice's rectangle of the step's active region instead
+// (active_region.h).
 struct GridPassShaders {
   std::span<const uint32_t> vertex;
   std::span<const uint32_t> geometry;  // empty but on the geometry-shader path
 };
-GridPassShaders grid_pass_shaders(const GridLayout& layout);
+GridPassShaders grid_pass_shaders(const GridLayout& layout, bool active_region = false);
 
 }  // namespace liquid

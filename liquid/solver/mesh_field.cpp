@@ -2,7 +2,6 @@
 
 #include "engine/graph/transfer.h"
 #include "engine/passes/bindings.h"
-#include "engine/passes/fullscreen.h"
 #include "liquid/physics/mesh.h"
 #include "liquid/solver/uniforms.h"
 #include "liquid_shaders.h"
@@ -10,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <utility>
 
 namespace liquid {
 
@@ -18,33 +18,86 @@ namespace {
 constexpr uint32_t k_triangle_texture_width = LIQUID_MESH_TRIANGLE_TEXTURE_WIDTH;
 constexpr VkImageUsageFlags k_field_usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
                                             VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+// The closest surface points (xyz, m) of the seed and spread passes.
+constexpr VkFormat k_nearest_format = VK_FORMAT_R32G32B32A32_SFLOAT;
+// The inside pass's crossing counts: small whole numbers, exact in half floats.
+constexpr VkFormat k_inside_format = VK_FORMAT_R16G16B16A16_SFLOAT;
+// The seed pass's depth: a cell's distance to the closest triangle so far, over the band.
+constexpr VkFormat k_seed_depth_format = VK_FORMAT_D32_SFLOAT;
 
-// The raster passes' vertex shader by the grid's layout (how a primitive reaches its slice).
-std::span<const uint32_t> raster_vertex(const GridLayout& layout, bool band) {
+// The inside and seed passes' vertex shader by the grid's layout (how a primitive reaches its slice).
+std::span<const uint32_t> raster_vertex(const GridLayout& layout, bool seed) {
   using namespace liquid_shaders;
-  if (layout.dimension == 2) return band ? mesh_band_vert_2d : mesh_inside_vert_2d;
-  if (layout.atlas()) return band ? mesh_band_vert_3d_atlas : mesh_inside_vert_3d_atlas;
-  if (layout.path == GridPath::GeometryShader) return band ? mesh_band_vert_3d_gs : mesh_inside_vert_3d_gs;
-  return band ? mesh_band_vert_3d : mesh_inside_vert_3d;
+  if (layout.dimension == 2) return seed ? mesh_seed_vert_2d : mesh_inside_vert_2d;
+  if (layout.atlas()) return seed ? mesh_seed_vert_3d_atlas : mesh_inside_vert_3d_atlas;
+  if (layout.path == GridPath::GeometryShader) return seed ? mesh_seed_vert_3d_gs : mesh_inside_vert_3d_gs;
+  return seed ? mesh_seed_vert_3d : mesh_inside_vert_3d;
 }
 
-engine::vk::GraphicsPipelineDesc raster_pipeline(const GridLayout& layout, bool band,
+engine::vk::GraphicsPipelineDesc raster_pipeline(const GridLayout& layout, bool seed,
                                                  const std::vector<int32_t>& specialization) {
   using namespace liquid_shaders;
   const bool geometry = layout.layered() && layout.path == GridPath::GeometryShader;
   return engine::vk::GraphicsPipelineDesc{
-      .name = band ? "liquid.mesh_band" : "liquid.mesh_inside",
-      .vertex = raster_vertex(layout, band),
-      .geometry = geometry ? std::span<const uint32_t>(band ? mesh_band_geom : mesh_inside_geom)
+      .name = seed ? "liquid.mesh_seed" : "liquid.mesh_inside",
+      .vertex = raster_vertex(layout, seed),
+      .geometry = geometry ? std::span<const uint32_t>(seed ? mesh_seed_geom : mesh_inside_geom)
                            : std::span<const uint32_t>{},
-      .fragment = band ? layout.pick(mesh_band_frag_2d, mesh_band_frag_3d, mesh_band_frag_3d_atlas)
+      .fragment = seed ? layout.pick(mesh_seed_frag_2d, mesh_seed_frag_3d, mesh_seed_frag_3d_atlas)
                        : layout.pick(mesh_inside_frag_2d, mesh_inside_frag_3d, mesh_inside_frag_3d_atlas),
-      .color_formats = {k_mesh_field_format},
-      .blend = {band ? engine::vk::BlendMode::Min : engine::vk::BlendMode::Additive},
+      .color_formats = {seed ? k_nearest_format : k_inside_format},
+      .blend = {seed ? engine::vk::BlendMode::None : engine::vk::BlendMode::Additive},
+      .depth_format = seed ? k_seed_depth_format : VK_FORMAT_UNDEFINED,
+      .depth_test = seed,
+      .depth_write = seed,
+      .depth_compare = VK_COMPARE_OP_LESS,
       .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
                    {LIQUID_BINDING_MESH_TRIANGLES, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
       .push_constant_size = sizeof(gpu::MeshRasterPush),
       .specialization = specialization};
+}
+
+// The spread passes (field = false) and the field pass, drawn over a mesh's box.
+engine::vk::GraphicsPipelineDesc spread_pipeline(const GridLayout& layout, bool field,
+                                                 const std::vector<int32_t>& specialization) {
+  using namespace liquid_shaders;
+  engine::vk::GraphicsPipelineDesc desc{
+      .name = field ? "liquid.mesh_field" : "liquid.mesh_spread",
+      .vertex = grid_pass_shaders(layout).vertex,
+      .geometry = grid_pass_shaders(layout).geometry,
+      .fragment = field ? layout.pick(mesh_field_frag_2d, mesh_field_frag_3d, mesh_field_frag_3d_atlas)
+                        : layout.pick(mesh_spread_frag_2d, mesh_spread_frag_3d, mesh_spread_frag_3d_atlas),
+      .color_formats = {field ? k_mesh_field_format : k_nearest_format},
+      .blend = {field ? engine::vk::BlendMode::Min : engine::vk::BlendMode::None},
+      .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
+                   {LIQUID_BINDING_MESH_NEAREST, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
+      .push_constant_size = sizeof(gpu::MeshRasterPush),
+      .specialization = specialization};
+  if (field) desc.bindings.push_back({LIQUID_BINDING_MESH_INSIDE, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
+  return desc;
+}
+
+// The largest z extent (m) of a triangle of `mesh` placed by `placement`.
+float tallest_triangle(const TriangleMesh& mesh, const glm::mat4& placement) {
+  float tallest = 0.0f;
+  for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+    float lo = INFINITY, hi = -INFINITY;
+    for (size_t k = 0; k < 3; ++k) {
+      const float z = (placement * glm::vec4(mesh.vertices[mesh.indices[i + k]], 1.0f)).z;
+      lo = std::min(lo, z);
+      hi = std::max(hi, z);
+    }
+    tallest = std::max(tallest, hi - lo);
+  }
+  return tallest;
+}
+
+// The image description of a grid-shaped depth attachment: layers where the grid is a 3D image
+// (a depth image cannot be 3D).
+engine::vk::ImageDesc depth_desc(const GridLayout& layout) {
+  engine::vk::ImageDesc desc = layout.image_desc(k_seed_depth_format, 0);
+  if (desc.kind == engine::vk::ImageKind::Image3D) desc.kind = engine::vk::ImageKind::Image2DArray;
+  return desc;
 }
 
 }  // namespace
@@ -76,33 +129,36 @@ void bind_mesh_field(engine::passes::PassBindings& bindings, PassBuilder& builde
   if (field.valid()) bindings.bind_image(builder, LIQUID_BINDING_MESH_FIELD, field, linear.handle());
 }
 
+std::vector<VkClearRect> mesh_box_rects(const GridLayout& layout, const MeshBox& box) {
+  const glm::ivec3 size = box.max - box.min;
+  if (size.x <= 0 || size.y <= 0 || size.z <= 0) return {};
+  if (!layout.atlas())
+    return {{{{box.min.x, box.min.y}, {uint32_t(size.x), uint32_t(size.y)}}, uint32_t(box.min.z), uint32_t(size.z)}};
+  std::vector<VkClearRect> rects;
+  for (int z = box.min.z; z < box.max.z; ++z) {
+    const glm::ivec2 tile = glm::ivec2(z % layout.tiles.x, z / layout.tiles.x) * glm::ivec2(layout.cells);
+    rects.push_back({{{tile.x + box.min.x, tile.y + box.min.y}, {uint32_t(size.x), uint32_t(size.y)}}, 0, 1});
+  }
+  return rects;
+}
+
 MeshField::MeshField(engine::vk::Context& context, const Scene& scene, const SimulationSetup& setup,
                      const GridLayout& layout, const std::vector<int32_t>& specialization)
     : layout_(layout), cell_size_(setup.cell_size),
       band_(setup.obstacle_band + gpu::k_mesh_field_margin_cells * setup.cell_size),
       inside_(context, raster_pipeline(layout, false, specialization)),
-      band_pipeline_(context, raster_pipeline(layout, true, specialization)),
-      field_pipeline_(context,
-                      engine::vk::GraphicsPipelineDesc{
-                          .name = "liquid.mesh_field",
-                          .vertex = grid_pass_shaders(layout).vertex,
-                          .geometry = grid_pass_shaders(layout).geometry,
-                          .fragment = layout.pick(liquid_shaders::mesh_field_frag_2d, liquid_shaders::mesh_field_frag_3d,
-                                                  liquid_shaders::mesh_field_frag_3d_atlas),
-                          .color_formats = {k_mesh_field_format},
-                          .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
-                                       {LIQUID_BINDING_MESH_INSIDE, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
-                                       {LIQUID_BINDING_MESH_BAND, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
-                          .push_constant_size = sizeof(gpu::MeshRasterPush),
-                          .specialization = specialization}),
+      seed_(context, raster_pipeline(layout, true, specialization)),
+      spread_(context, spread_pipeline(layout, false, specialization)),
+      field_pipeline_(context, spread_pipeline(layout, true, specialization)),
       nearest_(context, VK_FILTER_NEAREST),
-      field_(context, layout.image_desc(k_mesh_field_format, k_field_usage), "liquid.mesh_field") {
+      field_(context, layout.image_desc(k_mesh_field_format, k_field_usage), "liquid.mesh_field"),
+      inside_counts_(context,
+                     layout.image_desc(k_inside_format, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT),
+                     "liquid.mesh_inside") {
   // Far from every mesh until the first voxelization, so a view drawn before the first step reads
   // defined contents.
-  const std::vector<glm::vec4> far(layout.image_desc(k_mesh_field_format, 0).width *
-                                       size_t(layout.image_desc(k_mesh_field_format, 0).height) *
-                                       layout.image_desc(k_mesh_field_format, 0).depth_or_layers,
-                                   glm::vec4(band_));
+  const engine::vk::ImageDesc desc = layout.image_desc(k_mesh_field_format, 0);
+  const std::vector<glm::vec4> far(size_t(desc.width) * desc.height * desc.depth_or_layers, glm::vec4(band_));
   engine::graph::upload_image(context, field_, std::as_bytes(std::span(far)));
   for (size_t i = 0; i < scene.obstacles.size(); ++i) {
     const Obstacle& o = scene.obstacles[i];
@@ -122,6 +178,7 @@ std::vector<glm::vec4> MeshField::read(engine::vk::Context& context) {
 ImageHandle MeshField::import(engine::graph::RenderGraph& graph) {
   triangle_handles_.clear();
   for (Mesh& m : meshes_) triangle_handles_.push_back(graph.import_image(m.triangles.name(), m.triangles));
+  inside_handle_ = graph.import_image(inside_counts_.name(), inside_counts_);
   return graph.import_image(field_.name(), field_);
 }
 
@@ -134,66 +191,78 @@ ImageHandle MeshField::update(engine::graph::RenderGraph& graph, const engine::v
   voxelized_ = placements;
   ++voxelizations_;
 
-  // Per mesh: the push constants, the inside pass's slices (centres within the mesh's z range) and
-  // the band pass's instances (the most slices one triangle's band reaches).
+  // Per mesh: the push constants (its box: the cells within the band of its bounds) and the
+  // instances of the inside and seed passes (the most slices one triangle reaches in each).
+  const float band_cells = band_ / cell_size_;
   std::vector<gpu::MeshRasterPush> pushes;
-  std::vector<uint32_t> slices;     // the inside pass's instances
-  std::vector<uint32_t> instances;  // the band pass's
+  std::vector<uint32_t> inside_instances, seed_instances;
   for (size_t k = 0; k < meshes_.size(); ++k) {
     const TriangleMesh& mesh = obstacles[meshes_[k].obstacle].mesh;
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    for (const glm::vec3& v : mesh.vertices) {
+      const glm::vec3 p = glm::vec3(placements[k] * glm::vec4(v, 1.0f)) / cell_size_;
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
     gpu::MeshRasterPush push{};
     push.local_to_world = placements[k];
     push.slot = int(k);
     push.band = band_;
-    float lo = INFINITY, hi = -INFINITY;
-    for (const glm::vec3& v : mesh.vertices) {
-      const float z = (placements[k] * glm::vec4(v, 1.0f)).z / cell_size_;
-      lo = std::min(lo, z);
-      hi = std::max(hi, z);
+    const glm::ivec3 cells = layout_.cells;
+    push.box_min = glm::ivec4(glm::clamp(glm::ivec3(glm::floor(lo - band_cells)), glm::ivec3(0), cells), 0);
+    push.box_max = glm::ivec4(glm::clamp(glm::ivec3(glm::ceil(hi + band_cells)), glm::ivec3(0), cells), 0);
+    if (layout_.dimension == 2) {  // the cells at z = 0: the mesh's cross-section, if it has one there
+      const bool crosses = lo.z - band_cells < 0.0f && hi.z + band_cells > 0.0f;
+      push.box_min.z = 0;
+      push.box_max.z = crosses ? 1 : 0;
     }
-    const int first = std::max(int(std::ceil(lo - 0.5f)), 0);
-    const int last = std::min(int(std::floor(hi - 0.5f)), layout_.cells.z - 1);
-    push.first_slice = first;
     pushes.push_back(push);
-    slices.push_back(layout_.dimension == 3 ? uint32_t(std::max(last - first + 1, 0)) : 1u);
-    const float reach = longest_edge(mesh) * mesh.scale / cell_size_ + 2.0f * band_ / cell_size_;
-    instances.push_back(layout_.dimension == 3 ? uint32_t(std::ceil(reach)) + 1 : 1u);
+    // The tallest triangle (cells): the inside pass's slices per triangle are at most its
+    // height rounded up, plus one; the seed pass's the whole number of slice centres within its
+    // height plus the seed band on either side (a thousandth for the GPU's rounding).
+    const float tallest = tallest_triangle(mesh, placements[k]) / cell_size_;
+    inside_instances.push_back(layout_.dimension == 3 ? uint32_t(std::ceil(tallest)) + 1 : 1u);
+    seed_instances.push_back(
+        layout_.dimension == 3 ? uint32_t(std::floor(tallest + 2.0f * gpu::k_mesh_seed_cells + 1e-3f)) + 1 : 1u);
   }
 
-  const engine::vk::ImageDesc desc = layout_.image_desc(k_mesh_field_format, 0);
-  // The inside pass draws each triangle; the band pass a rectangle (two triangles) per triangle.
-  const ImageHandle inside = add_raster_pass(graph, uniforms, {"liquid.mesh_inside", &inside_, 3, 0.0f},
-                                             graph.create_image("liquid.mesh_inside", desc), pushes, slices);
-  const ImageHandle band = add_raster_pass(graph, uniforms, {"liquid.mesh_band", &band_pipeline_, 6, LIQUID_MESH_FAR},
-                                           graph.create_image("liquid.mesh_band", desc), pushes, instances);
+  // The field holds distances only in the boxes of the last voxelization (or of the ones before,
+  // if its graph did not run): those are reset to the band before the new boxes are drawn.
+  std::vector<MeshBox> boxes;
+  for (const gpu::MeshRasterPush& push : pushes) boxes.push_back(box_of(push));
+  std::vector<MeshBox> reset = written_;
+  reset.insert(reset.end(), boxes.begin(), boxes.end());
+  unconfirmed_ = std::exchange(written_, boxes);
 
-  struct Data {
-    engine::passes::PassBindings bindings;
-    ImageHandle field;
-  };
-  gpu::MeshRasterPush push{};
-  push.band = band_;
-  return graph
-      .add_pass<Data>(
-          "liquid.mesh_field",
-          [&](PassBuilder& b, Data& d) {
-            d.bindings = engine::passes::PassBindings(field_pipeline_);
-            d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
-            d.bindings.bind_image(b, LIQUID_BINDING_MESH_INSIDE, inside, nearest_.handle());
-            d.bindings.bind_image(b, LIQUID_BINDING_MESH_BAND, band, nearest_.handle());
-            d.field = b.write(field, Access::ColorAttachmentWrite);
-          },
-          [this, push](PassContext& ctx, const Data& d) {
-            d.bindings.bind_and_push(ctx);
-            field_pipeline_.push_constants(ctx.cmd, push);
-            engine::passes::draw_fullscreen(ctx.cmd, ctx.layers);
-          })
-      .field;
+  // The jump flood's steps, halving down to 1: with the field pass's 1 they reach 2 * first cells
+  // along each axis, which must be as far as a seed within LIQUID_MESH_SEED_CELLS of the surface
+  // is from a cell at the band's edge, plus half a cell for the seed's offset from the cell's foot.
+  const int reach = int(std::ceil(band_cells - gpu::k_mesh_seed_cells + 0.5f));
+  std::vector<int> spread_steps{1};
+  while (2 * spread_steps.front() < reach) spread_steps.insert(spread_steps.begin(), 2 * spread_steps.front());
+
+  const engine::vk::ImageDesc nearest_desc = layout_.image_desc(k_nearest_format, 0);
+  const ImageHandle inside = add_inside_pass(graph, uniforms, graph.latest(inside_handle_), pushes, inside_instances);
+  ImageHandle nearest = graph.create_image("liquid.mesh_nearest", nearest_desc);
+  ImageHandle spread = graph.create_image("liquid.mesh_spread", nearest_desc);
+  ImageHandle depth = graph.create_image("liquid.mesh_seed_depth", depth_desc(layout_));
+  for (size_t k = 0; k < meshes_.size(); ++k) {
+    nearest = add_seed_pass(graph, uniforms, k, nearest, depth, pushes[k], seed_instances[k]);
+    for (int step : spread_steps) {
+      pushes[k].step = step;
+      spread = add_box_pass(graph, uniforms, {"liquid.mesh_spread", &spread_, Access::ColorAttachmentWrite}, nearest,
+                            ImageHandle{}, spread, pushes[k]);
+      std::swap(nearest, spread);
+    }
+    pushes[k].step = 1;
+    const BoxPass pass{"liquid.mesh_field", &field_pipeline_, Access::ColorAttachmentBlend};
+    field = add_box_pass(graph, uniforms, pass, nearest, inside, field, pushes[k], k == 0 ? reset : std::vector<MeshBox>{});
+  }
+  return field;
 }
 
-ImageHandle MeshField::add_raster_pass(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                                       const RasterPass& pass, ImageHandle target,
-                                       const std::vector<gpu::MeshRasterPush>& pushes,
+ImageHandle MeshField::add_inside_pass(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
+                                       ImageHandle target, const std::vector<gpu::MeshRasterPush>& pushes,
                                        const std::vector<uint32_t>& instances) const {
   struct Data {
     std::vector<engine::passes::PassBindings> bindings;  // one per mesh (its triangles)
@@ -201,25 +270,99 @@ ImageHandle MeshField::add_raster_pass(engine::graph::RenderGraph& graph, const 
   };
   return graph
       .add_pass<Data>(
-          pass.name,
+          "liquid.mesh_inside",
           [&](PassBuilder& b, Data& d) {
             for (ImageHandle triangles : triangle_handles_) {
-              d.bindings.emplace_back(*pass.pipeline);
+              d.bindings.emplace_back(inside_);
               d.bindings.back().bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
               d.bindings.back().bind_image(b, LIQUID_BINDING_MESH_TRIANGLES, triangles, nearest_.handle());
             }
-            const float c = pass.clear;
-            d.target = b.write(target, Access::ColorAttachmentBlend, engine::graph::clear_to(c, c, c, c));
+            d.target = b.write(target, Access::ColorAttachmentBlend, {engine::graph::LoadOp::Load, {}});
           },
-          [this, pass, pushes, instances](PassContext& ctx, const Data& d) {
+          [this, pushes, instances](PassContext& ctx, const Data& d) {
+            // Only the meshes' boxes are counted in and read: zeroed, all before any mesh adds.
+            for (const gpu::MeshRasterPush& push : pushes) clear_box(ctx.cmd, box_of(push), VkClearValue{});
             for (size_t k = 0; k < meshes_.size(); ++k) {
-              if (instances[k] == 0) continue;
               d.bindings[k].bind_and_push(ctx);
-              pass.pipeline->push_constants(ctx.cmd, pushes[k]);
-              vkCmdDraw(ctx.cmd, pass.vertices_per_triangle * meshes_[k].triangle_count, instances[k], 0, 0);
+              inside_.push_constants(ctx.cmd, pushes[k]);
+              vkCmdDraw(ctx.cmd, 3 * meshes_[k].triangle_count, instances[k], 0, 0);
             }
           })
       .target;
+}
+
+ImageHandle MeshField::add_seed_pass(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
+                                     size_t mesh, ImageHandle nearest, ImageHandle& depth,
+                                     const gpu::MeshRasterPush& push, uint32_t instances) const {
+  struct Data {
+    engine::passes::PassBindings bindings;
+    ImageHandle nearest;
+  };
+  return graph
+      .add_pass<Data>(
+          "liquid.mesh_seed",
+          [&](PassBuilder& b, Data& d) {
+            d.bindings = engine::passes::PassBindings(seed_);
+            d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
+            d.bindings.bind_image(b, LIQUID_BINDING_MESH_TRIANGLES, triangle_handles_[mesh], nearest_.handle());
+            d.nearest = b.write(nearest, Access::ColorAttachmentWrite);
+            depth = b.write(depth, Access::DepthAttachmentWrite);
+          },
+          [this, mesh, push, instances](PassContext& ctx, const Data& d) {
+            // The box starts with no closest point, at the greatest depth.
+            VkClearValue far{};
+            far.color = {{LIQUID_MESH_FAR, LIQUID_MESH_FAR, LIQUID_MESH_FAR, 0.0f}};
+            clear_box(ctx.cmd, box_of(push), far);
+            VkClearValue deepest{};
+            deepest.depthStencil = {1.0f, 0};
+            clear_box(ctx.cmd, box_of(push), deepest, VK_IMAGE_ASPECT_DEPTH_BIT);
+            d.bindings.bind_and_push(ctx);
+            seed_.push_constants(ctx.cmd, push);
+            // A triangle holding the cells within the seed band, per triangle and slice.
+            vkCmdDraw(ctx.cmd, 3 * meshes_[mesh].triangle_count, instances, 0, 0);
+          })
+      .nearest;
+}
+
+ImageHandle MeshField::add_box_pass(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
+                                    const BoxPass& pass, ImageHandle nearest, ImageHandle inside, ImageHandle target,
+                                    const gpu::MeshRasterPush& push, const std::vector<MeshBox>& reset) const {
+  struct Data {
+    engine::passes::PassBindings bindings;
+    ImageHandle target;
+  };
+  return graph
+      .add_pass<Data>(
+          pass.name,
+          [&](PassBuilder& b, Data& d) {
+            d.bindings = engine::passes::PassBindings(*pass.pipeline);
+            d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
+            d.bindings.bind_image(b, LIQUID_BINDING_MESH_NEAREST, nearest, nearest_.handle());
+            if (inside.valid()) d.bindings.bind_image(b, LIQUID_BINDING_MESH_INSIDE, inside, nearest_.handle());
+            const bool loaded = pass.access == Access::ColorAttachmentBlend;
+            d.target = b.write(target, pass.access, {loaded ? engine::graph::LoadOp::Load : engine::graph::LoadOp::DontCare, {}});
+          },
+          [this, pass, push, reset](PassContext& ctx, const Data& d) {
+            VkClearValue band{};
+            band.color = {{band_, band_, band_, band_}};
+            for (const MeshBox& box : reset) clear_box(ctx.cmd, box, band);
+            d.bindings.bind_and_push(ctx);
+            pass.pipeline->push_constants(ctx.cmd, push);
+            // The full-screen triangle, cut to the box by the scissor: once per slice of it on the
+            // layered paths (the instance is the slice), once per tile in the atlas.
+            for (const VkClearRect& rect : mesh_box_rects(layout_, box_of(push))) {
+              vkCmdSetScissor(ctx.cmd, 0, 1, &rect.rect);
+              vkCmdDraw(ctx.cmd, 3, rect.layerCount, 0, rect.baseArrayLayer);
+            }
+          })
+      .target;
+}
+
+void MeshField::clear_box(VkCommandBuffer cmd, const MeshBox& box, VkClearValue value, VkImageAspectFlags aspect) const {
+  const std::vector<VkClearRect> rects = mesh_box_rects(layout_, box);
+  if (rects.empty()) return;
+  const VkClearAttachment attachment{aspect, 0, value};
+  vkCmdClearAttachments(cmd, 1, &attachment, uint32_t(rects.size()), rects.data());
 }
 
 }  // namespace liquid

@@ -1,18 +1,28 @@
 // Mesh obstacles voxelized by the rasterizer into the mesh field: one grid image (the grid's
-// layout, RGBA16F) holding each mesh's signed distance (m, negative inside) in its own channel,
+// layout, RGBA32F) holding each mesh's signed distance (m, negative inside) in its own channel,
 // which the grid, pressure and particle passes sample as they evaluate an analytic obstacle's
-// (common.glsl, MESH_FIELD). Three passes, redone in a step when a mesh's placement changed:
-//   liquid.mesh_inside  each triangle drawn, looking along z, into every slice of the mesh's z
-//                       range; a fragment counts +-1 (its facing) where the surface lies above the
-//                       cell centre, added by blending: non-zero inside (mesh_inside.frag).
-//   liquid.mesh_band    per triangle and slice within the band, the rectangle of cells within the
-//                       band of it: the exact point-triangle distance, MIN-blended (mesh_band.frag).
-//   liquid.mesh_field   a full-screen grid pass: the signed distance, clamped to the band.
+// (common.glsl, MESH_FIELD). Redone in a step when a mesh's placement changed, and only over each
+// mesh's box (the cells within the band of its bounds; the field holds the band outside every box):
+//   liquid.mesh_inside  each triangle drawn, looking along z, into the slices whose span between
+//                       cell centres it crosses: +-1 by its facing, added by blending
+//                       (mesh_inside.frag). The field pass sums them from a cell up: non-zero inside.
+//   liquid.mesh_seed    per triangle and slice within LIQUID_MESH_SEED_CELLS (1.5 cells) of it, a
+//                       triangle holding the cells within that of its part in the slice: the exact
+//                       closest point, the closest kept by the depth test (mesh_seed.frag).
+//   liquid.mesh_spread  a jump flood over the box (full-screen passes cut to it by the scissor):
+//                       each cell takes the closest to it of the points held by the 27 cells `step`
+//                       apart around it, steps halving to 1 (mesh_spread.frag).
+//   liquid.mesh_field   one more step of 1, then the distance, clamped to the band and signed by the
+//                       counts, MIN-blended into the mesh's channel.
 // The band is obstacle_band + LIQUID_MESH_FIELD_MARGIN_CELLS cells: what the obstacle density and
-// its normal read. Graphics pipeline only; every 3D path (layered by the vertex or geometry
-// shader, or the atlas's tiles). In 2D the grid's cells lie at z = 0: the mesh's cross-section.
-// Shaders: shaders/liquid/solver/mesh_raster.vert, mesh_raster.geom, mesh_inside.frag,
-// mesh_band.frag, mesh_field.frag.
+// its normal read. Within the seed band the distance is exact (where the grid pass reads the
+// normal); beyond, it is the distance to the closest of the seeds' points, at most about a tenth of
+// a cell over the exact one where the closest surface point lies between them
+// (docs/lavapipe-performance.md, "Mesh obstacles"). Graphics pipeline only; every 3D path (layered
+// by the vertex or geometry shader, or the atlas's tiles). In 2D the grid's cells lie at z = 0: the
+// mesh's cross-section. The seed, spread and field passes run once per mesh. Shaders:
+// shaders/liquid/solver/mesh_raster.vert, mesh_raster.geom, mesh_inside.frag, mesh_seed.frag,
+// mesh_spread.frag.
 #pragma once
 
 #include "engine/passes/bindings.h"
@@ -53,6 +63,14 @@ void add_mesh_field_binding(bool meshes, std::vector<engine::vk::DescriptorBindi
 void bind_mesh_field(engine::passes::PassBindings& bindings, PassBuilder& builder, ImageHandle field,
                      const engine::vk::Sampler& linear);
 
+// A mesh's box: the cells [min, max) within the band of its bounds, clamped to the grid.
+struct MeshBox {
+  glm::ivec3 min{0}, max{0};
+};
+// The box's rectangles in the grid's render target (the rectangle and the slices, one per slice's
+// tile in the atlas): for vkCmdClearAttachments, and as the scissor and instances of a box pass.
+std::vector<VkClearRect> mesh_box_rects(const GridLayout& layout, const MeshBox& box);
+
 class MeshField {
  public:
   MeshField(engine::vk::Context& context, const Scene& scene, const SimulationSetup& setup, const GridLayout& layout,
@@ -60,12 +78,16 @@ class MeshField {
 
   // The field as it is now and the meshes' triangles, imported into `graph` (once per graph, before update()).
   ImageHandle import(engine::graph::RenderGraph& graph);
-  // Declares the three passes when the meshes' placements (`obstacles`' meshes at `poses`) differ
+  // Declares the voxelization's passes when the meshes' placements (`obstacles`' meshes at `poses`) differ
   // from the last voxelization's, and returns the field's latest version.
   ImageHandle update(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
                      const std::vector<Obstacle>& obstacles, const std::vector<ObstaclePose>& poses, ImageHandle field);
-  // Forgets the last voxelization, so the next update() redoes it (its graph was not executed).
-  void invalidate() { voxelized_.reset(); }
+  // Forgets the last voxelization, so the next update() redoes it (its graph was not executed: the
+  // field still holds the boxes before it).
+  void invalidate() {
+    voxelized_.reset();
+    written_.insert(written_.end(), unconfirmed_.begin(), unconfirmed_.end());
+  }
   // The field downloaded, cell (x, y, z) at x + nx (y + ny z), one channel per mesh (blocking: no
   // frame of the node in flight).
   std::vector<glm::vec4> read(engine::vk::Context& context);
@@ -79,26 +101,42 @@ class MeshField {
     engine::vk::Image triangles;  // RGBA32F, 3 texels per triangle (the mesh's frame)
     uint32_t triangle_count = 0;
   };
-  // The inside or the band pass: every mesh's triangles drawn `instances[k]` times into `target`,
-  // cleared to `clear` first and blended (additive or MIN, the pipeline's).
-  struct RasterPass {
+  // A pass drawn over a mesh's box: a spread pass or the field pass.
+  struct BoxPass {
     const char* name;
     const engine::vk::GraphicsPipeline* pipeline;
-    uint32_t vertices_per_triangle;
-    float clear;
+    Access access;  // of its target: written, or MIN-blended (the field)
   };
-  ImageHandle add_raster_pass(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                              const RasterPass& pass, ImageHandle target, const std::vector<gpu::MeshRasterPush>& pushes,
+  static MeshBox box_of(const gpu::MeshRasterPush& push) { return {glm::ivec3(push.box_min), glm::ivec3(push.box_max)}; }
+  // Every mesh's triangles counted into `target`, cleared first.
+  ImageHandle add_inside_pass(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
+                              ImageHandle target, const std::vector<gpu::MeshRasterPush>& pushes,
                               const std::vector<uint32_t>& instances) const;
+  // Mesh `mesh`'s closest points within a cell of it into `nearest`, with `depth` (both cleared in its box).
+  ImageHandle add_seed_pass(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, size_t mesh,
+                            ImageHandle nearest, ImageHandle& depth, const gpu::MeshRasterPush& push,
+                            uint32_t instances) const;
+  // `pass` over the box of `push`, reading `nearest` (and the field pass `inside`) into `target`;
+  // the boxes `reset` cleared to the band first (the field pass).
+  ImageHandle add_box_pass(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
+                           const BoxPass& pass, ImageHandle nearest, ImageHandle inside, ImageHandle target,
+                           const gpu::MeshRasterPush& push, const std::vector<MeshBox>& reset = {}) const;
+  // vkCmdClearAttachments of the pass's attachment 0 (or its depth) over `box`.
+  void clear_box(VkCommandBuffer cmd, const MeshBox& box, VkClearValue value,
+                 VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT) const;
 
   GridLayout layout_;
   float cell_size_ = 0.0f;
   float band_ = 0.0f;  // m
   std::vector<Mesh> meshes_;
   std::vector<ImageHandle> triangle_handles_;  // the last import()'s
-  engine::vk::GraphicsPipeline inside_, band_pipeline_, field_pipeline_;
+  engine::vk::GraphicsPipeline inside_, seed_, spread_, field_pipeline_;
   engine::vk::Sampler nearest_;
   engine::vk::Image field_;
+  engine::vk::Image inside_counts_;  // the inside pass's target: valid in the boxes it last counted
+  ImageHandle inside_handle_;        // the last import()'s
+  std::vector<MeshBox> written_;     // the boxes the field may hold distances in (else the band)
+  std::vector<MeshBox> unconfirmed_;  // written_ before the last update(), until its graph runs
   std::optional<std::vector<glm::mat4>> voxelized_;  // the placements of the field's contents
   int voxelizations_ = 0;
 };

@@ -1,7 +1,7 @@
 #include "liquid/solver/pressure.h"
 
 #include "engine/passes/bindings.h"
-#include "engine/passes/fullscreen.h"
+#include "liquid/solver/active_region.h"
 #include "liquid/solver/images.h"
 #include "liquid/solver/mesh_field.h"
 #include "liquid/solver/uniforms.h"
@@ -16,13 +16,14 @@ namespace {
 engine::vk::GraphicsPipelineDesc grid_pipeline(const char* name, const GridLayout& layout,
                                                std::span<const uint32_t> fragment, uint32_t binding,
                                                const std::vector<int32_t>& specialization, bool bodies,
-                                               bool meshes = false) {
-  const GridPassShaders shaders = grid_pass_shaders(layout);
+                                               bool meshes, bool active_region) {
+  const GridPassShaders shaders = grid_pass_shaders(layout, active_region);
   std::vector<engine::vk::DescriptorBinding> bindings{
       {LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
       {binding, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}};
   if (bodies) bindings.push_back({LIQUID_BINDING_BODIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
   add_mesh_field_binding(meshes, bindings);
+  add_active_region_binding(active_region, bindings);
   return engine::vk::GraphicsPipelineDesc{
       .name = name,
       .vertex = shaders.vertex,
@@ -36,7 +37,7 @@ engine::vk::GraphicsPipelineDesc grid_pipeline(const char* name, const GridLayou
 }  // namespace
 
 PressurePass::PressurePass(engine::vk::Context& context, const GridLayout& layout, SplatMode splat,
-                           const std::vector<int32_t>& specialization, bool meshes)
+                           const std::vector<int32_t>& specialization, bool meshes, bool active_region)
     : pressure_(context,
                 grid_pipeline("liquid.pressure", layout,
                               mesh_variant(meshes,
@@ -45,22 +46,26 @@ PressurePass::PressurePass(engine::vk::Context& context, const GridLayout& layou
                                            layout.pick(liquid_shaders::pressure_frag_2d_mesh,
                                                        liquid_shaders::pressure_frag_3d_mesh,
                                                        liquid_shaders::pressure_frag_3d_atlas_mesh)),
-                              LIQUID_BINDING_PRESSURE_SPLAT, specialization, true, meshes)),
+                              LIQUID_BINDING_PRESSURE_SPLAT, specialization, true, meshes, active_region)),
       nearest_(context, VK_FILTER_NEAREST),
-      desc_(layout.image_desc(k_pressure_format, 0)) {
+      desc_(layout.image_desc(k_pressure_format, 0)),
+      layout_(layout),
+      active_region_(active_region) {
   if (splat == SplatMode::Separable)
-    spread_.emplace(context, layout, SeparableBlur::Kind::Potential, k_pressure_format, specialization);
+    spread_.emplace(context, layout, SeparableBlur::Kind::Potential, k_pressure_format, specialization, active_region);
   else
     potential_.emplace(context, grid_pipeline("liquid.potential", layout,
                                               layout.pick(liquid_shaders::potential_frag_2d,
                                                           liquid_shaders::potential_frag_3d,
                                                           liquid_shaders::potential_frag_3d_atlas),
-                                              LIQUID_BINDING_POTENTIAL_PRESSURE, specialization, false));
+                                              LIQUID_BINDING_POTENTIAL_PRESSURE, specialization, false, false,
+                                              active_region));
 }
 
 ImageHandle PressurePass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
                                  ImageHandle splat, ImageHandle bodies, ImageHandle& pressure,
-                                 ImageHandle& potential, ImageHandle& scratch, ImageHandle mesh_field) const {
+                                 ImageHandle& potential, ImageHandle& scratch, ImageHandle mesh_field,
+                                 ImageHandle region) const {
   struct Data {
     engine::passes::PassBindings bindings;
     ImageHandle out;
@@ -76,11 +81,12 @@ ImageHandle PressurePass::add_to(engine::graph::RenderGraph& graph, const engine
               d.bindings.bind_image(b, binding, input, nearest_.handle());
               if (body_state.valid()) d.bindings.bind_image(b, LIQUID_BINDING_BODIES, body_state, nearest_.handle());
               bind_mesh_field(d.bindings, b, field, nearest_);
-              d.out = b.write(output, Access::ColorAttachmentWrite);
+              d.out = b.write(output, Access::ColorAttachmentWrite,
+                              bind_active_region(d.bindings, b, region, active_region_, nearest_));
             },
-            [](PassContext& ctx, const Data& d) {
+            [this](PassContext& ctx, const Data& d) {
               d.bindings.bind_and_push(ctx);
-              engine::passes::draw_fullscreen(ctx.cmd, ctx.layers);
+              draw_grid_cells(ctx, layout_, active_region_);
             })
         .out;
   };
@@ -89,8 +95,8 @@ ImageHandle PressurePass::add_to(engine::graph::RenderGraph& graph, const engine
     potential = pass("liquid.potential", *potential_, LIQUID_BINDING_POTENTIAL_PRESSURE, pressure, potential, {}, {});
     return potential;
   }
-  if (scratch.valid()) return spread_->add_to_keeping(graph, uniforms, pressure, potential, scratch);
-  return spread_->add_to(graph, uniforms, pressure, potential);
+  if (scratch.valid()) return spread_->add_to_keeping(graph, uniforms, pressure, potential, scratch, region);
+  return spread_->add_to(graph, uniforms, pressure, potential, region);
 }
 
 }  // namespace liquid

@@ -28,8 +28,9 @@ constexpr VkFormat k_pressure_format = VK_FORMAT_R32_SFLOAT;
 
 class PressurePass {
  public:
+  // `active_region`: its passes compute the step's active region only (active_region.h).
   PressurePass(engine::vk::Context& context, const GridLayout& layout, SplatMode splat,
-               const std::vector<int32_t>& specialization, bool meshes = false);
+               const std::vector<int32_t>& specialization, bool meshes, bool active_region);
 
   // Grid-sized descriptions of the two intermediate images (the node creates them as transients).
   engine::vk::ImageDesc image_desc() const { return desc_; }
@@ -39,10 +40,10 @@ class PressurePass {
   // Phi, which is in `potential`, or in `pressure` for the separable splat's spread in 2D (its
   // passes alternate between the two images). With a valid `scratch` (a third such image) the
   // spread alternates between `potential` and it instead and P stays in `pressure`, for the body
-  // force pass.
+  // force pass. `region`: the step's active region (valid exactly when the pass was made for one).
   ImageHandle add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle splat,
                      ImageHandle bodies, ImageHandle& pressure, ImageHandle& potential, ImageHandle& scratch,
-                     ImageHandle mesh_field = {}) const;
+                     ImageHandle mesh_field, ImageHandle region) const;
 
  private:
   engine::vk::GraphicsPipeline pressure_;
@@ -50,6 +51,8 @@ class PressurePass {
   std::optional<SeparableBlur> spread_;                     // the separable splat's passes
   engine::vk::Sampler nearest_;  // also the mesh field's (P reads the obstacles' density at cell centres)
   engine::vk::ImageDesc desc_;
+  GridLayout layout_;
+  bool active_region_ = false;
 };
 
 }  // namespace liquid

@@ -1,7 +1,7 @@
 #include "liquid/solver/separable_blur.h"
 
 #include "engine/passes/bindings.h"
-#include "engine/passes/fullscreen.h"
+#include "liquid/solver/active_region.h"
 #include "liquid/solver/uniforms.h"
 #include "liquid_shaders.h"
 
@@ -43,36 +43,37 @@ const char* pass_name(SeparableBlur::Kind kind, int axis) {
 }  // namespace
 
 SeparableBlur::SeparableBlur(engine::vk::Context& context, const GridLayout& layout, Kind kind, VkFormat format,
-                             const std::vector<int32_t>& specialization)
-    : nearest_(context, VK_FILTER_NEAREST) {
-  const GridPassShaders shaders = grid_pass_shaders(layout);
+                             const std::vector<int32_t>& specialization, bool active_region)
+    : nearest_(context, VK_FILTER_NEAREST), layout_(layout), active_region_(active_region) {
+  const GridPassShaders shaders = grid_pass_shaders(layout, active_region);
+  std::vector<engine::vk::DescriptorBinding> bindings{
+      {LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
+      {LIQUID_BINDING_BLUR_SOURCE, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}};
+  add_active_region_binding(active_region, bindings);
   const int axes = kind == Kind::Splat ? 2 : layout.dimension;  // the splat's z pass reads the deposit's pair
   for (int axis = 0; axis < axes; ++axis)
-    axes_.emplace_back(context, engine::vk::GraphicsPipelineDesc{
-                                    .name = pass_name(kind, axis),
-                                    .vertex = shaders.vertex,
-                                    .geometry = shaders.geometry,
-                                    .fragment = blur_shader(layout, kind, axis),
-                                    .color_formats = {format},
-                                    .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer,
-                                                  k_solver_uniform_stages},
-                                                 {LIQUID_BINDING_BLUR_SOURCE, DescriptorKind::SampledImage,
-                                                  VK_SHADER_STAGE_FRAGMENT_BIT}},
-                                    .specialization = specialization});
+    axes_.emplace_back(context, engine::vk::GraphicsPipelineDesc{.name = pass_name(kind, axis),
+                                                                 .vertex = shaders.vertex,
+                                                                 .geometry = shaders.geometry,
+                                                                 .fragment = blur_shader(layout, kind, axis),
+                                                                 .color_formats = {format},
+                                                                 .bindings = bindings,
+                                                                 .specialization = specialization});
 }
 
 ImageHandle SeparableBlur::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                                  ImageHandle& source, ImageHandle& scratch) const {
-  return chain(graph, uniforms, &source, &scratch, &source);
+                                  ImageHandle& source, ImageHandle& scratch, ImageHandle region) const {
+  return chain(graph, uniforms, &source, &scratch, &source, region);
 }
 
 ImageHandle SeparableBlur::add_to_keeping(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                                          ImageHandle source, ImageHandle& first, ImageHandle& second) const {
-  return chain(graph, uniforms, &source, &first, &second);
+                                          ImageHandle source, ImageHandle& first, ImageHandle& second,
+                                          ImageHandle region) const {
+  return chain(graph, uniforms, &source, &first, &second, region);
 }
 
 ImageHandle SeparableBlur::chain(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                                 ImageHandle* input, ImageHandle* first, ImageHandle* second) const {
+                                 ImageHandle* input, ImageHandle* first, ImageHandle* second, ImageHandle region) const {
   struct Data {
     engine::passes::PassBindings bindings;
     ImageHandle out;
@@ -87,11 +88,12 @@ ImageHandle SeparableBlur::chain(engine::graph::RenderGraph& graph, const engine
                   d.bindings = engine::passes::PassBindings(pipeline);
                   d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
                   d.bindings.bind_image(b, LIQUID_BINDING_BLUR_SOURCE, *input, nearest_.handle());
-                  d.out = b.write(*output, Access::ColorAttachmentWrite);
+                  d.out = b.write(*output, Access::ColorAttachmentWrite,
+                                  bind_active_region(d.bindings, b, region, active_region_, nearest_));
                 },
-                [](PassContext& ctx, const Data& d) {
+                [this](PassContext& ctx, const Data& d) {
                   d.bindings.bind_and_push(ctx);
-                  engine::passes::draw_fullscreen(ctx.cmd, ctx.layers);
+                  draw_grid_cells(ctx, layout_, active_region_);
                 })
             .out;
     input = output;

@@ -28,13 +28,21 @@ namespace liquid {
 
 class SeparableSplatPass {
  public:
+  // `active_region`: the spreads compute the step's active region only (active_region.h).
   SeparableSplatPass(engine::vk::Context& context, const GridLayout& layout, VkFormat splat_format,
-                     const std::vector<int32_t>& specialization);
+                     const std::vector<int32_t>& specialization, bool active_region);
 
-  // Writes the splat of the first `active_particles` particles into `splat` (every texel), using a
-  // transient grid image for the deposit and the passes between.
-  ImageHandle add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                     const ParticleImages& particles, ImageHandle splat, int active_particles) const;
+  // The first stage's grids: in 2D the deposit is in `splat` itself; in 3D in `lower` and `upper`,
+  // transient grids. `lower` marks every particle (the active region's marks).
+  struct Deposit {
+    ImageHandle lower, upper;
+  };
+  // Deposits the first `active_particles` particles (`splat` is the 2D deposit's target).
+  Deposit deposit(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
+                  const ParticleImages& particles, ImageHandle splat, int active_particles) const;
+  // Spreads the deposit into `splat` (every texel; the region's, cleared elsewhere, with `region`).
+  ImageHandle spread(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
+                     const Deposit& deposit, ImageHandle splat, ImageHandle region) const;
 
  private:
   engine::vk::GraphicsPipeline deposit_;
@@ -42,6 +50,8 @@ class SeparableSplatPass {
   SeparableBlur spread_xy_;                               // the x and y passes
   engine::vk::Sampler nearest_;
   engine::vk::ImageDesc scratch_desc_;
+  GridLayout layout_;
+  bool active_region_ = false;
 };
 
 }  // namespace liquid

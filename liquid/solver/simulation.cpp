@@ -70,14 +70,18 @@ Simulation::Simulation(engine::vk::Context& context, const Scene& scene, const L
     if (format.fell_back) options.log("liquid: the device cannot blend into RGBA32F; the splat uses RGBA16F");
   }
   const std::vector<int32_t> specialization = scene_specialization(scene_, setup_);
+  const bool active_region = options.active_region && setup_.dimension == 3;
+  if (active_region) active_region_ = std::make_unique<ActiveRegion>(context, layout_, specialization);
   if (setup_.splat == SplatMode::Separable)
-    separable_splat_ = std::make_unique<SeparableSplatPass>(context, layout_, splat_format_, specialization);
+    separable_splat_ =
+        std::make_unique<SeparableSplatPass>(context, layout_, splat_format_, specialization, active_region);
   else
     splat_ = std::make_unique<SplatPass>(context, setup_, layout_, splat_format_, specialization);
   const bool meshes = has_mesh_obstacles(scene_);
-  grid_ = std::make_unique<GridPass>(context, setup_, layout_, specialization, meshes);
+  grid_ = std::make_unique<GridPass>(context, setup_, layout_, specialization, meshes, active_region);
   if (setup_.splat_adjoint_pressure)
-    pressure_ = std::make_unique<PressurePass>(context, layout_, setup_.splat, specialization, meshes);
+    pressure_ =
+        std::make_unique<PressurePass>(context, layout_, setup_.splat, specialization, meshes, active_region);
   particle_update_ = std::make_unique<ParticleUpdatePass>(context, layout_, specialization, meshes);
   if (meshes) mesh_field_ = std::make_unique<MeshField>(context, scene_, setup_, layout_, specialization);
   const bool dynamic = std::any_of(scene.obstacles.begin(), scene.obstacles.end(), [](const Obstacle& o) { return o.dynamic; });
@@ -199,6 +203,7 @@ gpu::SolverUniforms Simulation::uniforms_for(const StepInputs& step) const {
   gpu::SolverUniforms u = make_uniforms(scene_, setup_, step);
   u.atlas_columns = layout_.tiles.x;
   u.atlas_rows = layout_.tiles.y;
+  u.active_region_margin_cells = active_region_margin_cells(setup_);
   return u;
 }
 
@@ -231,19 +236,26 @@ Simulation::PressureImages Simulation::create_pressure_images(engine::graph::Ren
   return images;
 }
 
-ImageHandle Simulation::add_splat(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
-                                  const ParticleImages& particles, ImageHandle splat, int active) const {
-  if (separable_splat_) return separable_splat_->add_to(graph, slice, particles, splat, active);
-  return splat_->add_to(graph, slice, particles, splat, active);
+Simulation::Splat Simulation::add_splat(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
+                                        const ParticleImages& particles, ImageHandle splat, int active) const {
+  // The region's marks: the deposit's (its spreads are trimmed to the region), or the whole splat's.
+  auto region_of = [&](ImageHandle marks) { return active_region_ ? active_region_->add_to(graph, slice, marks) : ImageHandle{}; };
+  if (!separable_splat_) {
+    const ImageHandle out = splat_->add_to(graph, slice, particles, splat, active);
+    return {out, region_of(out)};
+  }
+  const SeparableSplatPass::Deposit deposit = separable_splat_->deposit(graph, slice, particles, splat, active);
+  const ImageHandle region = region_of(deposit.lower);
+  return {separable_splat_->spread(graph, slice, deposit, splat, region), region};
 }
 
 GridImages Simulation::add_grid(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
-                                ImageHandle splat, ImageHandle bodies, const GridImages& grids,
+                                const Splat& splat, ImageHandle bodies, const GridImages& grids,
                                 PressureImages& pressure, ImageHandle mesh_field) const {
-  if (!pressure_) return grid_->add_to(graph, slice, splat, bodies, grids, {}, mesh_field);
-  const ImageHandle potential =
-      pressure_->add_to(graph, slice, splat, bodies, pressure.pressure, pressure.potential, pressure.scratch, mesh_field);
-  return grid_->add_to(graph, slice, splat, bodies, grids, potential, mesh_field);
+  if (!pressure_) return grid_->add_to(graph, slice, splat.splat, bodies, grids, {}, mesh_field, splat.region);
+  const ImageHandle potential = pressure_->add_to(graph, slice, splat.splat, bodies, pressure.pressure,
+                                                  pressure.potential, pressure.scratch, mesh_field, splat.region);
+  return grid_->add_to(graph, slice, splat.splat, bodies, grids, potential, mesh_field, splat.region);
 }
 
 ImageHandle Simulation::update_mesh_field(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
@@ -289,8 +301,9 @@ LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
     const int cur = s.current, next = 1 - s.current;
     // The meshes at the end of the step, where the uniforms place every obstacle.
     mesh_field = update_mesh_field(graph, slice, step.obstacle_poses, mesh_field);
-    splat = add_splat(graph, slice, particles[cur], splat, active_);
-    grids = add_grid(graph, slice, splat, bodies[s.body_current], grids, pressure, mesh_field);
+    const Splat step_splat = add_splat(graph, slice, particles[cur], splat, active_);
+    splat = step_splat.splat;
+    grids = add_grid(graph, slice, step_splat, bodies[s.body_current], grids, pressure, mesh_field);
     if (body_integration_) {
       // The liquid's pressure on the bodies at the pose the grid pass used, then their step; the
       // particle pass keeps particles out of where they are at its end.
@@ -328,7 +341,7 @@ LiquidImages Simulation::add_grids_to(engine::graph::RenderGraph& graph, const L
   step.brushes = brushes_;
   const engine::vk::UniformSlice slice = grid_uniforms_->push(uniforms_for(step));
   const ParticleImages particles{images.positions, images.velocities};
-  const ImageHandle splat = add_splat(graph, slice, particles, images.splat, active_);
+  const Splat splat = add_splat(graph, slice, particles, images.splat, active_);
   PressureImages pressure = create_pressure_images(graph);
   // The field add_to() imported into this graph (a second import would lose its state).
   ImageHandle mesh_field = images.mesh_field;
@@ -336,7 +349,7 @@ LiquidImages Simulation::add_grids_to(engine::graph::RenderGraph& graph, const L
   mesh_field = update_mesh_field(graph, slice, step.obstacle_poses, mesh_field);
   const GridImages grids = add_grid(graph, slice, splat, images.bodies, GridImages{images.grid_velocity, images.density},
                                     pressure, mesh_field);
-  return {images.positions, images.velocities, splat, grids.velocity, grids.density, images.bodies, mesh_field};
+  return {images.positions, images.velocities, splat.splat, grids.velocity, grids.density, images.bodies, mesh_field};
 }
 
 Checkpoint Simulation::save_checkpoint() {

@@ -11,6 +11,7 @@
 #include "liquid/analysis/diagnostics.h"
 #include "liquid/physics/setup.h"
 #include "liquid/scene.h"
+#include "liquid/solver/active_region.h"
 #include "liquid/solver/body_force.h"
 #include "liquid/solver/body_integration.h"
 #include "liquid/solver/grid.h"
@@ -96,11 +97,15 @@ class Simulation {
     ImageHandle scratch;  // with dynamic bodies: the separable spread's second image, so P is kept
   };
   PressureImages create_pressure_images(engine::graph::RenderGraph& graph) const;
+  // The scene's splat of the first `active` particles into `splat`, and the step's active region
+  // (active_region.h; invalid when the grid passes compute every cell).
+  struct Splat {
+    ImageHandle splat, region;
+  };
+  Splat add_splat(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
+                  const ParticleImages& particles, ImageHandle splat, int active) const;
   // One step's grid pass, after the splat-adjoint pressure passes when the scene uses them.
-  // The scene's splat of the first `active` particles into `splat`.
-  ImageHandle add_splat(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
-                        const ParticleImages& particles, ImageHandle splat, int active) const;
-  GridImages add_grid(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice, ImageHandle splat,
+  GridImages add_grid(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice, const Splat& splat,
                       ImageHandle bodies, const GridImages& grids, PressureImages& pressure, ImageHandle mesh_field) const;
   // The index of a dynamic obstacle, or std::out_of_range / std::invalid_argument naming it.
   size_t dynamic_obstacle(size_t index) const;
@@ -122,6 +127,7 @@ class Simulation {
   uint32_t frames_in_flight_ = 2;
   std::unique_ptr<SplatPass> splat_;                     // the scene's splat: the chapter's point sprites,
   std::unique_ptr<SeparableSplatPass> separable_splat_;  // or the separable deposit and spread
+  std::unique_ptr<ActiveRegion> active_region_;  // 3D, unless LiquidOptions::active_region is off
   std::unique_ptr<GridPass> grid_;
   std::unique_ptr<PressurePass> pressure_;  // only with the splat-adjoint pressure
   std::unique_ptr<ParticleUpdatePass> particle_update_;

@@ -35,6 +35,17 @@ layout(constant_id = 12) const int GROUND_HILLS = 0;       // shallow water: hil
 
 int obstacle_count() { return OBSTACLE_COUNT; }
 
+// The solver's loops over the obstacles, written out: CALL(i) for every index up to the limit, i a
+// literal, each call skipped unless i < obstacle_count() (a constant once specialized), so an
+// obstacle's kind is a constant and only its shape's code is compiled. As `for` loops they were
+// left rolled by lavapipe in the MESH_FIELD variants (a loop that, or whose enclosing loop, reads
+// the mesh field): each obstacle's kind was then a run-time value and every shape's code ran for
+// every obstacle, the metaballs' loop included, which made those passes 4 to 8 times slower.
+#if LIQUID_MAX_OBSTACLES != 8
+#error FOR_EACH_OBSTACLE lists LIQUID_MAX_OBSTACLES indices
+#endif
+#define FOR_EACH_OBSTACLE(CALL) CALL(0) CALL(1) CALL(2) CALL(3) CALL(4) CALL(5) CALL(6) CALL(7)
+
 // The constant holds the shape's code (LIQUID_OBSTACLE_SPHERE ...) plus LIQUID_OBSTACLE_DYNAMIC for
 // a rigid body the liquid moves.
 int obstacle_code(int index) {
@@ -260,21 +271,33 @@ MeshSample mesh_sample(vec3 p, bool with_gradient) {
   return m;
 }
 
+// Every mesh's distance at cell c's centre (the grid passes): its texel (far without MESH_FIELD).
+vec4 mesh_distances_at_cell(ivec3 c) {
+#if MESH_FIELD
+  return fetch_grid(u_mesh_field, c);
+#else
+  return vec4(LIQUID_MESH_FAR);
+#endif
+}
+
+// The meshes' distances at a point, without a gradient.
+MeshSample mesh_sample_of(vec4 distance) {
+  MeshSample m;
+  m.distance = distance;
+  m.gradient_x = m.gradient_y = m.gradient_z = vec4(0.0);
+  return m;
+}
+
 // At cell c's centre (the grid passes): the texel itself, the gradient a cell either side.
 MeshSample mesh_sample_at_cell(ivec3 c, bool with_gradient) {
-  MeshSample m;
-  m.distance = vec4(LIQUID_MESH_FAR);
-  m.gradient_x = m.gradient_y = m.gradient_z = vec4(0.0);
-#if MESH_FIELD
-  m.distance = fetch_grid(u_mesh_field, c);
+  MeshSample m = mesh_sample_of(mesh_distances_at_cell(c));
   if (with_gradient) {
-    m.gradient_x = fetch_grid(u_mesh_field, c + ivec3(1, 0, 0)) - fetch_grid(u_mesh_field, c - ivec3(1, 0, 0));
-    m.gradient_y = fetch_grid(u_mesh_field, c + ivec3(0, 1, 0)) - fetch_grid(u_mesh_field, c - ivec3(0, 1, 0));
+    m.gradient_x = mesh_distances_at_cell(c + ivec3(1, 0, 0)) - mesh_distances_at_cell(c - ivec3(1, 0, 0));
+    m.gradient_y = mesh_distances_at_cell(c + ivec3(0, 1, 0)) - mesh_distances_at_cell(c - ivec3(0, 1, 0));
 #if DIM == 3
-    m.gradient_z = fetch_grid(u_mesh_field, c + ivec3(0, 0, 1)) - fetch_grid(u_mesh_field, c - ivec3(0, 0, 1));
+    m.gradient_z = mesh_distances_at_cell(c + ivec3(0, 0, 1)) - mesh_distances_at_cell(c - ivec3(0, 0, 1));
 #endif
   }
-#endif
   return m;
 }
 
@@ -343,16 +366,17 @@ vec3 obstacle_normal(int index, vec3 p) {
 float obstacle_density(vec3 p, MeshSample meshes) {
   float band = u.obstacle_band;
   float total = 0.0;
-  [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
-    if (obstacle_dynamic(i)) continue;
-    float d = obstacle_distance(i, p, meshes);
-    total += clamp(1.0 - d / band, 0.0, 2.0);
-  }
+#define LIQUID_DENSITY_TERM(i) \
+  if (i < obstacle_count() && !obstacle_dynamic(i)) \
+    total += clamp(1.0 - obstacle_distance(i, p, meshes) / band, 0.0, 2.0);
+  FOR_EACH_OBSTACLE(LIQUID_DENSITY_TERM)
+#undef LIQUID_DENSITY_TERM
   return total * u.rest_density;
 }
 
-// At cell c's centre (the grid passes), the meshes' field read there.
-float obstacle_density_at_cell(ivec3 c) { return obstacle_density(cell_center(c), mesh_sample_at_cell(c, false)); }
+// At cell c's centre (the grid passes), where the meshes' distances are `meshes` (read there).
+float obstacle_density_at_cell(ivec3 c, vec4 meshes) { return obstacle_density(cell_center(c), mesh_sample_of(meshes)); }
+float obstacle_density_at_cell(ivec3 c) { return obstacle_density_at_cell(c, mesh_distances_at_cell(c)); }
 
 // Shallow water (section 6, figure 4): ground height b(x, y) in metres; read as extra density
 // rho0 * b / rest_depth so that P = g (h + b).

@@ -271,6 +271,9 @@ int main(int argc, char** argv) {
   app.add_flag("--no-scaling", o.no_scaling, "skip the scaling set")->excludes(scaling);
   app.add_flag("--list", o.list, "list the configurations (particles, grid, timed frames), run nothing");
   app.add_flag("--validation", o.validation, "enable the Vulkan validation layer (exit 1 on any message)");
+  app.add_flag("--whole-grid", o.whole_grid,
+               "3D: the grid passes compute every cell, not only each step's active region (the same results; "
+               "for timing the region against the whole grid)");
   std::vector<std::string> paths_3d;
   app.add_option("--3d-path", paths_3d,
                  "run each 3D configuration on these paths (geometry, vertex-layer, atlas; comma-separated or "

@@ -5,6 +5,8 @@
 #include "liquid/physics/setup.h"
 #include "liquid/scene/override.h"
 
+#include <glm/gtc/quaternion.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -198,6 +200,59 @@ std::vector<Configuration> composite_configurations(const Options& o) {
   return out;
 }
 
+// A closed torus in the xz plane (its hole along y) about the origin, as tools/make_torus_obj.py
+// writes it: major radius R, tube radius r, major x minor segments of two triangles.
+liquid::TriangleMesh torus_mesh(float R, float r, int major, int minor) {
+  liquid::TriangleMesh mesh;
+  for (int i = 0; i < major; ++i)
+    for (int j = 0; j < minor; ++j) {
+      const float u = 2.0f * float(M_PI) * float(i) / float(major), v = 2.0f * float(M_PI) * float(j) / float(minor);
+      const float ring = R + r * std::cos(v);
+      mesh.vertices.push_back({ring * std::cos(u), r * std::sin(v), ring * std::sin(u)});
+    }
+  const auto index = [&](int i, int j) { return uint32_t((i % major) * minor + (j % minor)); };
+  for (int i = 0; i < major; ++i)
+    for (int j = 0; j < minor; ++j) {
+      const uint32_t a = index(i, j), b = index(i + 1, j), c = index(i + 1, j + 1), d = index(i, j + 1);
+      mesh.indices.insert(mesh.indices.end(), {a, d, c, a, c, b});
+    }
+  return mesh;
+}
+
+// Mesh obstacles (liquid/solver/mesh_field.h), simulation only: paper_3d with a torus of 10,000
+// triangles in its pool, as tools/mesh_voxelization_cost.sh places it, moving (voxelized every
+// step: the voxelization's cost) and standing still (voxelized once: sampling the field's cost).
+std::vector<Configuration> mesh_configurations(const Options& o) {
+  liquid::Obstacle torus;
+  torus.shape = liquid::ObstacleShape::Mesh;
+  torus.mesh = torus_mesh(0.1f, 0.035f, 100, 50);
+  torus.mesh.rotation = glm::angleAxis(glm::radians(90.0f), glm::vec3(1.0f, 0.0f, 0.0f));
+  torus.mesh.scale = 1.5f;
+  torus.center = glm::vec3(0.3f, 0.1f, 0.6f);
+  const size_t triangles = torus.mesh.indices.size() / 3;
+  std::vector<Configuration> out;
+  for (const bool moving : {true, false}) {
+    liquid::Scene scene = load_named_scene(o, "paper_3d");
+    torus.velocity = glm::vec3(moving ? 0.5f : 0.0f, 0.0f, 0.0f);
+    scene.obstacles.push_back(torus);
+    const std::string state = moving ? "moving" : "still";
+    std::vector<std::optional<liquid::GridPath>> paths(o.paths_3d.begin(), o.paths_3d.end());
+    if (paths.empty()) paths.push_back(std::nullopt);
+    for (const std::optional<liquid::GridPath>& path : paths) {
+      Configuration c = make_configuration("mesh/torus_" + std::to_string(triangles) + "_tri/" + state + "/sim" +
+                                               (path ? std::string("/") + liquid::grid_path_name(*path) : std::string()),
+                                           "mesh", "paper_3d", scene, Mode::Simulation, o.runs);
+      c.grid_path = path;
+      c.note = "paper_3d with a torus of " + std::to_string(triangles) + " triangles in its pool, grid " +
+               grid_label(c.grid) + ", " +
+               (moving ? "moving at 0.5 m/s (voxelized every step)" : "standing still (voxelized once)") + "; " +
+               c.note;
+      out.push_back(std::move(c));
+    }
+  }
+  return out;
+}
+
 // Simulation only, from paper_2d_64k: particle count 16k..256k on its 256^2 grid, then grid
 // 128^2..1024^2 at 64k particles (the 256^2 point is shared with the first curve).
 std::vector<Configuration> scaling_configurations(const Options& o) {
@@ -247,6 +302,10 @@ Plan make_plan(const Options& o) {
   if (!o.no_scaling) {
     auto scaling = scaling_configurations(o);
     all.insert(all.end(), scaling.begin(), scaling.end());
+  }
+  if (!o.scaling_only) {
+    auto meshes = mesh_configurations(o);
+    all.insert(all.end(), meshes.begin(), meshes.end());
   }
   if (o.composite && !o.scaling_only) {
     auto composite = composite_configurations(o);

@@ -34,6 +34,7 @@ struct Options {
   bool no_scaling = false;
   bool list = false;
   bool validation = false;
+  bool whole_grid = false;  // --whole-grid: 3D grid passes over every cell (LiquidOptions::active_region off)
   std::vector<std::string> only;
   // --3d-path: each 3D configuration once per path, named ".../<path>"; empty: once, on the
   // device's choice.

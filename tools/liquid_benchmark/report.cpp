@@ -21,8 +21,9 @@ void list_plan(const std::vector<Configuration>& plan) {
 
 void print_plan(const std::vector<Configuration>& plan, const Options& o) {
   std::printf("%zu configuration(s); %d warm-up frame(s) (not timed) then %d timed frame(s) each (%d per scaling "
-              "point); %d step(s) per frame; frames %ux%u with FXAA\n",
-              plan.size(), o.warmup, o.runs, o.scaling_runs, o.steps_per_frame, o.width, o.height);
+              "point); %d step(s) per frame; frames %ux%u with FXAA; 3D grid passes over %s\n",
+              plan.size(), o.warmup, o.runs, o.scaling_runs, o.steps_per_frame, o.width, o.height,
+              o.whole_grid ? "the whole grid (--whole-grid)" : "each step's active region");
 }
 
 namespace {
@@ -201,7 +202,7 @@ json benchmark_json(const std::vector<Result>& results, const Options& o, const 
                 {"LP_NUM_THREADS", lp_threads ? json(lp_threads) : json(nullptr)}}},
       {"settings", {{"warmup_frames", o.warmup}, {"timed_frames", o.runs}, {"scaling_timed_frames", o.scaling_runs},
                     {"steps_per_frame", o.steps_per_frame}, {"frame_width", o.width}, {"frame_height", o.height},
-                    {"fxaa", true}, {"validation", o.validation}}},
+                    {"fxaa", true}, {"validation", o.validation}, {"whole_grid", o.whole_grid}}},
       {"paper_reference", {{"source", k_paper_source}, {"device", k_paper_device},
                            {"measure", "frames per second, one solver step plus rendering per frame"}}},
       {"results", json::array()},

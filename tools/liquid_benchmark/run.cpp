@@ -50,10 +50,11 @@ double seconds_since(Clock::time_point start) {
 }
 
 // The splat-adjoint pressure's passes are the solver's too, and so are the separable splat's
-// deposit and spreads (and its potential's spreads).
+// deposit and spreads (and its potential's spreads) and the active region's reductions.
 bool is_solver_pass(const std::string& name) {
   return name == "liquid.splat" || name == "liquid.pressure" || name == "liquid.potential" || name == "liquid.grid" ||
          name == "liquid.particle" || name == "liquid.deposit" || name.rfind("liquid.splat_spread_", 0) == 0 ||
+         name.rfind("liquid.active_", 0) == 0 ||
          name.rfind("liquid.potential_", 0) == 0;
 }
 
@@ -63,7 +64,10 @@ struct Bench {
       : steps(o.steps_per_frame),
         node(context, c.scene,
              liquid::LiquidOptions{
-                 .frames_in_flight = 1, .max_steps_per_frame = o.steps_per_frame, .grid_path = c.grid_path}),
+                 .frames_in_flight = 1,
+                 .max_steps_per_frame = o.steps_per_frame,
+                 .grid_path = c.grid_path,
+                 .active_region = !o.whole_grid}),
         loop(context) {
     if (c.mode == Mode::SimulationAndRender) {
       const bool composite = c.group == "composite";

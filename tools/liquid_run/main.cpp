@@ -57,12 +57,13 @@ void check_output_file(const std::filesystem::path& path) {
 }
 
 int run(const std::string& scene_path, int steps, double seconds, int report_every, bool validation,
-        const std::string& dump_path, const std::string& grid_path) {
+        const std::string& dump_path, const std::string& grid_path, bool whole_grid) {
   const liquid::Scene scene = liquid::load_scene(scene_path);
   if (!dump_path.empty()) check_output_file(dump_path);
   engine::vk::Context context(engine::vk::ContextOptions{.validation = validation});
   liquid::LiquidOptions node_options;
   node_options.grid_path = tools::grid_path_from_flag(grid_path);
+  node_options.active_region = !whole_grid;
   node_options.log = tools::stdout_log();
   liquid::LiquidNode node(context, scene, node_options);
   const auto& s = node.simulation().setup();
@@ -137,7 +138,7 @@ int main(int argc, char** argv) {
   std::string scene;
   int steps = 200, report_every = 50;
   double seconds = 0.0;
-  bool validation = false;
+  bool validation = false, whole_grid = false;
   std::string dump_path, grid_path;
   tools::add_grid_path_option(app, grid_path);
   app.add_option("--dump-particles", dump_path, "write the final particles as CSV");
@@ -149,6 +150,9 @@ int main(int argc, char** argv) {
   app.add_option("-r,--report-every", report_every, "steps between diagnostics lines (the state is checked every batch)")
       ->check(tools::integer_range(1, 1000000));
   app.add_flag("--validation", validation, "enable the Vulkan validation layer");
-  return tools::run_main(app, argc, argv, "liquid_run",
-                         [&] { return run(scene, steps, seconds, report_every, validation, dump_path, grid_path); });
+  app.add_flag("--whole-grid", whole_grid,
+               "3D: every step's grid passes compute every cell, not only the active region (same results)");
+  return tools::run_main(app, argc, argv, "liquid_run", [&] {
+    return run(scene, steps, seconds, report_every, validation, dump_path, grid_path, whole_grid);
+  });
 }

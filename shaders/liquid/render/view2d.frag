@@ -52,6 +52,15 @@ float tank_distance(vec2 q) {
 // field's (MESH_FIELD=1, the scenes with meshes), sampled here in `meshes`.
 float obstacle_distance_2d(int i, vec2 p, MeshSample meshes) { return obstacle_distance(i, vec3(p, 0.0), meshes); }
 
+// Obstacle i over the pixel at p: solid grey with a darker outline.
+void draw_obstacle(int i, vec2 p, MeshSample meshes, inout vec3 color, inout float alpha) {
+  if (i >= obstacle_count()) return;
+  float d_pixels = obstacle_distance_2d(i, p, meshes) * pc.pixels_per_metre;
+  vec3 shade = mix(k_obstacle, k_obstacle_outline, smoothstep(-2.0, -1.0, d_pixels));
+  color = mix(color, shade, coverage(d_pixels));
+  alpha = mix(alpha, 1.0, coverage(d_pixels));
+}
+
 void main() {
   // Domain coordinates: q in pixels from the domain's bottom-left corner (y up), p in metres.
   vec2 q = vec2(gl_FragCoord.x - pc.origin.x, pc.origin.y - gl_FragCoord.y);
@@ -91,12 +100,9 @@ void main() {
   // The distance is metric near every surface (metaballs: a first-order estimate), so pixels are
   // metres times the scale; screen derivatives would break on the metaballs' field discontinuity.
   MeshSample meshes = mesh_sample(vec3(p, 0.0), false);
-  [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
-    float d_pixels = obstacle_distance_2d(i, p, meshes) * pc.pixels_per_metre;
-    vec3 shade = mix(k_obstacle, k_obstacle_outline, smoothstep(-2.0, -1.0, d_pixels));
-    color = mix(color, shade, coverage(d_pixels));
-    alpha = mix(alpha, 1.0, coverage(d_pixels));
-  }
+#define LIQUID_DRAW_OBSTACLE(i) draw_obstacle(i, p, meshes, color, alpha);
+  FOR_EACH_OBSTACLE(LIQUID_DRAW_OBSTACLE)
+#undef LIQUID_DRAW_OBSTACLE
 
   if (PANEL) {
     out_color = vec4(color / max(alpha, 1e-4), alpha);  // blended with SRC_ALPHA, 1 - SRC_ALPHA

@@ -15,15 +15,18 @@ layout(set = 0, binding = LIQUID_BINDING_GRID_POTENTIAL) uniform GRID_SAMPLER u_
 #endif
 
 // The chapter's pressure at neighbour cell c (clamped into the grid, which makes the difference
-// one-sided at the walls) whose kernel share inside the domain is `coverage`: liquid plus obstacle
-// or ground density. (Dynamic bodies need the splat-adjoint pressure, whose P is pressure.frag's.)
-float pressure_at(ivec3 c, float coverage) {
-  c = clamp(c, ivec3(0), grid_cells() - 1);
+// one-sided at the walls: neighbour()) whose kernel share inside the domain is `coverage` and where
+// the meshes' distances are `meshes`: liquid plus obstacle or ground density. (Dynamic bodies need
+// the splat-adjoint pressure, whose P is pressure.frag's.)
+float pressure_at(ivec3 c, float coverage, vec4 meshes) {
   float rho = u.density_scale * fetch_grid(u_splat, c).a / coverage;
-  rho += obstacle_density_at_cell(c);
+  rho += obstacle_density_at_cell(c, meshes);
   if (shallow_water()) rho += u.rest_density * ground_height(cell_center(c).xy) / u.rest_depth;
   return pressure_from_density(rho);
 }
+
+// The neighbour `offset` cells from c, clamped into the grid.
+ivec3 neighbour(ivec3 c, ivec3 offset) { return clamp(c + offset, ivec3(0), grid_cells() - 1); }
 
 #if SPLAT_ADJOINT
 // Phi at the neighbour `offset` (-1 or 1) cells from c along axis a; one cell beyond a wall, the
@@ -62,6 +65,7 @@ vec3 grid_update(ivec3 c, vec4 splat) {
   // Central differences of Phi, with the hydrostatic ghost cells beyond the walls.
   vec3 grad_p = vec3(0.0);
   [[unroll]] for (int a = 0; a < DIM; ++a) grad_p[a] = potential_at(c, a, 1) - potential_at(c, a, -1);
+  MeshSample meshes = mesh_sample_at_cell(c, true);
 #else
   // Wall coverage is a product over the axes, so each neighbour's is the centre's with one factor
   // swapped: 3 factors per axis instead of a full product per neighbour.
@@ -72,16 +76,29 @@ vec3 grid_update(ivec3 c, vec4 splat) {
     above[a] = axis_coverage(c[a] + 1, n[a]);
   }
 
+  // The meshes' distances at the six neighbours, read once for their pressures and the cell's
+  // normal (obstacle_condition).
+  ivec3 x_above = neighbour(c, ivec3(1, 0, 0)), x_below = neighbour(c, ivec3(-1, 0, 0));
+  ivec3 y_above = neighbour(c, ivec3(0, 1, 0)), y_below = neighbour(c, ivec3(0, -1, 0));
+  ivec3 z_above = neighbour(c, ivec3(0, 0, 1)), z_below = neighbour(c, ivec3(0, 0, -1));
+  vec4 meshes_x_above = mesh_distances_at_cell(x_above), meshes_x_below = mesh_distances_at_cell(x_below);
+  vec4 meshes_y_above = mesh_distances_at_cell(y_above), meshes_y_below = mesh_distances_at_cell(y_below);
+  MeshSample meshes = mesh_sample_of(mesh_distances_at_cell(c));
+  meshes.gradient_x = meshes_x_above - meshes_x_below;
+  meshes.gradient_y = meshes_y_above - meshes_y_below;
+
   // Eq. 3: central differences of the pressure.
   vec3 grad_p;
-  grad_p.x = pressure_at(c + ivec3(1, 0, 0), above.x * here.y * here.z) -
-             pressure_at(c - ivec3(1, 0, 0), below.x * here.y * here.z);
-  grad_p.y = pressure_at(c + ivec3(0, 1, 0), here.x * above.y * here.z) -
-             pressure_at(c - ivec3(0, 1, 0), here.x * below.y * here.z);
+  grad_p.x = pressure_at(x_above, above.x * here.y * here.z, meshes_x_above) -
+             pressure_at(x_below, below.x * here.y * here.z, meshes_x_below);
+  grad_p.y = pressure_at(y_above, here.x * above.y * here.z, meshes_y_above) -
+             pressure_at(y_below, here.x * below.y * here.z, meshes_y_below);
   grad_p.z = 0.0;
 #if DIM == 3
-  grad_p.z = pressure_at(c + ivec3(0, 0, 1), here.x * here.y * above.z) -
-             pressure_at(c - ivec3(0, 0, 1), here.x * here.y * below.z);
+  vec4 meshes_z_above = mesh_distances_at_cell(z_above), meshes_z_below = mesh_distances_at_cell(z_below);
+  meshes.gradient_z = meshes_z_above - meshes_z_below;
+  grad_p.z = pressure_at(z_above, here.x * here.y * above.z, meshes_z_above) -
+             pressure_at(z_below, here.x * here.y * below.z, meshes_z_below);
 #endif
 #endif
   grad_p /= 2.0 * h;
@@ -90,8 +107,10 @@ vec3 grid_update(ivec3 c, vec4 splat) {
   vec3 acceleration = -grad_p + u.gravity + external_acceleration(p);
   velocity += dt * acceleration;
 
-  MeshSample meshes = mesh_sample_at_cell(c, true);
-  [[unroll]] for (int i = 0; i < obstacle_count(); ++i) velocity = obstacle_condition(i, p, velocity, meshes);
+#define LIQUID_OBSTACLE_CONDITION(i) \
+  if (i < obstacle_count()) velocity = obstacle_condition(i, p, velocity, meshes);
+  FOR_EACH_OBSTACLE(LIQUID_OBSTACLE_CONDITION)
+#undef LIQUID_OBSTACLE_CONDITION
 
   // Section 4's wall condition: in a cell next to a wall, the velocity component normal to that
   // wall is zero.

@@ -3,7 +3,7 @@
 // to their slice with gl_Layer, corners in order (the inside pass's facing is kept).
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 3) out;
-#if BAND
+#if SEED
 layout(location = 0) flat in vec3 v_a_in[];
 layout(location = 1) flat in vec3 v_b_in[];
 layout(location = 2) flat in vec3 v_c_in[];
@@ -23,7 +23,7 @@ void main() {
     gl_Position = gl_in[i].gl_Position;
     gl_Layer = v_slice_in[0];
     v_slice = v_slice_in[0];
-#if BAND
+#if SEED
     v_a = v_a_in[0];
     v_b = v_b_in[0];
     v_c = v_c_in[0];

@@ -4,10 +4,12 @@
 // mesh's own frame) and placed by the push constants' transform; the grid is looked at along z, one
 // instance per slice, routed to its slice as the splat is (GEOMETRY_LAYER: mesh_raster.geom; ATLAS:
 // the slice's tile; else gl_Layer here).
-//   BAND=0 (inside): the triangle itself, in every slice of the mesh's z range from first_slice;
-//                    mesh_inside.frag counts the surfaces above each cell.
-//   BAND=1 (band):   per triangle, in each slice within `band` of it, the rectangle of cells within
-//                    `band` of its bounding box there; mesh_band.frag takes the exact distance.
+//   SEED=0 (inside): the triangle itself, in each slice s whose span between cell centres
+//                    (s + 0.5, s + 1.5] it crosses; mesh_inside.frag counts the crossings there,
+//                    and the field pass sums them from a cell up.
+//   SEED=1 (seed):   per triangle, in each slice within LIQUID_MESH_SEED_CELLS of it, the rectangle
+//                    of cells within that of its part in the slice's slab (drawn as one triangle
+//                    holding it); mesh_seed.frag takes the exact closest point.
 #ifndef GEOMETRY_LAYER
 #define GEOMETRY_LAYER 0
 #endif
@@ -25,7 +27,7 @@ layout(push_constant) uniform Push {
   MeshRasterPush pc;
 };
 
-#if BAND
+#if SEED
 layout(location = 0) flat out vec3 v_a;  // the triangle, world (m)
 layout(location = 1) flat out vec3 v_b;
 layout(location = 2) flat out vec3 v_c;
@@ -63,49 +65,85 @@ void drop() {
   route(-1);
 }
 
+#if SEED
+// Grows the box [lo, hi] to hold p.
+void include(vec2 p, inout vec2 lo, inout vec2 hi) {
+  lo = min(lo, p);
+  hi = max(hi, p);
+}
+
+// The xy box of the part of triangle (a, b, c) with z in [z0, z1] (all in cells): its corners
+// there and its edges' crossings of the two planes; false if no part lies there.
+bool slab_box(vec3 a, vec3 b, vec3 c, float z0, float z1, out vec2 lo, out vec2 hi) {
+  lo = vec2(1.0e30);
+  hi = vec2(-1.0e30);
+  vec3 corners[3] = vec3[3](a, b, c);
+  for (int i = 0; i < 3; ++i) {
+    vec3 p = corners[i], q = corners[(i + 1) % 3];
+    if (p.z >= z0 && p.z <= z1) include(p.xy, lo, hi);
+    for (int k = 0; k < 2; ++k) {
+      float plane = k == 0 ? z0 : z1;
+      if ((p.z - plane) * (q.z - plane) < 0.0) include(mix(p.xy, q.xy, (plane - p.z) / (q.z - p.z)), lo, hi);
+    }
+  }
+  return lo.x <= hi.x;
+}
+#endif
+
 void main() {
   float h = cell_size();
-#if BAND
-  int triangle = gl_VertexIndex / 6;
-  int k = gl_VertexIndex % 6;
+#if SEED
+  int triangle = gl_VertexIndex / 3;
+  int k = gl_VertexIndex % 3;
   v_a = corner(triangle, 0);
   v_b = corner(triangle, 1);
   v_c = corner(triangle, 2);
-  float band = pc.band / h;
-  vec3 lo = min(v_a, min(v_b, v_c)) / h;  // the triangle's box, cells
-  vec3 hi = max(v_a, max(v_b, v_c)) / h;
+  float r = LIQUID_MESH_SEED_CELLS;
 #if DIM == 3
-  // Slices whose centre s + 0.5 lies within the band of the box: instance i is the i-th from the lowest.
-  int slice = int(ceil(lo.z - band - 0.5)) + gl_InstanceIndex;
+  // Slices whose centre s + 0.5 lies within r of the triangle's z range: instance i is the i-th from the lowest.
+  float low = min(v_a.z, min(v_b.z, v_c.z)) / h;
+  int slice = int(ceil(low - r - 0.5)) + gl_InstanceIndex;
   float centre = float(slice) + 0.5;
 #else
   int slice = 0;
   float centre = 0.0;  // the plane z = 0
 #endif
-  // The band's section in this slice: the box grown by what is left of the band after the step
-  // from the slice to the box along z (a ball's chord), about half the cells of the full box.
-  float dz = max(max(lo.z - centre, centre - hi.z), 0.0);
-  if (slice < 0 || slice >= grid_cells().z || dz >= band) {
+  vec2 lo, hi;
+  if (slice < 0 || slice >= grid_cells().z || !slab_box(v_a / h, v_b / h, v_c / h, centre - r, centre + r, lo, hi)) {
     drop();
     return;
   }
-  float reach = sqrt(band * band - dz * dz);
-  lo.xy -= reach;
-  hi.xy += reach;
-  lo.xy = clamp(lo.xy, vec2(0.0), vec2(grid_cells().xy));
-  hi.xy = clamp(hi.xy, vec2(0.0), vec2(grid_cells().xy));
+  lo = clamp(lo - r, vec2(0.0), vec2(grid_cells().xy));
+  hi = clamp(hi + r, vec2(0.0), vec2(grid_cells().xy));
   if (lo.x >= hi.x || lo.y >= hi.y) {
     drop();
     return;
   }
-  // Two triangles: corners (0,0) (1,0) (0,1) and (1,0) (1,1) (0,1).
-  vec2 uv = vec2(k == 1 || k == 3 || k == 4 ? 1.0 : 0.0, k == 2 || k == 4 || k == 5 ? 1.0 : 0.0);
-  gl_Position = clip_position(mix(lo.xy, hi.xy, uv), slice);
+  // One triangle holding the rectangle, corners (0,0) (2,0) (0,2) of it: half the vertices and
+  // primitives of two, which are most of the pass's cost; the cells it covers beyond the rectangle
+  // are seeded as well (or, in the atlas, dropped by mesh_fragment_cell as another slice's).
+  vec2 uv = vec2(k == 1 ? 2.0 : 0.0, k == 2 ? 2.0 : 0.0);
+  gl_Position = clip_position(mix(lo, hi, uv), slice);
   route(slice);
 #else
-  vec3 p = corner(gl_VertexIndex / 3, gl_VertexIndex % 3);
-  int slice = DIM == 3 ? pc.first_slice + gl_InstanceIndex : 0;
+  int triangle = gl_VertexIndex / 3;
+  vec3 p = corner(triangle, gl_VertexIndex % 3);
   v_z = p.z;
+#if DIM == 3
+  // The slices whose span (s + 0.5, s + 1.5] (cells) the triangle's z range meets; the top slice
+  // also takes what lies above the grid.
+  vec3 a = corner(triangle, 0), b = corner(triangle, 1), c = corner(triangle, 2);
+  int top = grid_cells().z - 1;
+  int lowest = min(int(floor(min(a.z, min(b.z, c.z)) / h - 0.5)), top);
+  int highest = min(int(floor(max(a.z, max(b.z, c.z)) / h - 0.5)), top);
+  int slice = max(lowest, 0) + gl_InstanceIndex;
+  if (slice > highest) {
+    drop();
+    return;
+  }
+#else
+  int slice = 0;
+#endif
   gl_Position = clip_position(p.xy / h, slice);
   route(slice);
 #endif

@@ -57,6 +57,21 @@ void emit(int index, EmitterRange e) {
   out_velocity = vec4(e.velocity, 0.0);
 }
 
+// Obstacle i: a particle at x inside it or within `skin` of it is moved back to that distance from
+// its surface (kept in [lo, hi]) and loses its velocity v into it, relative to the obstacle's
+// material there; a dynamic one's only to a tenth of `skin`, and keeps its velocity (main()).
+void push_out(int i, MeshSample meshes, float skin, vec3 lo, vec3 hi, inout vec3 x, inout vec3 v) {
+  if (i >= obstacle_count()) return;
+  float d = obstacle_distance(i, x, meshes);
+  float reach = obstacle_dynamic(i) ? 0.1 * skin : skin;
+  if (d >= reach) return;
+  vec3 normal = obstacle_normal(i, x, meshes);
+  x = clamp_to_bounds(x + (reach - d) * normal, lo, hi);
+  if (obstacle_dynamic(i)) return;
+  float into = dot(v - obstacle_velocity_at(i, x), normal);
+  if (into < 0.0) v -= into * normal;
+}
+
 void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy);
   int index = texel.y * u.particle_texture_width + texel.x;
@@ -102,16 +117,9 @@ void main() {
   float skin = 0.5 * cell_size();
   [[unroll]] for (int pass = 0; pass < 2; ++pass) {
     MeshSample meshes = mesh_sample(x_new, true);
-    [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
-      float d = obstacle_distance(i, x_new, meshes);
-      float reach = obstacle_dynamic(i) ? 0.1 * skin : skin;
-      if (d >= reach) continue;
-      vec3 normal = obstacle_normal(i, x_new, meshes);
-      x_new = clamp_to_bounds(x_new + (reach - d) * normal, lo, hi);
-      if (obstacle_dynamic(i)) continue;
-      float into = dot(v - obstacle_velocity_at(i, x_new), normal);
-      if (into < 0.0) v -= into * normal;
-    }
+#define LIQUID_PUSH_OUT(i) push_out(i, meshes, skin, lo, hi, x_new, v);
+    FOR_EACH_OBSTACLE(LIQUID_PUSH_OUT)
+#undef LIQUID_PUSH_OUT
   }
 
   // Walls: no velocity into a wall the particle was clamped against.

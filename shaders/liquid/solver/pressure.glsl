@@ -46,11 +46,13 @@ const float k_min_body_coverage = 0.05;
 float body_coverage(vec3 p) {
   float coverage = 1.0;
 #ifdef LIQUID_BODIES
-  [[unroll]] for (int i = 0; i < obstacle_count(); ++i) {
-    if (!obstacle_dynamic(i)) continue;
-    float d = obstacle_distance(i, p) / cell_size();
-    coverage *= d >= 0.0 ? 1.0 - body_mass_beyond(d) : body_mass_beyond(-d);
+#define LIQUID_BODY_FACTOR(i)                                                 \
+  if (i < obstacle_count() && obstacle_dynamic(i)) {                          \
+    float d = obstacle_distance(i, p) / cell_size();                          \
+    coverage *= d >= 0.0 ? 1.0 - body_mass_beyond(d) : body_mass_beyond(-d); \
   }
+  FOR_EACH_OBSTACLE(LIQUID_BODY_FACTOR)
+#undef LIQUID_BODY_FACTOR
 #endif
   return max(coverage, k_min_body_coverage);
 }
