@@ -14,8 +14,8 @@
 namespace {
 
 // A pool of still water `depth` deep with a box of `density` floating in it (the splat-adjoint
-// pressure, small grid): `half_extent` of the box, its centre `drop` above where its bottom would sit at
-// its expected draft.
+// pressure, small grid): `half_extent` of the box, its centre `drop` above where its bottom would
+// sit at its expected draft.
 struct Pool {
   int dimension = 2;
   glm::vec3 domain{0.48f, 0.32f, 0.24f};
@@ -38,8 +38,8 @@ liquid::Scene pool_scene(const Pool& pool, float density, float bottom_height, g
   scene.kernel_radius_cells = pool.kernel_radius_cells;
   scene.stiffness = 10.0f;
   scene.gamma = 5.0f;
-  // A viscous liquid (PIC 0.3 per step): the pool's sloshing and the body's bobbing die out within
-  // the test's seconds.
+  // A viscous liquid (PIC 0.3 per step unless the test says): the pool's sloshing and the body's
+  // bobbing die out within the test's seconds.
   scene.pic_ratio = pool.pic_ratio;
   scene.substeps = 25;
   // The splat-adjoint pressure with the separable splat, as the shipped physical scenes: its still
