@@ -71,6 +71,8 @@ std::vector<ObstaclePose> LiquidNode::obstacle_poses(double time, Frame frame) c
     for (ObstaclePose& pose : poses) {
       pose.center = placement_.point_to_world(pose.center);
       pose.velocity = placement_.vector_to_world(pose.velocity);
+      pose.orientation = placement_.rotation * pose.orientation;
+      pose.angular_velocity = placement_.rotation * pose.angular_velocity;  // rad/s: turned, not scaled
     }
   return poses;
 }
@@ -99,6 +101,11 @@ Obstacle mesh_obstacle(std::span<const std::byte> vertex_bytes, size_t stride, s
   if (const std::string problem = mesh_problem(obstacle.mesh); !problem.empty()) throw SceneError(name + ": " + problem);
   return obstacle;
 }
+void LiquidNode::set_body_force(size_t index, glm::vec3 force, glm::vec3 torque) {
+  simulation_->set_body_force(index, force, torque);
+}
+std::vector<BodyState> LiquidNode::read_bodies() { return simulation_->read_bodies(); }
+std::vector<BodyState> LiquidNode::latest_bodies() { return simulation_->latest_bodies(); }
 
 int LiquidNode::active_particles() const { return simulation_->active_particles(); }
 int LiquidNode::step_count() const { return simulation_->step_count(); }

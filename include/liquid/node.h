@@ -99,6 +99,7 @@ class LiquidNode {
   // `center`, replacing the scene's scripted motion. The set of obstacles and their shapes are
   // fixed when the node is created (the shaders are specialized for them).
   // `frame`: the frame `center` and `velocity` are given in, or the poses are reported in.
+  // Throws std::invalid_argument for a dynamic obstacle (the liquid moves it).
   void set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity, Frame frame = Frame::Liquid);
   // A mesh obstacle's own transform for the following steps (with set_obstacle_pose() for its
   // centre and velocity, once per frame for a host-driven mesh), in the liquid's frame. The mesh is
@@ -107,7 +108,23 @@ class LiquidNode {
   // not a mesh and std::invalid_argument for a scale that is not finite and > 0 or a zero or
   // non-finite rotation.
   void set_mesh_transform(size_t index, glm::quat rotation, float scale);
+  // Every obstacle's pose at `time` (scripted or set); a dynamic obstacle's is its last known state
+  // (latest_bodies(), read_bodies() or diagnose()), whatever `time`.
   std::vector<ObstaclePose> obstacle_poses(double time, Frame frame = Frame::Liquid) const;
+
+  // Dynamic obstacles (rigid bodies the liquid moves; README, "Bodies that float"). Their state lives
+  // on the GPU and is integrated there every step, so reading it is the host's choice of cost:
+  // A force (N) and torque (N m) of the host's, through the body's centre, added every following
+  // step until changed (zero to stop). Throws std::invalid_argument unless obstacle `index` is
+  // dynamic and the values finite.
+  void set_body_force(size_t index, glm::vec3 force, glm::vec3 torque = glm::vec3(0.0f));
+  // Blocking read (own submission; call when no frame of this node is in flight): the state after
+  // the last step declared.
+  std::vector<BodyState> read_bodies();
+  // Without waiting: every add_to() copies the state at the end of its frame into a host buffer,
+  // and this returns the newest copy whose frame has completed by the LiquidOptions contract, i.e.
+  // the frame declared frames_in_flight add_to() calls ago (one frame late with one frame in flight).
+  std::vector<BodyState> latest_bodies();
 
   int active_particles() const;
   int step_count() const;

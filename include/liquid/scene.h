@@ -87,7 +87,9 @@ struct Metaball {
 };
 
 // A rigid obstacle: an analytic shape whose smooth distance field adds an artificial pressure in
-// the grid pass (section 6). It may move: position(t) = center + velocity t + amplitude sin(2 pi f t).
+// the grid pass (section 6). It may move: position(t) = center + velocity t + amplitude sin(2 pi f t),
+// or, when dynamic, as a rigid body the liquid and gravity move (docs/physics.md, "Bodies that
+// float"), starting at `center` with `velocity`.
 struct Obstacle {
   ObstacleShape shape = ObstacleShape::Sphere;
   glm::vec3 center{0.0f};        // m
@@ -101,6 +103,10 @@ struct Obstacle {
   glm::vec3 velocity{0.0f};      // m/s, constant drift
   glm::vec3 oscillation_amplitude{0.0f};  // m
   float oscillation_frequency = 0.0f;     // Hz
+  glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};  // the shape's frame to world (w, x, y, z); 2D: about z
+  bool dynamic = false;  // a rigid body (spheres and boxes): exactly one of density and mass is > 0
+  float density = 0.0f;  // kg/m^3
+  float mass = 0.0f;     // kg (2D: kg per metre of depth)
 };
 
 // Shallow-water ground: height b(x, y) = sum of Gaussian hills, in metres above the bed.

@@ -5,6 +5,7 @@
 #include "engine/graph/render_graph.h"
 
 #include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include <cstdint>
 #include <functional>
@@ -64,10 +65,24 @@ struct ForceBrush {
   glm::vec3 acceleration{0.0f};  // m/s^2
 };
 
-// An obstacle's placement at one instant.
+// An obstacle's placement at one instant. A point p of the obstacle moves at
+// velocity + angular_velocity x (p - center).
 struct ObstaclePose {
   glm::vec3 center{0.0f};    // m
-  glm::vec3 velocity{0.0f};  // m/s
+  glm::vec3 velocity{0.0f};  // m/s, of the centre
+  glm::quat orientation{1.0f, 0.0f, 0.0f, 0.0f};  // the shape's frame to world (w, x, y, z)
+  glm::vec3 angular_velocity{0.0f};  // rad/s, world frame (2D: about z)
+};
+
+// A dynamic obstacle (a rigid body the liquid moves) after a step: its pose and the liquid's
+// force and torque on it over that step (the pressure's and the no-inflow condition's, not gravity).
+// In 2D, masses, forces and torques are per metre of depth.
+struct BodyState {
+  int obstacle = 0;          // index into the scene's obstacles
+  ObstaclePose pose;
+  glm::vec3 force{0.0f};     // N
+  glm::vec3 torque{0.0f};    // N m, about the centre
+  float mass = 0.0f;         // kg
 };
 
 // The graph images after the steps add_to() declared; valid for the rest of that graph. The grids
@@ -78,6 +93,8 @@ struct LiquidImages {
   engine::graph::ImageHandle splat;          // (sum w u, sum w), the last step's splat
   engine::graph::ImageHandle grid_velocity;  // (u', fluid flag)
   engine::graph::ImageHandle density;        // R16F rho / rho0
+  engine::graph::ImageHandle bodies;         // the dynamic obstacles' state (the library's own layout;
+                                             // a host reads it with LiquidNode::latest_bodies())
   // RGBA32F: the mesh obstacles' signed distance (m), one channel per mesh in scene order, exact
   // near their surfaces; invalid when the scene has no mesh obstacle.
   engine::graph::ImageHandle mesh_field;
@@ -108,6 +125,7 @@ struct Diagnostics {
   double time_step = 0.0;          // s, the last step's dt
   float max_speed = 0.0f;          // m/s
   glm::vec3 center_of_mass{0.0f};  // m
+  std::vector<BodyState> bodies;   // the dynamic obstacles, in scene order
 };
 
 // The parameters a host may change while the node runs (an interactive viewer's sliders); they
@@ -134,6 +152,7 @@ struct Checkpoint {
   std::vector<int> emitted;                      // per emitter
   std::vector<Pose> poses;                       // per obstacle
   std::vector<glm::vec4> positions, velocities;  // the whole particle textures, inactive texels too
+  std::vector<glm::vec4> bodies;                 // the body-state texture (dynamic obstacles' state)
 };
 
 }  // namespace liquid

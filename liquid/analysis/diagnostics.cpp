@@ -12,7 +12,7 @@ Diagnostics compute_diagnostics(const Scene& scene, const SimulationSetup& setup
   Diagnostics d;
   std::vector<PlacedObstacle> obstacles;  // the sign is all the count needs: a mesh's reach is one cell
   for (size_t o = 0; o < scene.obstacles.size(); ++o)
-    obstacles.emplace_back(scene.obstacles[o], o < obstacle_poses.size() ? obstacle_poses[o].center : scene.obstacles[o].center,
+    obstacles.emplace_back(scene.obstacles[o], o < obstacle_poses.size() ? obstacle_poses[o] : scripted_pose(scene.obstacles[o], 0.0),
                            setup.dimension, setup.cell_size);
   d.step = step;
   d.time = time;
@@ -81,6 +81,16 @@ void check_stable(const Diagnostics& d, double energy_bound) {
     message << "simulation unstable at step " << d.step << " (t = " << d.time << " s): " << d.non_finite
             << " particle(s) with NaN or Inf";
     throw SimulationError(message.str());
+  }
+  for (const BodyState& b : d.bodies) {
+    const glm::vec3 v[] = {b.pose.center, b.pose.velocity, b.pose.angular_velocity, b.force, b.torque};
+    for (const glm::vec3& x : v)
+      if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z)) {
+        std::ostringstream message;
+        message << "simulation unstable at step " << d.step << " (t = " << d.time << " s): obstacle " << b.obstacle
+                << " (a dynamic body) has a NaN or Inf state";
+        throw SimulationError(message.str());
+      }
   }
   if (d.kinetic_energy > energy_bound) {
     std::ostringstream message;

@@ -9,17 +9,25 @@ ObstaclePose scripted_pose(const Obstacle& obstacle, double time) {
   const double omega = 2.0 * M_PI * obstacle.oscillation_frequency;
   const glm::vec3 wave = obstacle.oscillation_amplitude * float(std::sin(omega * time));
   const glm::vec3 wave_velocity = obstacle.oscillation_amplitude * float(omega * std::cos(omega * time));
-  return {obstacle.center + obstacle.velocity * float(time) + wave, obstacle.velocity + wave_velocity};
+  if (obstacle.dynamic) return {obstacle.center, obstacle.velocity, obstacle.rotation, glm::vec3(0.0f)};
+  return {obstacle.center + obstacle.velocity * float(time) + wave, obstacle.velocity + wave_velocity, obstacle.rotation,
+          glm::vec3(0.0f)};
 }
 
-float obstacle_distance(const Obstacle& obstacle, glm::vec3 center, glm::vec3 p, int dimension) {
-  glm::vec3 local = p - center;
+glm::vec3 obstacle_velocity_at(const ObstaclePose& pose, glm::vec3 p) {
+  return pose.velocity + glm::cross(pose.angular_velocity, p - pose.center);
+}
+
+float obstacle_distance(const Obstacle& obstacle, const ObstaclePose& pose, glm::vec3 p, int dimension) {
+  glm::vec3 local = glm::inverse(pose.orientation) * (p - pose.center);
   if (dimension == 2) local.z = 0.0f;
   switch (obstacle.shape) {
     case ObstacleShape::Sphere:
       return glm::length(local) - obstacle.radius;
     case ObstacleShape::Box: {
-      const glm::vec3 q = glm::abs(local) - obstacle.half_extent;
+      // In 2D the rectangle's distance: a z extent of 1 m keeps z out of it, as in common.glsl.
+      const glm::vec3 half = dimension == 2 ? glm::vec3(glm::vec2(obstacle.half_extent), 1.0f) : obstacle.half_extent;
+      const glm::vec3 q = glm::abs(local) - half;
       return glm::length(glm::max(q, glm::vec3(0.0f))) + std::min(std::max(q.x, std::max(q.y, q.z)), 0.0f);
     }
     case ObstacleShape::Metaballs: {
@@ -38,18 +46,18 @@ float obstacle_distance(const Obstacle& obstacle, glm::vec3 center, glm::vec3 p,
       return (obstacle.threshold - field) / std::max(glm::length(gradient), 1e-4f);
     }
     case ObstacleShape::Mesh:  // one query: PlacedObstacle serves many
-      return PlacedMesh(obstacle.mesh, center, 1e30f).distance(dimension == 2 ? glm::vec3(p.x, p.y, 0.0f) : p);
+      return PlacedMesh(obstacle.mesh, pose.center, 1e30f).distance(dimension == 2 ? glm::vec3(p.x, p.y, 0.0f) : p);
   }
   return 1e30f;
 }
 
-PlacedObstacle::PlacedObstacle(const Obstacle& obstacle, glm::vec3 center, int dimension, float mesh_reach)
-    : obstacle_(&obstacle), center_(center), dimension_(dimension) {
-  if (obstacle.shape == ObstacleShape::Mesh) mesh_.emplace(obstacle.mesh, center, mesh_reach);
+PlacedObstacle::PlacedObstacle(const Obstacle& obstacle, const ObstaclePose& pose, int dimension, float mesh_reach)
+    : obstacle_(&obstacle), pose_(pose), dimension_(dimension) {
+  if (obstacle.shape == ObstacleShape::Mesh) mesh_.emplace(obstacle.mesh, pose.center, mesh_reach);
 }
 
 float PlacedObstacle::distance(glm::vec3 p) const {
-  if (!mesh_) return obstacle_distance(*obstacle_, center_, p, dimension_);
+  if (!mesh_) return obstacle_distance(*obstacle_, pose_, p, dimension_);
   if (dimension_ == 2) p.z = 0.0f;
   return mesh_->distance(p);
 }

@@ -104,13 +104,16 @@ float carved_share(const Scene& scene) { return scene.pressure_force == Pressure
 std::vector<PlacedObstacle> obstacles_at_start(const Scene& scene, float band) {
   std::vector<PlacedObstacle> placed;
   for (const Obstacle& o : scene.obstacles)
-    placed.emplace_back(o, scripted_pose(o, 0.0).center, scene.dimension, 2.0f * carved_share(scene) * band);
+    placed.emplace_back(o, scripted_pose(o, 0.0), scene.dimension, 2.0f * carved_share(scene) * band);
   return placed;
 }
 
+// A dynamic obstacle adds no artificial density (its liquid reads the body's kernel coverage
+// instead), so only its inside is carved: the band would take a third of a small pool and drop the
+// body into the gap before the liquid has any pressure.
 bool inside_any_obstacle(const Scene& scene, const std::vector<PlacedObstacle>& obstacles, glm::vec3 p, float band) {
-  for (const PlacedObstacle& o : obstacles)
-    if (o.distance(p) < carved_share(scene) * band) return true;
+  for (size_t i = 0; i < obstacles.size(); ++i)
+    if (obstacles[i].distance(p) < (scene.obstacles[i].dynamic ? 0.0f : carved_share(scene) * band)) return true;
   return false;
 }
 
@@ -371,6 +374,7 @@ SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
   setup.gravity = scene.mode == SimulationMode::ShallowWater ? glm::vec3(0.0f) : scene.gravity;
   setup.wall_margin = scene.wall_margin_cells * setup.cell_size;
   setup.wall_share_beyond = wall_share_beyond(scene, spacing / h, gpu::k_wall_table_size);
+  setup.body_share_beyond = body_share_beyond(scene, spacing / h, gpu::k_wall_table_size);
   check_time_step(scene, setup);
   return setup;
 }

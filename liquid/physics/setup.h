@@ -46,6 +46,7 @@ struct SimulationSetup {
   bool long_steps = false;      // long_step_regime(scene): sets the acoustic CFL (physics/time_step.h)
   float wall_margin = 0.0f;     // m, particles are kept this far from every wall (or where they started, if closer)
   std::vector<float> wall_share_beyond;  // the kernel's share beyond a wall k + 0.5 cells away (wall_coverage.h)
+  std::vector<float> body_share_beyond;  // the same beyond a dynamic body's surface (body_share_beyond)
   float obstacle_band = 0.0f;   // m, the obstacle density falls to zero this far outside (one kernel radius)
   float rest_depth = 0.0f;      // m, shallow water's depth at rest
   int initial_particles = 0;    // from fluid blocks

@@ -62,4 +62,11 @@ std::vector<float> wall_share_beyond(const Scene& scene, double spacing_cells, i
   return table;
 }
 
+std::vector<float> body_share_beyond(const Scene& scene, double spacing_cells, int size) {
+  std::vector<float> table(size_t(size), 0.0f);
+  for (int k = 0; k < size; ++k)
+    table[size_t(k)] = float(lattice_mass_beyond_wall(scene.dimension, spacing_cells, scene.kernel_radius_cells, k + 0.5));
+  return table;
+}
+
 }  // namespace liquid

@@ -35,4 +35,10 @@ constexpr int k_wall_samples_chapter = 16;
 // continued through them (shaders/liquid/solver/deposit.vert, separable_blur.frag).
 std::vector<float> wall_share_beyond(const Scene& scene, double spacing_cells, int size);
 
+// The table for a dynamic body's surface: the lattice's own share in every mode, so uniform liquid
+// beside a body reads its rest density (the chapter's 16-interval rule reads it 7 % dense in the
+// nearest cell, a pressure of 40 cm of water at the chapter's k and gamma: docs/physics.md, "Bodies
+// that float").
+std::vector<float> body_share_beyond(const Scene& scene, double spacing_cells, int size);
+
 }  // namespace liquid

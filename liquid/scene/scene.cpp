@@ -5,6 +5,7 @@
 #include "liquid/scene/reader.h"
 #include "shaders/liquid/shared.h"
 
+#include <algorithm>
 #include <array>
 #include <filesystem>
 
@@ -18,6 +19,8 @@ constexpr double k_max_gravity = 1000.0;        // m/s^2 per component
 constexpr double k_max_speed = 1000.0;          // m/s per component
 constexpr double k_max_frequency = 1000.0;      // Hz
 constexpr int k_max_emitter_capacity = 1 << 24;  // 16M particles
+constexpr double k_max_body_density = 1e5;      // kg/m^3, past any solid (osmium: 22590)
+constexpr double k_max_body_mass = 1e9;         // kg
 
 // ---- Nested objects --------------------------------------------------------------------------
 
@@ -71,8 +74,58 @@ void read_oscillation(const Reader& r, const Json& value, const std::string& pat
       float(r.number_in(r.require(value, path, "frequency"), child(path, "frequency"), 0.0, k_max_frequency));
 }
 
-// A mesh obstacle's file (relative to the scene's folder), rotation (degrees about x, then y, then
-// z) and uniform scale.
+// "rotation": {"axis": [x, y, z], "degrees": a}, or [x, y, z], degrees about x, then y, then z. A
+// 2D sphere or box turns about z only (the axis may then be left out); a 2D mesh may turn any way,
+// its cross-section at z = 0 follows.
+glm::quat read_rotation(const Reader& r, const Json& value, const std::string& path, bool mesh) {
+  const bool about_z_only = r.dimension() == 2 && !mesh;
+  if (value.is_array()) {
+    const glm::vec3 radians = glm::radians(r.vector(value, path, 3, 360.0));
+    if (about_z_only && (radians.x != 0.0f || radians.y != 0.0f))
+      r.fail(path, "must be [0, 0, degrees] in 2D (a 2D obstacle turns about z)");
+    return glm::angleAxis(radians.z, glm::vec3(0, 0, 1)) * glm::angleAxis(radians.y, glm::vec3(0, 1, 0)) *
+           glm::angleAxis(radians.x, glm::vec3(1, 0, 0));
+  }
+  if (!value.is_object())
+    r.fail(path, std::string("must be {\"axis\", \"degrees\"} or [x, y, z] degrees, got ") + value.type_name());
+  r.check_keys(value, path, {"axis", "degrees"});
+  const float degrees = float(r.number_in(r.require(value, path, "degrees"), child(path, "degrees"), -360.0, 360.0));
+  glm::vec3 axis(0.0f, 0.0f, 1.0f);
+  if (const Json* v = Reader::find(value, "axis")) {
+    axis = r.vector(*v, child(path, "axis"), 3);
+    if (!(glm::length(axis) > 0.0f)) r.fail(child(path, "axis"), "must be nonzero");
+    axis = glm::normalize(axis);
+    if (about_z_only && (axis.x != 0.0f || axis.y != 0.0f))
+      r.fail(child(path, "axis"), "must be [0, 0, 1] in 2D (a 2D obstacle turns about z)");
+  } else if (!about_z_only) {
+    r.fail(child(path, "axis"), "missing required key (3D rotations need an axis)");
+  }
+  return glm::angleAxis(glm::radians(degrees), axis);
+}
+
+// "dynamic": true with "density" (kg/m^3) or "mass" (kg; in 2D, kg per metre of depth).
+void read_body(const Reader& r, const Json& value, const std::string& path, Obstacle& obstacle) {
+  const Json* dynamic = Reader::find(value, "dynamic");
+  if (dynamic && !dynamic->is_boolean()) r.fail(child(path, "dynamic"), std::string("must be true or false, got ") + dynamic->type_name());
+  obstacle.dynamic = dynamic && dynamic->get<bool>();
+  const Json* density = Reader::find(value, "density");
+  const Json* mass = Reader::find(value, "mass");
+  if (!obstacle.dynamic) {
+    if (density || mass) r.fail(child(path, density ? "density" : "mass"), "only allowed with \"dynamic\": true");
+    return;
+  }
+  if (obstacle.shape == ObstacleShape::Metaballs || obstacle.shape == ObstacleShape::Mesh)
+    r.fail(child(path, "dynamic"), std::string(obstacle.shape == ObstacleShape::Mesh ? "mesh" : "metaball") +
+                                       " obstacles cannot be dynamic (only spheres and boxes)");
+  if (Reader::find(value, "oscillation")) r.fail(child(path, "oscillation"), "not allowed on a dynamic obstacle (the liquid moves it)");
+  if (density && mass) r.fail(child(path, "mass"), "give density or mass, not both");
+  if (!density && !mass) r.fail(child(path, "density"), "missing required key (a dynamic obstacle needs density or mass)");
+  if (density) obstacle.density = float(r.number_in(*density, child(path, "density"), 0.0, k_max_body_density, true));
+  if (mass) obstacle.mass = float(r.number_in(*mass, child(path, "mass"), 0.0, k_max_body_mass, true));
+}
+
+// A mesh obstacle's file (relative to the scene's folder) and uniform scale (its rotation is the
+// obstacle's, read_rotation()).
 TriangleMesh read_mesh(const Reader& r, const Json& value, const std::string& path) {
   const std::string file_path = child(path, "file");
   const std::string file = r.string(r.require(value, path, "file"), file_path);
@@ -82,12 +135,6 @@ TriangleMesh read_mesh(const Reader& r, const Json& value, const std::string& pa
     mesh = load_mesh_file(std::filesystem::path(r.source()).parent_path() / file);
   } catch (const SceneError& e) {
     r.fail(file_path, e.what());
-  }
-  if (const Json* v = Reader::find(value, "rotation")) {
-    const glm::vec3 degrees = r.vector(*v, child(path, "rotation"), 3, 360.0);
-    const glm::vec3 radians = glm::radians(degrees);
-    mesh.rotation = glm::angleAxis(radians.z, glm::vec3(0, 0, 1)) * glm::angleAxis(radians.y, glm::vec3(0, 1, 0)) *
-                    glm::angleAxis(radians.x, glm::vec3(1, 0, 0));
   }
   if (const Json* v = Reader::find(value, "scale"))
     mesh.scale = float(r.number_in(*v, child(path, "scale"), 0.0, k_max_length, true));
@@ -101,13 +148,13 @@ Obstacle read_obstacle(const Reader& r, const Json& value, const std::string& pa
                                           {"sphere", "box", "metaballs", "mesh"}));
   switch (obstacle.shape) {
     case ObstacleShape::Sphere:
-      r.check_keys(value, path, {"shape", "center", "radius", "velocity", "oscillation"});
+      r.check_keys(value, path, {"shape", "center", "radius", "velocity", "oscillation", "rotation", "dynamic", "density", "mass"});
       obstacle.center = r.scene_vector(r.require(value, path, "center"), child(path, "center"));
       obstacle.radius =
           float(r.number_in(r.require(value, path, "radius"), child(path, "radius"), 0.0, k_max_length, true));
       break;
     case ObstacleShape::Box: {
-      r.check_keys(value, path, {"shape", "center", "half_extent", "velocity", "oscillation"});
+      r.check_keys(value, path, {"shape", "center", "half_extent", "velocity", "oscillation", "rotation", "dynamic", "density", "mass"});
       obstacle.center = r.scene_vector(r.require(value, path, "center"), child(path, "center"));
       const std::string extent_path = child(path, "half_extent");
       obstacle.half_extent = r.scene_vector(r.require(value, path, "half_extent"), extent_path);
@@ -117,7 +164,7 @@ Obstacle read_obstacle(const Reader& r, const Json& value, const std::string& pa
       break;
     }
     case ObstacleShape::Metaballs: {
-      r.check_keys(value, path, {"shape", "balls", "threshold", "velocity", "oscillation"});
+      r.check_keys(value, path, {"shape", "balls", "threshold", "velocity", "oscillation", "dynamic", "density", "mass"});
       const std::string balls_path = child(path, "balls");
       const Json& balls = r.require(value, path, "balls");
       if (!balls.is_array() || balls.empty()) r.fail(balls_path, "must be a non-empty array of {center, radius}");
@@ -143,6 +190,9 @@ Obstacle read_obstacle(const Reader& r, const Json& value, const std::string& pa
   if (const Json* v = Reader::find(value, "velocity"))
     obstacle.velocity = r.scene_vector(*v, child(path, "velocity"), k_max_speed);
   if (const Json* v = Reader::find(value, "oscillation")) read_oscillation(r, *v, child(path, "oscillation"), obstacle);
+  if (const Json* v = Reader::find(value, "rotation")) obstacle.rotation = read_rotation(r, *v, child(path, "rotation"), obstacle.shape == ObstacleShape::Mesh);
+  if (obstacle.shape == ObstacleShape::Mesh) obstacle.mesh.rotation = obstacle.rotation;  // voxelized turned
+  read_body(r, value, path, obstacle);
   return obstacle;
 }
 
@@ -282,6 +332,17 @@ void read_contents(const Reader& r, const Json& doc, Scene& scene) {
   scene.fluid_blocks = read_array<FluidBlock>(r, doc, "fluid_blocks", read_fluid_block);
   scene.emitters = read_array<Emitter>(r, doc, "emitters", read_emitter);
   scene.obstacles = read_array<Obstacle>(r, doc, "obstacles", read_obstacle);
+  // The body force is the reaction of the splat-adjoint pressure's energy (the chapter's pressure
+  // force is no gradient of one); it has no term for shallow water's ground, nor does it read the
+  // mesh field: bodies and meshes are not yet in one scene.
+  const bool meshes = std::any_of(scene.obstacles.begin(), scene.obstacles.end(),
+                                  [](const Obstacle& o) { return o.shape == ObstacleShape::Mesh; });
+  for (size_t i = 0; i < scene.obstacles.size(); ++i)
+    if (scene.obstacles[i].dynamic && (shallow || meshes || scene.pressure_force != PressureForce::SplatAdjoint))
+      r.fail(element("obstacles", i) + ".dynamic",
+             shallow  ? "not available in shallow_water mode"
+             : meshes ? "not available in a scene with mesh obstacles"
+                      : "needs \"pressure_force\": \"splat_adjoint\" (the body force is the reaction of its energy)");
   if (!shallow && Reader::find(doc, "ground")) r.fail("ground", "only allowed in shallow_water mode");
   scene.ground = read_array<GroundHill>(r, doc, "ground", read_ground_hill);
   if (const Json* v = Reader::find(doc, "camera")) {

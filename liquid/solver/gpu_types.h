@@ -10,13 +10,15 @@
 namespace liquid::gpu {
 
 static_assert(k_wall_table_size % 4 == 0, "the wall table is packed into vec4s");
-static_assert(sizeof(Obstacle) == 64 && offsetof(Obstacle, velocity) == 32 && offsetof(Obstacle, ball_count) == 48);
+static_assert(sizeof(Obstacle) == 96 && offsetof(Obstacle, velocity) == 32 && offsetof(Obstacle, ball_count) == 48 &&
+              offsetof(Obstacle, orientation) == 64 && offsetof(Obstacle, angular_velocity) == 80);
+static_assert(sizeof(Body) == 48 && offsetof(Body, added_mass) == 28 && offsetof(Body, added_inertia_ratio) == 44);
 static_assert(sizeof(Brush) == 32 && offsetof(Brush, acceleration) == 16);
 static_assert(sizeof(EmitterRange) == 48 && offsetof(EmitterRange, end) == 32);
 static_assert(offsetof(SolverUniforms, rest_depth) == 96);
 static_assert(offsetof(SolverUniforms, wall_kernel_beyond) == 112);
 static_assert(offsetof(SolverUniforms, obstacles) == 144);
-static_assert(offsetof(SolverUniforms, balls) == 144 + 64 * k_max_obstacles);
-static_assert(sizeof(SolverUniforms) == 144 + 64 * 8 + 16 * 32 + 16 * 16 + 32 * 4 + 48 * 4);
+static_assert(offsetof(SolverUniforms, balls) == 144 + 96 * k_max_obstacles);
+static_assert(sizeof(SolverUniforms) == 144 + 96 * 8 + 16 * 32 + 16 * 16 + 32 * 4 + 48 * 4 + 48 * 8 + 16 * 2);
 
 }  // namespace liquid::gpu

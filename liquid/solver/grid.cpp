@@ -27,7 +27,8 @@ std::vector<engine::vk::DescriptorBinding> grid_bindings(const SimulationSetup& 
                                                          bool active_region) {
   std::vector<engine::vk::DescriptorBinding> bindings{
       {LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
-      {LIQUID_BINDING_GRID_SPLAT, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}};
+      {LIQUID_BINDING_GRID_SPLAT, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
+      {LIQUID_BINDING_BODIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}};
   if (setup.splat_adjoint_pressure)
     bindings.push_back({LIQUID_BINDING_GRID_POTENTIAL, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
   add_mesh_field_binding(meshes, bindings);
@@ -55,8 +56,8 @@ GridPass::GridPass(engine::vk::Context& context, const SimulationSetup& setup, c
       active_region_(active_region) {}
 
 GridImages GridPass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                            ImageHandle splat, const GridImages& grids, ImageHandle potential, ImageHandle mesh_field,
-                            ImageHandle region) const {
+                            ImageHandle splat, ImageHandle bodies, const GridImages& grids, ImageHandle potential,
+                            ImageHandle mesh_field, ImageHandle region) const {
   if (splat_adjoint_ != potential.valid())
     throw std::logic_error(splat_adjoint_ ? "liquid.grid: the splat-adjoint pressure needs the potential image"
                                           : "liquid.grid: a potential image was given to the chapter's grid pass");
@@ -71,6 +72,7 @@ GridImages GridPass::add_to(engine::graph::RenderGraph& graph, const engine::vk:
             d.bindings = engine::passes::PassBindings(pipeline_);
             d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
             d.bindings.bind_image(b, LIQUID_BINDING_GRID_SPLAT, splat, nearest_.handle());
+            d.bindings.bind_image(b, LIQUID_BINDING_BODIES, bodies, nearest_.handle());
             if (potential.valid()) d.bindings.bind_image(b, LIQUID_BINDING_GRID_POTENTIAL, potential, nearest_.handle());
             bind_mesh_field(d.bindings, b, mesh_field, nearest_);
             const engine::graph::AttachmentOptions load =

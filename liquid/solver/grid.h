@@ -22,12 +22,14 @@ class GridPass {
   GridPass(engine::vk::Context& context, const SimulationSetup& setup, const GridLayout& layout,
            const std::vector<int32_t>& specialization, bool meshes, bool active_region);
 
-  // Reads `splat` (and, with the splat-adjoint pressure, PressurePass's `potential`), writes the
-  // updated velocity (u', fluid flag) and rho / rho0 into `grids`. With mesh obstacles (`meshes`),
-  // reads their field (liquid/solver/mesh_field.h). `region`: the step's active region (valid exactly
-  // when the pass was made for one).
+  // Reads `splat` (and, with the splat-adjoint pressure, PressurePass's `potential`) and the body
+  // state `bodies` (dynamic obstacles' poses), writes the updated velocity (u', fluid flag) and
+  // rho / rho0 into `grids`. With mesh obstacles (`meshes`), reads their field
+  // (liquid/solver/mesh_field.h). `region`: the step's active region (valid exactly when the pass
+  // was made for one).
   GridImages add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle splat,
-                    const GridImages& grids, ImageHandle potential, ImageHandle mesh_field, ImageHandle region) const;
+                    ImageHandle bodies, const GridImages& grids, ImageHandle potential, ImageHandle mesh_field,
+                    ImageHandle region) const;
 
  private:
   engine::vk::GraphicsPipeline pipeline_;

@@ -18,7 +18,8 @@ std::vector<engine::vk::DescriptorBinding> particle_bindings(bool meshes) {
       {LIQUID_BINDING_PARTICLE_POSITIONS, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
       {LIQUID_BINDING_PARTICLE_VELOCITIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
       {LIQUID_BINDING_PARTICLE_SPLAT, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
-      {LIQUID_BINDING_PARTICLE_GRID_VELOCITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}};
+      {LIQUID_BINDING_PARTICLE_GRID_VELOCITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
+      {LIQUID_BINDING_BODIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}};
   add_mesh_field_binding(meshes, bindings);
   return bindings;
 }
@@ -45,7 +46,8 @@ ParticleUpdatePass::ParticleUpdatePass(engine::vk::Context& context, const GridL
 
 ParticleImages ParticleUpdatePass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
                                           const ParticleImages& current, ImageHandle splat, const GridImages& grids,
-                                          const ParticleImages& next, int active_after, ImageHandle mesh_field) const {
+                                          ImageHandle bodies, const ParticleImages& next, int active_after,
+                                          ImageHandle mesh_field) const {
   struct Data {
     engine::passes::PassBindings bindings;
     ParticleImages out;
@@ -61,6 +63,7 @@ ParticleImages ParticleUpdatePass::add_to(engine::graph::RenderGraph& graph, con
             d.bindings.bind_image(b, LIQUID_BINDING_PARTICLE_VELOCITIES, current.velocities, s);
             d.bindings.bind_image(b, LIQUID_BINDING_PARTICLE_SPLAT, splat, s);
             d.bindings.bind_image(b, LIQUID_BINDING_PARTICLE_GRID_VELOCITY, grids.velocity, s);
+            d.bindings.bind_image(b, LIQUID_BINDING_BODIES, bodies, s);
             bind_mesh_field(d.bindings, b, mesh_field, linear_);
             d.out.positions = b.write(next.positions, Access::ColorAttachmentWrite);
             d.out.velocities = b.write(next.velocities, Access::ColorAttachmentWrite);

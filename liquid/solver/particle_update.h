@@ -23,9 +23,9 @@ class ParticleUpdatePass {
                      bool meshes = false);
 
   // From `current` into `next` (the other texture of the ping-pong pair), for the rows holding
-  // `active_after` particles.
+  // `active_after` particles; `bodies`: the dynamic obstacles' state at the end of the step.
   ParticleImages add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                        const ParticleImages& current, ImageHandle splat, const GridImages& grids,
+                        const ParticleImages& current, ImageHandle splat, const GridImages& grids, ImageHandle bodies,
                         const ParticleImages& next, int active_after, ImageHandle mesh_field = {}) const;
 
  private:

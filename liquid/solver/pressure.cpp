@@ -12,15 +12,16 @@ namespace liquid {
 namespace {
 
 // One full-screen pass over the grid (one layer per slice in 3D, or the atlas) with the solver's
-// uniforms and one sampled grid at `binding`.
+// uniforms and one sampled grid at `binding`; P also reads the bodies (their kernel coverage).
 engine::vk::GraphicsPipelineDesc grid_pipeline(const char* name, const GridLayout& layout,
                                                std::span<const uint32_t> fragment, uint32_t binding,
-                                               const std::vector<int32_t>& specialization, bool meshes,
-                                               bool active_region) {
+                                               const std::vector<int32_t>& specialization, bool bodies,
+                                               bool meshes, bool active_region) {
   const GridPassShaders shaders = grid_pass_shaders(layout, active_region);
   std::vector<engine::vk::DescriptorBinding> bindings{
       {LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
       {binding, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}};
+  if (bodies) bindings.push_back({LIQUID_BINDING_BODIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
   add_mesh_field_binding(meshes, bindings);
   add_active_region_binding(active_region, bindings);
   return engine::vk::GraphicsPipelineDesc{
@@ -45,7 +46,7 @@ PressurePass::PressurePass(engine::vk::Context& context, const GridLayout& layou
                                            layout.pick(liquid_shaders::pressure_frag_2d_mesh,
                                                        liquid_shaders::pressure_frag_3d_mesh,
                                                        liquid_shaders::pressure_frag_3d_atlas_mesh)),
-                              LIQUID_BINDING_PRESSURE_SPLAT, specialization, meshes, active_region)),
+                              LIQUID_BINDING_PRESSURE_SPLAT, specialization, true, meshes, active_region)),
       nearest_(context, VK_FILTER_NEAREST),
       desc_(layout.image_desc(k_pressure_format, 0)),
       layout_(layout),
@@ -57,19 +58,20 @@ PressurePass::PressurePass(engine::vk::Context& context, const GridLayout& layou
                                               layout.pick(liquid_shaders::potential_frag_2d,
                                                           liquid_shaders::potential_frag_3d,
                                                           liquid_shaders::potential_frag_3d_atlas),
-                                              LIQUID_BINDING_POTENTIAL_PRESSURE, specialization, false,
+                                              LIQUID_BINDING_POTENTIAL_PRESSURE, specialization, false, false,
                                               active_region));
 }
 
 ImageHandle PressurePass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                                 ImageHandle splat, ImageHandle& pressure, ImageHandle& potential,
-                                 ImageHandle mesh_field, ImageHandle region) const {
+                                 ImageHandle splat, ImageHandle bodies, ImageHandle& pressure,
+                                 ImageHandle& potential, ImageHandle& scratch, ImageHandle mesh_field,
+                                 ImageHandle region) const {
   struct Data {
     engine::passes::PassBindings bindings;
     ImageHandle out;
   };
   auto pass = [&](const char* name, const engine::vk::GraphicsPipeline& pipeline, uint32_t binding, ImageHandle input,
-                  ImageHandle output, ImageHandle field) {
+                  ImageHandle output, ImageHandle body_state, ImageHandle field) {
     return graph
         .add_pass<Data>(
             name,
@@ -77,6 +79,7 @@ ImageHandle PressurePass::add_to(engine::graph::RenderGraph& graph, const engine
               d.bindings = engine::passes::PassBindings(pipeline);
               d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
               d.bindings.bind_image(b, binding, input, nearest_.handle());
+              if (body_state.valid()) d.bindings.bind_image(b, LIQUID_BINDING_BODIES, body_state, nearest_.handle());
               bind_mesh_field(d.bindings, b, field, nearest_);
               d.out = b.write(output, Access::ColorAttachmentWrite,
                               bind_active_region(d.bindings, b, region, active_region_, nearest_));
@@ -87,11 +90,12 @@ ImageHandle PressurePass::add_to(engine::graph::RenderGraph& graph, const engine
             })
         .out;
   };
-  pressure = pass("liquid.pressure", pressure_, LIQUID_BINDING_PRESSURE_SPLAT, splat, pressure, mesh_field);
+  pressure = pass("liquid.pressure", pressure_, LIQUID_BINDING_PRESSURE_SPLAT, splat, pressure, bodies, mesh_field);
   if (potential_) {
-    potential = pass("liquid.potential", *potential_, LIQUID_BINDING_POTENTIAL_PRESSURE, pressure, potential, {});
+    potential = pass("liquid.potential", *potential_, LIQUID_BINDING_POTENTIAL_PRESSURE, pressure, potential, {}, {});
     return potential;
   }
+  if (scratch.valid()) return spread_->add_to_keeping(graph, uniforms, pressure, potential, scratch, region);
   return spread_->add_to(graph, uniforms, pressure, potential, region);
 }
 

@@ -35,12 +35,15 @@ class PressurePass {
   // Grid-sized descriptions of the two intermediate images (the node creates them as transients).
   engine::vk::ImageDesc image_desc() const { return desc_; }
 
-  // Reads `splat`, writes P into `pressure` and smooths it into Phi (both handles are advanced to
-  // their new versions); returns Phi, which is in `potential`, or in `pressure` for the separable
-  // splat's spread in 2D (its passes alternate between the two images). `region`: the step's active
-  // region (valid exactly when the pass was made for one).
+  // Reads `splat` and the body state `bodies` (the dynamic bodies' kernel coverage), writes P into
+  // `pressure` and smooths it into Phi (the handles are advanced to their new versions); returns
+  // Phi, which is in `potential`, or in `pressure` for the separable splat's spread in 2D (its
+  // passes alternate between the two images). With a valid `scratch` (a third such image) the
+  // spread alternates between `potential` and it instead and P stays in `pressure`, for the body
+  // force pass. `region`: the step's active region (valid exactly when the pass was made for one).
   ImageHandle add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle splat,
-                     ImageHandle& pressure, ImageHandle& potential, ImageHandle mesh_field, ImageHandle region) const;
+                     ImageHandle bodies, ImageHandle& pressure, ImageHandle& potential, ImageHandle& scratch,
+                     ImageHandle mesh_field, ImageHandle region) const;
 
  private:
   engine::vk::GraphicsPipeline pressure_;

@@ -63,12 +63,22 @@ SeparableBlur::SeparableBlur(engine::vk::Context& context, const GridLayout& lay
 
 ImageHandle SeparableBlur::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
                                   ImageHandle& source, ImageHandle& scratch, ImageHandle region) const {
+  return chain(graph, uniforms, &source, &scratch, &source, region);
+}
+
+ImageHandle SeparableBlur::add_to_keeping(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
+                                          ImageHandle source, ImageHandle& first, ImageHandle& second,
+                                          ImageHandle region) const {
+  return chain(graph, uniforms, &source, &first, &second, region);
+}
+
+ImageHandle SeparableBlur::chain(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
+                                 ImageHandle* input, ImageHandle* first, ImageHandle* second, ImageHandle region) const {
   struct Data {
     engine::passes::PassBindings bindings;
     ImageHandle out;
   };
-  ImageHandle* input = &source;
-  ImageHandle* output = &scratch;
+  ImageHandle* output = first;
   for (const engine::vk::GraphicsPipeline& pipeline : axes_) {
     *output =
         graph
@@ -86,7 +96,8 @@ ImageHandle SeparableBlur::add_to(engine::graph::RenderGraph& graph, const engin
                   draw_grid_cells(ctx, layout_, active_region_);
                 })
             .out;
-    std::swap(input, output);
+    input = output;
+    output = output == first ? second : first;
   }
   return *input;
 }

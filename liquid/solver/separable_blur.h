@@ -31,11 +31,20 @@ class SeparableBlur {
   // (valid exactly when the blur was made for one).
   ImageHandle add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle& source,
                      ImageHandle& scratch, ImageHandle region) const;
+  // The same, leaving `source` as it is: source -> first -> second (-> first). Returns the one that
+  // holds the result.
+  ImageHandle add_to_keeping(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
+                             ImageHandle source, ImageHandle& first, ImageHandle& second, ImageHandle region) const;
 
   // How many passes add_to declares: one per axis it spreads.
   int passes() const { return int(axes_.size()); }
 
  private:
+  // The passes from `input`, writing `first`, `second`, `first` ... in turn, each reading the last
+  // one's output.
+  ImageHandle chain(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle* input,
+                    ImageHandle* first, ImageHandle* second, ImageHandle region) const;
+
   std::vector<engine::vk::GraphicsPipeline> axes_;
   engine::vk::Sampler nearest_;
   GridLayout layout_;

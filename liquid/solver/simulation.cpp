@@ -4,6 +4,7 @@
 #include "engine/vk/context.h"
 #include "liquid/physics/time_step.h"
 #include "liquid/scene/format.h"
+#include "liquid/solver/bodies.h"
 #include "liquid/solver/specialization.h"
 
 #include <glm/gtc/packing.hpp>
@@ -83,7 +84,15 @@ Simulation::Simulation(engine::vk::Context& context, const Scene& scene, const L
         std::make_unique<PressurePass>(context, layout_, setup_.splat, specialization, meshes, active_region);
   particle_update_ = std::make_unique<ParticleUpdatePass>(context, layout_, specialization, meshes);
   if (meshes) mesh_field_ = std::make_unique<MeshField>(context, scene_, setup_, layout_, specialization);
-  state_ = std::make_unique<LiquidState>(context, setup_, layout_, splat_format_);
+  const bool dynamic = std::any_of(scene.obstacles.begin(), scene.obstacles.end(), [](const Obstacle& o) { return o.dynamic; });
+  if (dynamic) {
+    body_force_ = std::make_unique<BodyForcePass>(context, layout_, int(scene.obstacles.size()), setup_.particle_mass,
+                                                  specialization);
+    body_integration_ = std::make_unique<BodyIntegrationPass>(context, setup_.dimension, specialization);
+  }
+  const std::vector<glm::vec4> body_texels = initial_body_texels(scene_, setup_);
+  bodies_ = decode_bodies(scene_, setup_.dimension, body_texels);
+  state_ = std::make_unique<LiquidState>(context, setup_, layout_, splat_format_, body_texels);
   max_steps_per_frame_ = options.max_steps_per_frame > 0 ? options.max_steps_per_frame : scene.substeps;
   uniforms_ = std::make_unique<engine::vk::UniformArena>(
       context, engine::vk::UniformArena::frame_bytes({sizeof(gpu::SolverUniforms)}, max_steps_per_frame_),
@@ -101,6 +110,8 @@ Simulation::Simulation(engine::vk::Context& context, const Scene& scene, const L
   active_ = setup_.initial_particles;
   emitted_.assign(scene.emitters.size(), 0);
   pose_overrides_.resize(scene.obstacles.size());
+  body_pushes_.resize(scene.obstacles.size());
+  body_readbacks_.resize(options.frames_in_flight + 1);
 }
 
 Simulation::~Simulation() = default;
@@ -118,6 +129,9 @@ void Simulation::set_runtime_parameters(const RuntimeParameters& p) {
 void Simulation::set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity) {
   if (index >= pose_overrides_.size())
     throw std::out_of_range("liquid: obstacle " + std::to_string(index) + " does not exist");
+  if (scene_.obstacles[index].dynamic)
+    throw std::invalid_argument("liquid: obstacle " + std::to_string(index) +
+                                " is dynamic: the liquid moves it (set_body_force pushes it)");
   pose_overrides_[index] = PoseOverride{center, velocity, time_};
 }
 
@@ -134,12 +148,55 @@ void Simulation::set_mesh_transform(size_t index, glm::quat rotation, float scal
 std::vector<ObstaclePose> Simulation::obstacle_poses(double time) const {
   std::vector<ObstaclePose> poses;
   for (size_t i = 0; i < scene_.obstacles.size(); ++i) {
+    const Obstacle& obstacle = scene_.obstacles[i];
     if (const auto& o = pose_overrides_[i])
-      poses.push_back({o->center + o->velocity * float(time - o->since), o->velocity});
+      poses.push_back({o->center + o->velocity * float(time - o->since), o->velocity, obstacle.rotation, glm::vec3(0.0f)});
     else
-      poses.push_back(scripted_pose(scene_.obstacles[i], time));
+      poses.push_back(scripted_pose(obstacle, time));
   }
+  for (const BodyState& b : bodies_) poses[size_t(b.obstacle)] = b.pose;  // the last known state
   return poses;
+}
+
+size_t Simulation::dynamic_obstacle(size_t index) const {
+  if (index >= scene_.obstacles.size()) throw std::out_of_range("liquid: obstacle " + std::to_string(index) + " does not exist");
+  if (!scene_.obstacles[index].dynamic)
+    throw std::invalid_argument("liquid: obstacle " + std::to_string(index) + " is not dynamic");
+  return index;
+}
+
+void Simulation::set_body_force(size_t index, glm::vec3 force, glm::vec3 torque) {
+  const auto finite = [](glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+  if (!finite(force) || !finite(torque)) throw std::invalid_argument("liquid: a body's force and torque must be finite");
+  body_pushes_[dynamic_obstacle(index)] = {force, torque};
+}
+
+std::vector<BodyState> Simulation::read_bodies() {
+  if (!body_integration_) return {};
+  const auto bytes = engine::graph::download_image(context_, state_->bodies[state_->body_current]);
+  const engine::vk::ImageDesc& d = state_->bodies[state_->body_current].desc();
+  bodies_ = decode_bodies(scene_, setup_.dimension, as_vector<glm::vec4>(bytes, size_t(d.width) * d.height));
+  return bodies_;
+}
+
+void Simulation::collect_body_readbacks() {
+  // A frame is complete once frames_in_flight later ones have been declared (LiquidOptions).
+  const BodyReadback* newest = nullptr;
+  for (const BodyReadback& r : body_readbacks_)
+    if (r.readback.buffer && r.frame + frames_in_flight_ <= frames_declared_ && (!newest || r.frame > newest->frame))
+      newest = &r;
+  if (!newest) return;
+  const engine::vk::ImageDesc& d = newest->readback.desc;
+  const auto bytes = newest->readback.bytes();
+  bodies_ = decode_bodies(scene_, setup_.dimension,
+                          as_vector<glm::vec4>(std::vector<std::byte>(bytes.begin(), bytes.end()), size_t(d.width) * d.height));
+  for (BodyReadback& r : body_readbacks_)
+    if (r.frame <= newest->frame) r.readback = {};
+}
+
+std::vector<BodyState> Simulation::latest_bodies() {
+  collect_body_readbacks();
+  return bodies_;
 }
 
 gpu::SolverUniforms Simulation::uniforms_for(const StepInputs& step) const {
@@ -172,8 +229,11 @@ std::vector<EmissionRange> Simulation::emit(double end_time, int& next_index) {
 
 Simulation::PressureImages Simulation::create_pressure_images(engine::graph::RenderGraph& graph) const {
   if (!pressure_) return {};
-  return {graph.create_image("liquid.pressure", pressure_->image_desc()),
-          graph.create_image("liquid.potential", pressure_->image_desc())};
+  PressureImages images{graph.create_image("liquid.pressure", pressure_->image_desc()),
+                        graph.create_image("liquid.potential", pressure_->image_desc()), {}};
+  if (body_force_ && setup_.splat == SplatMode::Separable)  // the body force reads P after the spread
+    images.scratch = graph.create_image("liquid.potential_scratch", pressure_->image_desc());
+  return images;
 }
 
 Simulation::Splat Simulation::add_splat(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
@@ -190,12 +250,12 @@ Simulation::Splat Simulation::add_splat(engine::graph::RenderGraph& graph, const
 }
 
 GridImages Simulation::add_grid(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
-                                const Splat& splat, const GridImages& grids, PressureImages& pressure,
-                                ImageHandle mesh_field) const {
-  if (!pressure_) return grid_->add_to(graph, slice, splat.splat, grids, {}, mesh_field, splat.region);
-  const ImageHandle potential = pressure_->add_to(graph, slice, splat.splat, pressure.pressure, pressure.potential,
-                                                  mesh_field, splat.region);
-  return grid_->add_to(graph, slice, splat.splat, grids, potential, mesh_field, splat.region);
+                                const Splat& splat, ImageHandle bodies, const GridImages& grids,
+                                PressureImages& pressure, ImageHandle mesh_field) const {
+  if (!pressure_) return grid_->add_to(graph, slice, splat.splat, bodies, grids, {}, mesh_field, splat.region);
+  const ImageHandle potential = pressure_->add_to(graph, slice, splat.splat, bodies, pressure.pressure,
+                                                  pressure.potential, pressure.scratch, mesh_field, splat.region);
+  return grid_->add_to(graph, slice, splat.splat, bodies, grids, potential, mesh_field, splat.region);
 }
 
 ImageHandle Simulation::update_mesh_field(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
@@ -219,6 +279,9 @@ LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
   GridImages grids{graph.import_image(s.grid_velocity.name(), s.grid_velocity),
                    graph.import_image(s.density.name(), s.density)};
   PressureImages pressure = create_pressure_images(graph);
+  std::array<ImageHandle, 2> bodies;
+  for (int i = 0; i < 2; ++i) bodies[i] = graph.import_image(s.bodies[i].name(), s.bodies[i]);
+  collect_body_readbacks();
   ImageHandle mesh_field = mesh_field_ ? mesh_field_->import(graph) : ImageHandle{};
 
   const float dt = float(time_step_);
@@ -232,6 +295,7 @@ LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
     step.active_after = next_index;
     step.obstacle_poses = obstacle_poses(t1);
     step.brushes = brushes_;
+    step.body_pushes = body_pushes_;
     const engine::vk::UniformSlice slice = uniforms_->push(uniforms_for(step));
 
     const int cur = s.current, next = 1 - s.current;
@@ -239,16 +303,33 @@ LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
     mesh_field = update_mesh_field(graph, slice, step.obstacle_poses, mesh_field);
     const Splat step_splat = add_splat(graph, slice, particles[cur], splat, active_);
     splat = step_splat.splat;
-    grids = add_grid(graph, slice, step_splat, grids, pressure, mesh_field);
-    particles[next] = particle_update_->add_to(graph, slice, particles[cur], splat, grids, particles[next],
-                                               step.active_after, mesh_field);
+    grids = add_grid(graph, slice, step_splat, bodies[s.body_current], grids, pressure, mesh_field);
+    if (body_integration_) {
+      // The liquid's pressure on the bodies at the pose the grid pass used, then their step; the
+      // particle pass keeps particles out of where they are at its end.
+      std::vector<int> dynamic;
+      for (size_t i = 0; i < scene_.obstacles.size(); ++i)
+        if (scene_.obstacles[i].dynamic) dynamic.push_back(int(i));
+      const BodyForceImages force = body_force_->add_to(graph, slice, splat, pressure.pressure, particles[cur].positions,
+                                                        active_, bodies[s.body_current], dynamic);
+      const int body_next = 1 - s.body_current;
+      bodies[body_next] = body_integration_->add_to(graph, slice, bodies[s.body_current], force, bodies[body_next]);
+      s.body_current = body_next;
+    }
+    particles[next] = particle_update_->add_to(graph, slice, particles[cur], splat, grids, bodies[s.body_current],
+                                               particles[next], step.active_after, mesh_field);
     s.current = next;
     active_ = step.active_after;
     time_ = t1;
     ++step_;
   }
+  if (body_integration_) {  // for latest_bodies(), frames_in_flight frames from now
+    BodyReadback& slot = body_readbacks_[frames_declared_ % body_readbacks_.size()];
+    slot.frame = frames_declared_;
+    slot.readback = engine::graph::add_readback(graph, bodies[s.body_current], "liquid.bodies_readback");
+  }
   return {particles[s.current].positions, particles[s.current].velocities, splat, grids.velocity, grids.density,
-          mesh_field};
+          bodies[s.body_current], mesh_field};
 }
 
 LiquidImages Simulation::add_grids_to(engine::graph::RenderGraph& graph, const LiquidImages& images) {
@@ -266,9 +347,9 @@ LiquidImages Simulation::add_grids_to(engine::graph::RenderGraph& graph, const L
   ImageHandle mesh_field = images.mesh_field;
   if (mesh_field_ && !mesh_field.valid()) throw std::invalid_argument("liquid: add_grids_to needs the images of add_to()");
   mesh_field = update_mesh_field(graph, slice, step.obstacle_poses, mesh_field);
-  const GridImages grids =
-      add_grid(graph, slice, splat, GridImages{images.grid_velocity, images.density}, pressure, mesh_field);
-  return {images.positions, images.velocities, splat.splat, grids.velocity, grids.density, mesh_field};
+  const GridImages grids = add_grid(graph, slice, splat, images.bodies, GridImages{images.grid_velocity, images.density},
+                                    pressure, mesh_field);
+  return {images.positions, images.velocities, splat.splat, grids.velocity, grids.density, images.bodies, mesh_field};
 }
 
 Checkpoint Simulation::save_checkpoint() {
@@ -284,6 +365,9 @@ Checkpoint Simulation::save_checkpoint() {
   c.positions = as_vector<glm::vec4>(engine::graph::download_image(context_, state_->positions[state_->current]), texels);
   c.velocities =
       as_vector<glm::vec4>(engine::graph::download_image(context_, state_->velocities[state_->current]), texels);
+  engine::vk::Image& bodies = state_->bodies[state_->body_current];
+  c.bodies = as_vector<glm::vec4>(engine::graph::download_image(context_, bodies),
+                                  size_t(bodies.desc().width) * bodies.desc().height);
   return c;
 }
 
@@ -304,6 +388,9 @@ void Simulation::check_checkpoint_values(const Checkpoint& c) const {
   for (size_t i = 0; i < c.poses.size(); ++i)
     if (!finite(c.poses[i].center) || !finite(c.poses[i].velocity) || !std::isfinite(c.poses[i].since))
       refuse("obstacle " + std::to_string(i) + " has a non-finite pose");
+  for (size_t i = 0; i < c.bodies.size(); ++i)
+    if (!finite(glm::vec3(c.bodies[i])) || !std::isfinite(c.bodies[i].w))
+      refuse("body state holds a non-finite value (texel " + std::to_string(i) + ")");
   for (int i = 0; i < c.active; ++i) {
     const glm::vec4 p = c.positions[size_t(i)], v = c.velocities[size_t(i)];
     if (!finite(glm::vec3(p)) || !finite(glm::vec3(v)))
@@ -320,8 +407,9 @@ void Simulation::restore_checkpoint(const Checkpoint& c) {
   if (c.active < 0 || c.active > setup_.capacity)
     throw std::invalid_argument("liquid: the checkpoint holds " + std::to_string(c.active) +
                                 " active particles, outside the scene's capacity of 0 to " + std::to_string(setup_.capacity));
+  const engine::vk::ImageDesc& body_desc = state_->bodies[0].desc();
   if (c.positions.size() != texels || c.velocities.size() != texels || c.emitted.size() != emitted_.size() ||
-      c.poses.size() != pose_overrides_.size())
+      c.poses.size() != pose_overrides_.size() || c.bodies.size() != size_t(body_desc.width) * body_desc.height)
     throw std::invalid_argument("liquid: the checkpoint does not match this scene (" + std::to_string(c.positions.size()) +
                                 " particle texels, " + std::to_string(c.emitted.size()) + " emitters, " +
                                 std::to_string(c.poses.size()) + " obstacles; the scene has " + std::to_string(texels) +
@@ -329,6 +417,9 @@ void Simulation::restore_checkpoint(const Checkpoint& c) {
   check_checkpoint_values(c);
   engine::graph::upload_image(context_, state_->positions[state_->current], std::as_bytes(std::span(c.positions)));
   engine::graph::upload_image(context_, state_->velocities[state_->current], std::as_bytes(std::span(c.velocities)));
+  engine::graph::upload_image(context_, state_->bodies[state_->body_current], std::as_bytes(std::span(c.bodies)));
+  bodies_ = decode_bodies(scene_, setup_.dimension, c.bodies);
+  for (BodyReadback& r : body_readbacks_) r.readback = {};
   step_ = c.step;
   time_ = c.time;
   time_step_ = c.time_step > 0.0 ? c.time_step : double(setup_.time_step);
@@ -378,8 +469,10 @@ std::vector<glm::vec4> Simulation::read_grid_velocity() {
 Diagnostics Simulation::diagnose() { return diagnose(read_particles()); }
 
 Diagnostics Simulation::diagnose(const ParticleSnapshot& particles) {
+  read_bodies();
   Diagnostics d =
       compute_diagnostics(scene_, setup_, particles, read_density_ratio(), obstacle_poses(time_), step_, time_);
+  d.bodies = bodies_;
   d.time_step = time_step_;  // the steps just run took it (adapt_time_step() comes after a diagnosis)
   check_stable(d, energy_bound_);
   return d;

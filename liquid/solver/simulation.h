@@ -6,11 +6,14 @@
 #pragma once
 
 #include "engine/graph/render_graph.h"
+#include "engine/graph/transfer.h"
 #include "engine/vk/uniform_arena.h"
 #include "liquid/analysis/diagnostics.h"
 #include "liquid/physics/setup.h"
 #include "liquid/scene.h"
 #include "liquid/solver/active_region.h"
+#include "liquid/solver/body_force.h"
+#include "liquid/solver/body_integration.h"
 #include "liquid/solver/grid.h"
 #include "liquid/solver/mesh_field.h"
 #include "liquid/solver/particle_update.h"
@@ -53,6 +56,9 @@ class Simulation {
   void set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity);
   void set_mesh_transform(size_t index, glm::quat rotation, float scale);
   std::vector<ObstaclePose> obstacle_poses(double time) const;
+  void set_body_force(size_t index, glm::vec3 force, glm::vec3 torque);
+  std::vector<BodyState> read_bodies();
+  std::vector<BodyState> latest_bodies();
   int active_particles() const { return active_; }
   int step_count() const { return step_; }
   double time() const { return time_; }
@@ -88,6 +94,7 @@ class Simulation {
   // The splat-adjoint pressure's two grid images for one graph (invalid handles without it).
   struct PressureImages {
     ImageHandle pressure, potential;
+    ImageHandle scratch;  // with dynamic bodies: the separable spread's second image, so P is kept
   };
   PressureImages create_pressure_images(engine::graph::RenderGraph& graph) const;
   // The scene's splat of the first `active` particles into `splat`, and the step's active region
@@ -99,7 +106,11 @@ class Simulation {
                   const ParticleImages& particles, ImageHandle splat, int active) const;
   // One step's grid pass, after the splat-adjoint pressure passes when the scene uses them.
   GridImages add_grid(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice, const Splat& splat,
-                      const GridImages& grids, PressureImages& pressure, ImageHandle mesh_field) const;
+                      ImageHandle bodies, const GridImages& grids, PressureImages& pressure, ImageHandle mesh_field) const;
+  // The index of a dynamic obstacle, or std::out_of_range / std::invalid_argument naming it.
+  size_t dynamic_obstacle(size_t index) const;
+  // Keeps the newest per-frame read-back of the body state that has completed (latest_bodies()).
+  void collect_body_readbacks();
   // The mesh field for obstacles at `poses` (voxelized again when a mesh moved); invalid without meshes.
   ImageHandle update_mesh_field(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
                                 const std::vector<ObstaclePose>& poses, ImageHandle field);
@@ -120,6 +131,8 @@ class Simulation {
   std::unique_ptr<GridPass> grid_;
   std::unique_ptr<PressurePass> pressure_;  // only with the splat-adjoint pressure
   std::unique_ptr<ParticleUpdatePass> particle_update_;
+  std::unique_ptr<BodyForcePass> body_force_;              // only with dynamic obstacles
+  std::unique_ptr<BodyIntegrationPass> body_integration_;
   std::unique_ptr<MeshField> mesh_field_;  // only with mesh obstacles
   std::unique_ptr<LiquidState> state_;
   std::unique_ptr<engine::vk::UniformArena> uniforms_;
@@ -140,6 +153,15 @@ class Simulation {
     double since;
   };
   std::vector<std::optional<PoseOverride>> pose_overrides_;
+  std::vector<BodyPush> body_pushes_;  // per obstacle
+  // The dynamic obstacles' state as last known on the host (a blocking read, or the newest
+  // completed per-frame read-back): what the views draw and obstacle_poses() reports for them.
+  std::vector<BodyState> bodies_;
+  struct BodyReadback {
+    uint64_t frame = 0;  // frames_declared_ of the frame that copied it
+    engine::graph::Readback readback;
+  };
+  std::vector<BodyReadback> body_readbacks_;  // one per frame slot
 };
 
 }  // namespace liquid

@@ -12,7 +12,7 @@ std::vector<int32_t> scene_specialization(const Scene& scene, const SimulationSe
   std::vector<int32_t> constants(specialization_id::count, 0);
   constants[specialization_id::obstacle_count] = int32_t(scene.obstacles.size());
   for (size_t i = 0; i < scene.obstacles.size(); ++i)
-    constants[specialization_id::first_obstacle_kind + i] = obstacle_kind_code(scene.obstacles[i].shape);
+    constants[specialization_id::first_obstacle_kind + i] = obstacle_code(scene.obstacles[i]);
   constants[specialization_id::shallow_water] = setup.shallow_water ? 1 : 0;
   const bool integer_gamma = setup.gamma >= 1.0f && setup.gamma <= 8.0f && setup.gamma == std::floor(setup.gamma);
   constants[specialization_id::integer_gamma] = integer_gamma ? int32_t(setup.gamma) : 0;

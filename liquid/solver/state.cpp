@@ -1,6 +1,7 @@
 #include "liquid/solver/state.h"
 
 #include "engine/graph/transfer.h"
+#include "liquid/solver/bodies.h"
 
 #include <stdexcept>
 #include <string>
@@ -39,7 +40,7 @@ SplatFormatChoice choose_splat_format(SplatFormat requested, bool rgba32f_blenda
 }
 
 LiquidState::LiquidState(engine::vk::Context& context, const SimulationSetup& setup, const GridLayout& layout,
-                         VkFormat splat_format) {
+                         VkFormat splat_format, const std::vector<glm::vec4>& body_texels) {
   const ImageDesc particles{ImageKind::Image2D, uint32_t(setup.particle_texture.x), uint32_t(setup.particle_texture.y), 1,
                             k_particle_format, k_usage};
   for (int i = 0; i < 2; ++i) {
@@ -49,6 +50,13 @@ LiquidState::LiquidState(engine::vk::Context& context, const SimulationSetup& se
   splat = Image(context, layout.image_desc(splat_format, k_usage), "liquid.splat");
   grid_velocity = Image(context, layout.image_desc(k_grid_velocity_format, k_usage), "liquid.grid_velocity");
   density = Image(context, layout.image_desc(k_density_format, k_usage), "liquid.density");
+
+  const ImageDesc body_desc{ImageKind::Image2D, uint32_t(gpu_body_texels()), uint32_t(body_texels.size() / gpu_body_texels()),
+                            1, k_body_format, k_usage};
+  for (int i = 0; i < 2; ++i) {
+    bodies[i] = Image(context, body_desc, "liquid.bodies" + std::to_string(i));
+    engine::graph::upload_image(context, bodies[i], std::as_bytes(std::span(body_texels)));
+  }
 
   const auto p = padded(setup.positions, setup);
   const auto v = padded(setup.velocities, setup);

@@ -11,6 +11,9 @@
 #include <vulkan/vulkan.h>
 
 #include <array>
+#include <vector>
+
+#include <glm/glm.hpp>
 
 namespace engine::vk {
 class Context;
@@ -21,6 +24,7 @@ namespace liquid {
 constexpr VkFormat k_particle_format = VK_FORMAT_R32G32B32A32_SFLOAT;  // positions and velocities
 constexpr VkFormat k_grid_velocity_format = VK_FORMAT_R32G32B32A32_SFLOAT;
 constexpr VkFormat k_density_format = VK_FORMAT_R16_SFLOAT;  // rho / rho0, for rendering
+constexpr VkFormat k_body_format = VK_FORMAT_R32G32B32A32_SFLOAT;  // body state, the liquid's force and torque
 
 // The splat's format for a scene's `requested` one and what the device can blend into. Auto takes
 // RGBA32F where it is blendable and falls back to RGBA16F (`fell_back`) where it is not. Throws
@@ -32,16 +36,21 @@ struct SplatFormatChoice {
 SplatFormatChoice choose_splat_format(SplatFormat requested, bool rgba32f_blendable, bool rgba16f_blendable);
 
 struct LiquidState {
-  // The grids are stored as `layout` says (3D images or atlases in 3D).
+  // The grids are stored as `layout` says (3D images or atlases in 3D); `body_texels` is the
+  // body-state texture's first contents (liquid/solver/bodies.h).
   LiquidState(engine::vk::Context& context, const SimulationSetup& setup, const GridLayout& layout,
-              VkFormat splat_format);
+              VkFormat splat_format, const std::vector<glm::vec4>& body_texels);
 
   std::array<engine::vk::Image, 2> positions;   // xyz (m), w = 1 active
   std::array<engine::vk::Image, 2> velocities;  // xyz (m/s)
   engine::vk::Image splat;                      // (sum w u, sum w)
   engine::vk::Image grid_velocity;              // (u', fluid flag)
   engine::vk::Image density;                    // rho / rho0
-  int current = 0;                              // which of the pair holds the latest particles
+  // LIQUID_BODY_TEXELS x obstacles (at least 1 row): the dynamic obstacles' state (shaders/liquid/
+  // shared.h), ping-ponged by the integration pass.
+  std::array<engine::vk::Image, 2> bodies;
+  int current = 0;                              // which of the particle pair holds the latest particles
+  int body_current = 0;                         // which of the body pair holds the latest state
 };
 
 }  // namespace liquid

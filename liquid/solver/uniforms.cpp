@@ -1,5 +1,6 @@
 #include "liquid/solver/uniforms.h"
 
+#include "liquid/physics/body.h"
 #include "liquid/physics/pic_blend.h"
 
 #include <algorithm>
@@ -24,6 +25,10 @@ int obstacle_kind_code(ObstacleShape shape) {
     case ObstacleShape::Mesh: return gpu::k_obstacle_mesh;
   }
   return gpu::k_obstacle_sphere;
+}
+
+int obstacle_code(const Obstacle& obstacle) {
+  return obstacle_kind_code(obstacle.shape) | (obstacle.dynamic ? gpu::k_obstacle_dynamic : 0);
 }
 
 gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& setup, const StepInputs& step) {
@@ -58,14 +63,29 @@ gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& set
                                 " entries, not " + std::to_string(gpu::k_wall_table_size) + " (make it with make_setup)");
   for (size_t k = 0; k < setup.wall_share_beyond.size(); ++k)
     u.wall_kernel_beyond[k / 4][k % 4] = setup.wall_share_beyond[k];
+  for (size_t k = 0; k < std::min(setup.body_share_beyond.size(), setup.wall_share_beyond.size()); ++k)
+    u.body_kernel_beyond[k / 4][k % 4] = setup.body_share_beyond[k];
 
   int ball = 0;
   for (size_t i = 0; i < scene.obstacles.size(); ++i) {
     const Obstacle& o = scene.obstacles[i];
-    const ObstaclePose pose = i < step.obstacle_poses.size() ? step.obstacle_poses[i] : ObstaclePose{o.center, {}};
+    const ObstaclePose pose = i < step.obstacle_poses.size() ? step.obstacle_poses[i] : ObstaclePose{o.center, {}, o.rotation, {}};
     gpu::Obstacle& g = u.obstacles[i];
     g.center = pose.center;
     g.velocity = pose.velocity;
+    g.orientation = glm::vec4(pose.orientation.x, pose.orientation.y, pose.orientation.z, pose.orientation.w);
+    g.angular_velocity = pose.angular_velocity;
+    if (o.dynamic) {
+      gpu::Body& b = u.bodies[i];
+      b.mass = float(body_mass(o, setup.dimension));
+      b.inertia = body_inertia(o, setup.dimension);
+      b.added_mass = float(body_added_mass(o, setup.dimension, setup.rest_density, setup.cell_size));
+      b.added_inertia_ratio = float(body_added_inertia_ratio(o, setup.dimension, b.added_mass));
+      if (i < step.body_pushes.size()) {
+        b.external_force = step.body_pushes[i].force;
+        b.external_torque = step.body_pushes[i].torque;
+      }
+    }
     switch (o.shape) {
       case ObstacleShape::Sphere: g.sphere_radius = o.radius; break;
       case ObstacleShape::Box: g.box_half_extent = o.half_extent; break;

@@ -24,11 +24,18 @@ struct EmissionRange {
   int end = 0;      // one past the last
 };
 
+// A host's push on a dynamic obstacle (LiquidNode::set_body_force), through its centre.
+struct BodyPush {
+  glm::vec3 force{0.0f};   // N
+  glm::vec3 torque{0.0f};  // N m
+};
+
 struct StepInputs {
   float dt = 0.0f;          // s
   int active_before = 0;    // particles alive at the start of the step
   int active_after = 0;     // after this step's emission
   std::vector<ObstaclePose> obstacle_poses;  // one per scene obstacle, at the end of the step
+  std::vector<BodyPush> body_pushes;         // per scene obstacle (dynamic ones read it), or empty
   std::vector<ForceBrush> brushes;
   std::vector<EmissionRange> emissions;
 };
@@ -41,7 +48,9 @@ gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& set
 // Throws std::invalid_argument ("liquid: N what (at most limit)") when count exceeds limit.
 void require_at_most(size_t count, int limit, const char* what);
 
-// The code shaders compare an obstacle's kind with (LIQUID_OBSTACLE_* in shared.h).
+// The code shaders compare an obstacle's kind with (LIQUID_OBSTACLE_* in shared.h), plus
+// LIQUID_OBSTACLE_DYNAMIC for a dynamic one (the OBSTACLE_KIND_i specialization constants).
 int obstacle_kind_code(ObstacleShape shape);
+int obstacle_code(const Obstacle& obstacle);
 
 }  // namespace liquid

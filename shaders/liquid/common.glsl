@@ -46,11 +46,15 @@ int obstacle_count() { return OBSTACLE_COUNT; }
 #endif
 #define FOR_EACH_OBSTACLE(CALL) CALL(0) CALL(1) CALL(2) CALL(3) CALL(4) CALL(5) CALL(6) CALL(7)
 
-int obstacle_kind(int index) {
+// The constant holds the shape's code (LIQUID_OBSTACLE_SPHERE ...) plus LIQUID_OBSTACLE_DYNAMIC for
+// a rigid body the liquid moves.
+int obstacle_code(int index) {
   return index == 0 ? OBSTACLE_KIND_0 : index == 1 ? OBSTACLE_KIND_1 : index == 2 ? OBSTACLE_KIND_2
        : index == 3 ? OBSTACLE_KIND_3 : index == 4 ? OBSTACLE_KIND_4 : index == 5 ? OBSTACLE_KIND_5
        : index == 6 ? OBSTACLE_KIND_6 : OBSTACLE_KIND_7;
 }
+int obstacle_kind(int index) { return obstacle_code(index) & LIQUID_OBSTACLE_SHAPE_MASK; }
+bool obstacle_dynamic(int index) { return (obstacle_code(index) & LIQUID_OBSTACLE_DYNAMIC) != 0; }
 
 bool shallow_water() { return SHALLOW_WATER; }
 
@@ -73,6 +77,9 @@ float density_ratio_power(float ratio) {
 #else
 #define GRID_SAMPLER sampler2D
 #endif
+
+// A cell holds liquid when its summed splat weight is above this.
+const float k_fluid_epsilon = 1e-6;
 
 ivec3 grid_cells() { return u.grid_cells; }
 ivec2 atlas_tiles() { return ivec2(u.atlas_columns, u.atlas_rows); }
@@ -143,13 +150,58 @@ float sd_metaballs(vec3 p, Obstacle o) {
   return (threshold - field) / max(length(gradient), 1e-4);
 }
 
-// p relative to obstacle `index`'s centre (in the plane in 2D).
-vec3 obstacle_local(int index, vec3 p) {
-  vec3 local = p - u.obstacles[index].center;
-#if DIM == 2
-  local.z = 0.0;
+// Rotates v by the unit quaternion q = (x, y, z, w), and by its inverse.
+vec3 quat_rotate(vec4 q, vec3 v) { return v + 2.0 * cross(q.xyz, cross(q.xyz, v) + q.w * v); }
+vec3 quat_rotate_inverse(vec4 q, vec3 v) { return quat_rotate(vec4(-q.xyz, q.w), v); }
+
+// An obstacle's pose at the step's instant: centre, orientation (shape frame to world), velocity of
+// the centre and angular velocity. A scripted or host-placed obstacle's comes from the uniform
+// block; a dynamic one's from the body-state texture the integration pass writes (shared.h), in
+// shaders that declare it (LIQUID_BODIES: the solver's grid, particle and body passes). Elsewhere
+// (the views) a dynamic obstacle is drawn at the pose the node last read back.
+struct ObstacleFrame {
+  vec3 center;
+  vec4 orientation;
+  vec3 velocity;
+  vec3 angular_velocity;
+};
+
+#ifdef LIQUID_BODIES
+layout(set = 0, binding = LIQUID_BINDING_BODIES) uniform sampler2D u_bodies;
+vec4 body_texel(int index, int texel) { return texelFetch(u_bodies, ivec2(texel, index), 0); }
 #endif
-  return local;
+
+ObstacleFrame obstacle_frame(int index) {
+  ObstacleFrame f;
+#ifdef LIQUID_BODIES
+  if (obstacle_dynamic(index)) {
+    f.center = body_texel(index, LIQUID_BODY_POSITION).xyz;
+    f.orientation = body_texel(index, LIQUID_BODY_ORIENTATION);
+    f.velocity = body_texel(index, LIQUID_BODY_VELOCITY).xyz;
+    f.angular_velocity = body_texel(index, LIQUID_BODY_ANGULAR_VELOCITY).xyz;
+    return f;
+  }
+#endif
+  f.center = u.obstacles[index].center;
+  f.orientation = u.obstacles[index].orientation;
+  f.velocity = u.obstacles[index].velocity;
+  f.angular_velocity = u.obstacles[index].angular_velocity;
+  return f;
+}
+
+// p relative to obstacle `index`'s centre (in the plane in 2D).
+vec3 obstacle_offset(int index, vec3 p) {
+  vec3 offset = p - obstacle_frame(index).center;
+#if DIM == 2
+  offset.z = 0.0;
+#endif
+  return offset;
+}
+
+// The velocity of the obstacle's material at p: v + w x (p - c).
+vec3 obstacle_velocity_at(int index, vec3 p) {
+  ObstacleFrame f = obstacle_frame(index);
+  return f.velocity + cross(f.angular_velocity, p - f.center);
 }
 
 // Mesh obstacles (MESH_FIELD=1, the passes of scenes with meshes): their signed distance, built on
@@ -249,15 +301,24 @@ MeshSample mesh_sample_at_cell(ivec3 c, bool with_gradient) {
   return m;
 }
 
-// Signed distance of obstacle `index` at p; a mesh's from `meshes` (sampled at p).
+// Signed distance of obstacle `index` at p; a mesh's from `meshes` (sampled at p). Only a box
+// turns its distance with its orientation (a sphere's does not change, metaballs take no rotation,
+// a mesh is voxelized turned), so the others skip the quaternion.
 float obstacle_distance(int index, vec3 p, MeshSample meshes) {
   Obstacle o = u.obstacles[index];
-  vec3 local = obstacle_local(index, p);
+  vec3 offset = obstacle_offset(index, p);
   int kind = obstacle_kind(index);
   if (kind == LIQUID_OBSTACLE_MESH) return channel(meshes.distance, mesh_slot(index));
-  if (kind == LIQUID_OBSTACLE_SPHERE) return length(local) - o.sphere_radius;
-  if (kind == LIQUID_OBSTACLE_BOX) return sd_box(local, o.box_half_extent);
-  return sd_metaballs(local, o);
+  if (kind == LIQUID_OBSTACLE_SPHERE) return length(offset) - o.sphere_radius;
+  if (kind == LIQUID_OBSTACLE_BOX) {
+    vec3 local = quat_rotate_inverse(obstacle_frame(index).orientation, offset);  // the box's own frame
+#if DIM == 2
+    return sd_box(local, vec3(o.box_half_extent.xy, 1.0));  // the rectangle's distance in the plane
+#else
+    return sd_box(local, o.box_half_extent);
+#endif
+  }
+  return sd_metaballs(offset, o);
 }
 
 // The analytic shapes' alone (a mesh is far: the views draw meshes another way).
@@ -272,7 +333,7 @@ float obstacle_distance(int index, vec3 p) {
 vec3 obstacle_normal(int index, vec3 p, MeshSample meshes) {
   vec3 n;
   if (obstacle_kind(index) == LIQUID_OBSTACLE_SPHERE) {
-    n = obstacle_local(index, p);
+    n = obstacle_offset(index, p);
   } else if (obstacle_kind(index) == LIQUID_OBSTACLE_MESH) {
     int slot = mesh_slot(index);
     n = vec3(channel(meshes.gradient_x, slot), channel(meshes.gradient_y, slot), channel(meshes.gradient_z, slot));
@@ -295,14 +356,19 @@ vec3 obstacle_normal(int index, vec3 p) {
   return obstacle_normal(index, p, none);
 }
 
-// Artificial obstacle density (section 6): rho0 at the surface, rising linearly inside and
-// falling to zero one band outside. Added to the fluid density before the pressure, so the
-// pressure gradient pushes liquid away from the obstacle.
+// Artificial obstacle density (section 6): rho0 at the surface, rising linearly inside and falling
+// to zero one band outside. Added to the fluid density before the pressure, so the pressure
+// gradient pushes liquid away from the obstacle. A dynamic obstacle adds none: the pressure is
+// clamped at 0 below rho0 (pressure_from_density), so any density an obstacle adds where liquid is
+// acts as a wall a band further out, and a body riding on that cushion floats a band too high.
+// The liquid next to a body reads its density with the body's kernel coverage instead, as at the
+// walls (body_coverage in grid_update.glsl; docs/physics.md, "Bodies that float").
 float obstacle_density(vec3 p, MeshSample meshes) {
   float band = u.obstacle_band;
   float total = 0.0;
 #define LIQUID_DENSITY_TERM(i) \
-  if (i < obstacle_count()) total += clamp(1.0 - obstacle_distance(i, p, meshes) / band, 0.0, 2.0);
+  if (i < obstacle_count() && !obstacle_dynamic(i)) \
+    total += clamp(1.0 - obstacle_distance(i, p, meshes) / band, 0.0, 2.0);
   FOR_EACH_OBSTACLE(LIQUID_DENSITY_TERM)
 #undef LIQUID_DENSITY_TERM
   return total * u.rest_density;

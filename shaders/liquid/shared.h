@@ -22,6 +22,25 @@
 #define LIQUID_OBSTACLE_BOX 1
 #define LIQUID_OBSTACLE_METABALLS 2
 #define LIQUID_OBSTACLE_MESH 3        // a triangle mesh voxelized into the mesh field each step it moves
+// Added to a kind for a dynamic obstacle (a rigid body the liquid moves): its pose is read from the
+// body-state texture, not from the uniform block (obstacle_frame() in common.glsl).
+#define LIQUID_OBSTACLE_DYNAMIC 8
+#define LIQUID_OBSTACLE_SHAPE_MASK 7
+
+// ---- Rigid bodies: the body-state texture (RGBA32F, one row per obstacle) ------------------------
+// Texel x of row i holds, for a dynamic obstacle i (rows of other obstacles are unused):
+#define LIQUID_BODY_POSITION 0          // xyz centre (m)
+#define LIQUID_BODY_ORIENTATION 1       // unit quaternion (x, y, z, w), body to world
+#define LIQUID_BODY_VELOCITY 2          // xyz m/s
+#define LIQUID_BODY_ANGULAR_VELOCITY 3  // xyz rad/s (world frame)
+#define LIQUID_BODY_FORCE 4             // xyz N: the liquid's force over the last step (reported)
+#define LIQUID_BODY_TORQUE 5            // xyz N m about the centre (reported)
+#define LIQUID_BODY_ACCELERATION 6      // xyz m/s^2 of the last step (the added-mass term)
+#define LIQUID_BODY_ANGULAR_ACCELERATION 7
+#define LIQUID_BODY_TEXELS 8
+// The body force pass's two targets (one texel per obstacle): force (N) and torque (N m).
+#define LIQUID_BODY_TARGET_FORCE 0
+#define LIQUID_BODY_TARGET_TORQUE 1
 
 // Mesh obstacles: each has one channel of the mesh field (RGBA), so at most four per scene.
 #define LIQUID_MAX_MESH_OBSTACLES 4
@@ -59,9 +78,19 @@
 #define LIQUID_BINDING_PARTICLE_VELOCITIES 2
 #define LIQUID_BINDING_PARTICLE_SPLAT 3
 #define LIQUID_BINDING_PARTICLE_GRID_VELOCITY 4
+// The body-state texture, read where dynamic obstacles are evaluated (grid, particle, body passes).
+#define LIQUID_BINDING_BODIES 5
+// The body force and exchange passes read the splat at LIQUID_BINDING_GRID_SPLAT, as the grid pass
+// does (the pressure they integrate, the velocity the no-inflow condition meets); the exchange
+// pass the particles' positions at its own. The integration pass: their force and torque.
+#define LIQUID_BINDING_BODY_PARTICLES 2
+// With the splat-adjoint pressure, the body force pass reads pressure.frag's cell pressure P.
+#define LIQUID_BINDING_BODY_CELL_PRESSURE 3
+#define LIQUID_BINDING_BODY_FORCE 1
+#define LIQUID_BINDING_BODY_TORQUE 2
 // The mesh obstacles' signed distance field (the MESH_FIELD variants of the grid, pressure and
 // particle passes and of the 2D view), and the passes that build it (liquid/solver/mesh_field.h).
-#define LIQUID_BINDING_MESH_FIELD 6
+#define LIQUID_BINDING_MESH_FIELD 7  // past the bodies' 5
 #define LIQUID_BINDING_MESH_TRIANGLES 1     // mesh_raster.vert, mesh_draw.vert: the triangles' corners
 #define LIQUID_BINDING_MESH_INSIDE 1        // mesh_spread.frag (the field): the signed crossing counts
 #define LIQUID_BINDING_MESH_NEAREST 2       // mesh_spread.frag: the closest surface points so far
@@ -111,6 +140,8 @@ constexpr int k_wall_table_size = LIQUID_WALL_TABLE_SIZE;
 constexpr int k_obstacle_sphere = LIQUID_OBSTACLE_SPHERE;
 constexpr int k_obstacle_box = LIQUID_OBSTACLE_BOX;
 constexpr int k_obstacle_metaballs = LIQUID_OBSTACLE_METABALLS;
+constexpr int k_obstacle_dynamic = LIQUID_OBSTACLE_DYNAMIC;
+constexpr int k_body_texels = LIQUID_BODY_TEXELS;
 constexpr int k_obstacle_mesh = LIQUID_OBSTACLE_MESH;
 constexpr int k_max_mesh_obstacles = LIQUID_MAX_MESH_OBSTACLES;
 constexpr float k_mesh_field_margin_cells = float(LIQUID_MESH_FIELD_MARGIN_CELLS);
@@ -134,9 +165,21 @@ LIQUID_STRUCT(Obstacle) {
   float sphere_radius;      // m
   vec3 box_half_extent;     // m
   float metaball_threshold; // surface where sum (1 - d^2/R^2)^2 reaches it
-  vec3 velocity;            // m/s
+  vec3 velocity;            // m/s, of the centre
   int first_ball;           // metaballs: first entry in balls[]
   int ball_count;
+  LIQUID_ALIGN16 vec4 orientation;  // unit quaternion (x, y, z, w), the shape's frame to world
+  vec3 angular_velocity;    // rad/s, world frame: a point p moves at velocity + w x (p - center)
+};
+
+// A dynamic obstacle's rigid-body constants, read by the integration pass (body.frag).
+LIQUID_STRUCT(Body) {
+  vec3 inertia;             // kg m^2, principal moments in the shape's frame (2D: per metre of depth)
+  float mass;               // kg (2D: per metre of depth)
+  vec3 external_force;      // N, the host's (LiquidNode::set_body_force), through the centre
+  float added_mass;         // kg, the integrator's added-mass term (docs/physics.md)
+  vec3 external_torque;     // N m
+  float added_inertia_ratio;  // the same for rotation, as a fraction of the inertia
 };
 
 LIQUID_STRUCT(Brush) {     // f_ext (eq. 2): acceleration falling smoothly to zero at the radius
@@ -183,6 +226,10 @@ LIQUID_STRUCT(SolverUniforms) {
   vec4 ground[LIQUID_MAX_GROUND_HILLS]; // hills: xy centre (m), z height (m), w width (m)
   Brush brushes[LIQUID_MAX_BRUSHES];
   EmitterRange emitters[LIQUID_MAX_EMITTERS];
+  Body bodies[LIQUID_MAX_OBSTACLES];
+  // The same share beyond a dynamic body's surface k + 0.5 cells from a cell centre, as the
+  // scene's lattice sees it (uniform liquid reads its rest density there): [k / 4][k % 4].
+  vec4 body_kernel_beyond[LIQUID_WALL_TABLE_SIZE / 4];
 };
 
 // The textures of a mesh's triangles (3 texels per triangle: its corners in the mesh's frame) are

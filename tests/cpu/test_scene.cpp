@@ -22,7 +22,8 @@ const std::vector<std::string> k_shipped_scenes = {
     "dam_break_2d.json", "dam_break_3d.json", "paper_2d_16k.json", "paper_2d_32k.json",
     "paper_2d_64k.json", "paper_3d.json",     "shallow_water.json", "obstacles_2d.json",
     "rest_pool_2d.json", "symmetric_2d.json", "small_3d.json",      "jet_2d.json",
-    "column_2d.json",    "column_3d.json",    "dam_break_tank_2d.json", "mesh_pool_3d.json"};
+    "column_2d.json",    "column_3d.json",    "dam_break_tank_2d.json", "floating_box_2d.json",
+    "floating_boxes_3d.json", "mesh_pool_3d.json"};
 
 // A small valid 2D scene; each malformed case changes one thing.
 Json valid_2d() {
@@ -71,6 +72,11 @@ TEST_CASE("every shipped scene loads", "[scene]") {
 }
 
 TEST_CASE("shipped scenes carry what their names promise", "[scene]") {
+  const Scene boxes = load_scene(k_scene_dir / "floating_boxes_3d.json");
+  REQUIRE(boxes.obstacles.size() == 2);
+  CHECK((boxes.obstacles[0].dynamic && boxes.obstacles[0].density < 1000.0f));  // floats
+  CHECK((boxes.obstacles[1].dynamic && boxes.obstacles[1].density > 1000.0f));  // sinks
+  CHECK(load_scene(k_scene_dir / "floating_box_2d.json").obstacles.at(0).dynamic);
   const Scene obstacles = load_scene(k_scene_dir / "obstacles_2d.json");
   REQUIRE(obstacles.obstacles.size() == 3);
   CHECK(obstacles.obstacles[0].shape == ObstacleShape::Sphere);

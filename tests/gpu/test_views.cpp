@@ -85,7 +85,7 @@ float nearest_obstacle(const liquid::LiquidNode& node, glm::vec2 p) {
   const auto poses = node.obstacle_poses(node.time());
   float d = 1e30f;
   for (size_t i = 0; i < poses.size(); ++i)
-    d = std::min(d, liquid::obstacle_distance(node.scene().obstacles[i], poses[i].center, glm::vec3(p, 0.0f), 2));
+    d = std::min(d, liquid::obstacle_distance(node.scene().obstacles[i], poses[i], glm::vec3(p, 0.0f), 2));
   return d;
 }
 

@@ -160,6 +160,19 @@ def obstacle(args):
     check(inside <= 0.005 * moved["diagnostics"]["active_particles"], f"pushed, not tunnelled: {inside} particles inside obstacles")
 
 
+def body(args):
+    # A right drag on floating_box_2d pulls its dynamic box towards the cursor, held near the top of
+    # the window, by a force: it ends two cells (2 cm) or more above where it floats without the drag.
+    scene = os.path.join(args.scenes, "floating_box_2d.json")
+    common = [scene, "--frames", "120", "--steps-per-frame", "16", *SIZE, "--no-panel"]
+    base = run(args, "body_none", common)
+    pulled = run(args, "body", [*common, "--script", os.path.join(args.scripts, "body_2d.json")])
+    y0 = base["diagnostics"]["bodies"][0]["center"][1]
+    y1 = pulled["diagnostics"]["bodies"][0]["center"][1]
+    check(y1 > y0 + 0.02, f"the box was pulled up: it ends at y = {y1:.4f} m, {y0:.4f} m without the drag")
+    check(pulled["diagnostics"]["outside_domain"] == 0, "no particle left the domain")
+
+
 def hit3d(args):
     # 3D: a press over the dam's column lands on its surface (the block's front face, z = 0.5 m);
     # a press over empty space lands in the plane through the domain centre facing the camera.
@@ -415,7 +428,7 @@ def panel_wrap(args):
 
 def main():
     p = argparse.ArgumentParser()
-    p.add_argument("mode", choices=["drag", "obstacle", "hit3d", "shallow_water", "camera_reset", "resize", "golden",
+    p.add_argument("mode", choices=["drag", "obstacle", "body", "hit3d", "shallow_water", "camera_reset", "resize", "golden",
                                    "bad_reload", "no_panel", "paused_reset", "screenshots", "overlay", "panel_size",
                                    "panel_drag", "panel_wrap"])
     p.add_argument("--viewer", required=True)

@@ -66,11 +66,25 @@ struct FrameStats {
   std::map<std::string, double> pass_ms;  // summed over the frame's passes of that name
 };
 
+// Each dynamic obstacle's pose, velocity, force and torque in stats.csv (2D: per metre of depth):
+// the columns' names after "body<obstacle index>.", and their values.
+constexpr const char* k_body_columns[] = {"x_m",      "y_m",      "z_m",      "qw",     "qx",     "qy",    "qz",
+                                          "vx_m_s",   "vy_m_s",   "vz_m_s",   "wx_rad_s", "wy_rad_s", "wz_rad_s",
+                                          "fx_N",     "fy_N",     "fz_N",     "tx_N_m", "ty_N_m", "tz_N_m"};
+std::vector<float> body_columns(const liquid::BodyState& b) {
+  const glm::vec3 &x = b.pose.center, &v = b.pose.velocity, &w = b.pose.angular_velocity;
+  const glm::quat& q = b.pose.orientation;
+  return {x.x, x.y, x.z, q.w, q.x, q.y, q.z, v.x, v.y, v.z, w.x, w.y, w.z,
+          b.force.x, b.force.y, b.force.z, b.torque.x, b.torque.y, b.torque.z};
+}
+
 // stats.csv's header names the passes of the first written frame (every frame declares the same).
 std::string stats_header(const FrameStats& first) {
   std::string header =
       "frame,step,time_s,active_particles,outside_domain,inside_obstacles,non_finite,max_density_ratio,mass_kg,"
       "kinetic_energy_J,potential_energy_J,mechanical_energy_J,time_step_s,max_speed_m_s,wall_ms";
+  for (const liquid::BodyState& b : first.diagnostics.bodies)
+    for (const char* column : k_body_columns) header += ",body" + std::to_string(b.obstacle) + "." + column;
   for (const auto& [name, ms] : first.pass_ms) header += ",gpu_ms." + name;
   return header + "\n";
 }
@@ -83,6 +97,8 @@ std::string stats_row(const FrameStats& row, const std::string& header) {
       << d.inside_obstacles << ',' << d.non_finite << ',' << d.max_density_ratio << ',' << d.mass << ','
       << d.kinetic_energy << ',' << d.potential_energy << ',' << d.mechanical_energy << ',' << d.time_step << ','
       << d.max_speed << ',' << row.wall_ms;
+  for (const liquid::BodyState& b : d.bodies)
+    for (float value : body_columns(b)) out << ',' << value;
   std::istringstream columns(header);
   std::string column;
   while (std::getline(columns, column, ','))

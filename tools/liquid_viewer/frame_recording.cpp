@@ -6,6 +6,7 @@
 #include "engine/vk/vk_check.h"
 #include "liquid/solver/simulation.h"
 
+#include <cmath>
 #include <map>
 #include <stdexcept>
 
@@ -32,7 +33,18 @@ void Viewer::apply_mouse(int steps) {
   node.set_brushes(in.brushes);
   if (!in.brushes.empty()) last_brush_ = in.brushes.front().position;
   const std::vector<liquid::ObstaclePose> poses = node.obstacle_poses(node.time());
-  if (in.obstacle && in.obstacle->index < poses.size()) {
+  const auto dynamic = [&](size_t index) { return index < poses.size() && node.scene().obstacles[index].dynamic; };
+  if (in.obstacle && dynamic(in.obstacle->index)) {
+    // A dynamic body is pulled, not placed: a critically damped spring of k_drag_hz toward the
+    // cursor that also carries its weight, from its state as last read back (latest_bodies()).
+    constexpr float k_drag_hz = 2.0f;
+    const float omega = 2.0f * float(M_PI) * k_drag_hz;
+    for (const liquid::BodyState& b : node.latest_bodies())
+      if (size_t(b.obstacle) == in.obstacle->index)
+        node.set_body_force(in.obstacle->index, b.mass * (omega * omega * (in.obstacle->target - b.pose.center) -
+                                                          2.0f * omega * b.pose.velocity -
+                                                          node.runtime_parameters().gravity));
+  } else if (in.obstacle && in.obstacle->index < poses.size()) {
     const glm::vec3 center = poses[in.obstacle->index].center;
     glm::vec3 velocity(0.0f);
     if (frame_seconds > 0.0f) velocity = (in.obstacle->target - center) / frame_seconds;
@@ -41,7 +53,9 @@ void Viewer::apply_mouse(int steps) {
     if (glm::length(velocity) > cap) velocity *= cap / glm::length(velocity);
     node.set_obstacle_pose(in.obstacle->index, center, velocity);
   }
-  if (in.released_obstacle && *in.released_obstacle < poses.size())
+  if (in.released_obstacle && dynamic(*in.released_obstacle))
+    node.set_body_force(*in.released_obstacle, glm::vec3(0.0f));
+  else if (in.released_obstacle && *in.released_obstacle < poses.size())
     node.set_obstacle_pose(*in.released_obstacle, poses[*in.released_obstacle].center, glm::vec3(0.0f));
 }
 

@@ -137,6 +137,15 @@ PanelRequest draw_panel(Settings& s, MouseTools& mouse, liquid::LiquidNode& node
                        d.inside_obstacles);
     ImGui::TextWrapped("max rho/rho0 %.3f, max speed %.2f m/s", d.max_density_ratio, d.max_speed);
     ImGui::TextWrapped("kinetic %.4g J, mechanical %.4g J", d.kinetic_energy, d.mechanical_energy);
+    for (const liquid::BodyState& b : d.bodies) {  // dynamic obstacles (2D: per metre of depth)
+      const glm::vec3 &x = b.pose.center, &v = b.pose.velocity, &w = b.pose.angular_velocity;
+      const float angle = glm::degrees(glm::angle(b.pose.orientation));
+      ImGui::TextWrapped("body %d (%.3g kg): at (%.3f, %.3f, %.3f) m turned %.1f deg", b.obstacle, b.mass, x.x, x.y, x.z,
+                         angle);
+      ImGui::TextWrapped("  v (%.3f, %.3f, %.3f) m/s, w (%.2f, %.2f, %.2f) rad/s", v.x, v.y, v.z, w.x, w.y, w.z);
+      ImGui::TextWrapped("  liquid's force (%.3g, %.3g, %.3g) N, torque (%.3g, %.3g, %.3g) N m", b.force.x, b.force.y,
+                         b.force.z, b.torque.x, b.torque.y, b.torque.z);
+    }
   }
   if (ImGui::CollapsingHeader("GPU time per pass (ms)", ImGuiTreeNodeFlags_DefaultOpen) &&
       ImGui::BeginTable("passes", 2, ImGuiTableFlags_SizingStretchProp)) {

@@ -62,6 +62,12 @@ void Viewer::write_report(const std::filesystem::path& path) {
                         {"inside_obstacles", d.inside_obstacles}, {"non_finite", d.non_finite},
                         {"max_density_ratio", d.max_density_ratio}, {"kinetic_energy", d.kinetic_energy},
                         {"center_of_mass", vec(d.center_of_mass)}};
+    nlohmann::json bodies = nlohmann::json::array();
+    for (const liquid::BodyState& b : d.bodies)
+      bodies.push_back({{"obstacle", b.obstacle}, {"center", vec(b.pose.center)}, {"velocity", vec(b.pose.velocity)},
+                        {"angular_velocity", vec(b.pose.angular_velocity)}, {"force", vec(b.force)},
+                        {"torque", vec(b.torque)}});
+    r["diagnostics"]["bodies"] = bodies;
   } catch (const liquid::SimulationError& error) {
     r["simulation_error"] = error.what();
   }

@@ -107,8 +107,10 @@ float trace_obstacles(vec3 origin, vec3 dir, out int hit_index) {
         float s = -b - sqrt(disc);
         if (s > 0.0) t = s;
       }
-    } else if (kind == LIQUID_OBSTACLE_BOX) {
-      vec2 span = intersect_box(origin, 1.0 / dir, c - o.box_half_extent, c + o.box_half_extent);
+    } else if (kind == LIQUID_OBSTACLE_BOX) {  // in the box's own frame
+      vec4 q = obstacle_frame(i).orientation;
+      vec3 local_origin = quat_rotate_inverse(q, origin - c), local_dir = quat_rotate_inverse(q, dir);
+      vec2 span = intersect_box(local_origin, 1.0 / local_dir, -o.box_half_extent, o.box_half_extent);
       if (span.x <= span.y && span.x > 0.0) t = span.x;
     } else if (kind == LIQUID_OBSTACLE_METABALLS) {
       float reach = 0.0;

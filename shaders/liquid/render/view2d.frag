@@ -48,14 +48,9 @@ float tank_distance(vec2 q) {
   return min(min(left, right), bottom);
 }
 
-// Signed distance (m) to obstacle i in the plane. A box's half extent along z is 0 in a 2D scene,
-// which makes common.glsl's 3D box distance 0 everywhere inside; the 2D box distance avoids that.
-// A mesh's is its field's (MESH_FIELD=1, the scenes with meshes), sampled here in `meshes`.
-float obstacle_distance_2d(int i, vec2 p, MeshSample meshes) {
-  Obstacle o = u.obstacles[i];
-  if (obstacle_kind(i) == LIQUID_OBSTACLE_BOX) return sd_box(vec3(p - o.center.xy, 0.0), vec3(o.box_half_extent.xy, 1.0));
-  return obstacle_distance(i, vec3(p, 0.0), meshes);
-}
+// Signed distance (m) to obstacle i in the plane (a box: its rectangle, turned). A mesh's is its
+// field's (MESH_FIELD=1, the scenes with meshes), sampled here in `meshes`.
+float obstacle_distance_2d(int i, vec2 p, MeshSample meshes) { return obstacle_distance(i, vec3(p, 0.0), meshes); }
 
 // Obstacle i over the pixel at p: solid grey with a darker outline.
 void draw_obstacle(int i, vec2 p, MeshSample meshes, inout vec3 color, inout float alpha) {

@@ -8,7 +8,9 @@
 // (the chapter's printed formula drops x_p from both lines). Texels past the active count are
 // inactive (w = 0); texels in an emitter's range this step are spawned at its nozzle.
 #extension GL_GOOGLE_include_directive : require
+#define LIQUID_BODIES
 #include "liquid/common.glsl"
+#include "liquid/solver/grid_sample.glsl"
 
 layout(set = 0, binding = LIQUID_BINDING_PARTICLE_POSITIONS) uniform sampler2D u_positions;
 layout(set = 0, binding = LIQUID_BINDING_PARTICLE_VELOCITIES) uniform sampler2D u_velocities;
@@ -19,47 +21,9 @@ layout(location = 0) in vec2 v_uv;
 layout(location = 0) out vec4 out_position;
 layout(location = 1) out vec4 out_velocity;
 
-const float k_fluid_epsilon = 1e-6;
-
-// Trilinear (bilinear in 2D) interpolation between cell centres over the cells that hold liquid,
-// so empty cells (no splatted velocity) do not drag the particle. Returns u' and, optionally, u.
-void sample_grid(vec3 x, bool with_splatted, out vec3 u_new, out vec3 u_old) {
-  vec3 g = x / cell_size() - 0.5;
-  ivec3 base = ivec3(floor(g));
-  vec3 f = g - vec3(base);
-  u_new = vec3(0.0);
-  u_old = vec3(0.0);
-  float total = 0.0;
-#if DIM == 3
-  const int corners = 8;
-#else
-  const int corners = 4;
-  f.z = 0.0;
-  base.z = 0;
-#endif
-  for (int i = 0; i < corners; ++i) {
-    ivec3 o = ivec3(i & 1, (i >> 1) & 1, (i >> 2) & 1);
-    vec3 t = mix(1.0 - f, f, vec3(o));
-    float weight = t.x * t.y * t.z;
-    if (weight <= 0.0) continue;
-    vec4 cell = fetch_grid(u_velocity, base + o);
-    if (cell.a < 0.5) continue;  // no liquid in this cell
-    total += weight;
-    u_new += weight * cell.rgb;
-    if (with_splatted) {
-      vec4 s = fetch_grid(u_splat, base + o);
-      u_old += weight * s.rgb / max(s.a, k_fluid_epsilon);
-    }
-  }
-  if (total > 0.0) {
-    u_new /= total;
-    u_old /= total;
-  }
-}
-
 vec3 grid_velocity(vec3 x) {
   vec3 u_new, unused;
-  sample_grid(x, false, u_new, unused);
+  sample_grid(u_velocity, u_splat, x, false, u_new, unused);
   return u_new;
 }
 
@@ -94,14 +58,17 @@ void emit(int index, EmitterRange e) {
 }
 
 // Obstacle i: a particle at x inside it or within `skin` of it is moved back to that distance from
-// its surface (kept in [lo, hi]) and loses its velocity v into it, relative to the obstacle.
+// its surface (kept in [lo, hi]) and loses its velocity v into it, relative to the obstacle's
+// material there; a dynamic one's only to a tenth of `skin`, and keeps its velocity (main()).
 void push_out(int i, MeshSample meshes, float skin, vec3 lo, vec3 hi, inout vec3 x, inout vec3 v) {
   if (i >= obstacle_count()) return;
   float d = obstacle_distance(i, x, meshes);
-  if (d >= skin) return;
+  float reach = obstacle_dynamic(i) ? 0.1 * skin : skin;
+  if (d >= reach) return;
   vec3 normal = obstacle_normal(i, x, meshes);
-  x = clamp_to_bounds(x + (skin - d) * normal, lo, hi);
-  float into = dot(v - u.obstacles[i].velocity, normal);
+  x = clamp_to_bounds(x + (reach - d) * normal, lo, hi);
+  if (obstacle_dynamic(i)) return;
+  float into = dot(v - obstacle_velocity_at(i, x), normal);
   if (into < 0.0) v -= into * normal;
 }
 
@@ -131,7 +98,7 @@ void main() {
 
   // Section 5.1: PIC/FLIP blend.
   vec3 u_new, u_old;
-  sample_grid(x, true, u_new, u_old);
+  sample_grid(u_velocity, u_splat, x, true, u_new, u_old);
   v = pic * u_new + (1.0 - pic) * (v + u_new - u_old);
 
   // Section 5.2: RK2 (midpoint) through the updated grid, clamped inside the domain at each stage.
@@ -141,7 +108,12 @@ void main() {
   vec3 x_new = clamp_to_bounds(x + dt * grid_velocity(x_mid), lo, hi);
 
   // Obstacles: a particle that ended inside (or within half a cell of) an obstacle is moved back
-  // to its surface and loses its velocity into it, relative to the obstacle.
+  // to its surface and loses its velocity into it, relative to the obstacle's material there.
+  // A dynamic obstacle's particles are moved only, and only out of it (a twentieth of a cell
+  // beyond its surface, not half a cell, which would leave a gap the body's buoyancy counts): a
+  // velocity change here would be momentum the body's force does not count; the grid pass's
+  // no-inflow condition removes it on the next step, where the body exchange pass counts it
+  // (docs/physics.md, "Bodies that float").
   float skin = 0.5 * cell_size();
   [[unroll]] for (int pass = 0; pass < 2; ++pass) {
     MeshSample meshes = mesh_sample(x_new, true);

@@ -1,0 +1,76 @@
+#version 450
+// Body force pass: the liquid's pressure force and torque on one dynamic obstacle (the push
+// constant's), reduced on the raster pipeline: one point per grid cell, additively blended into the
+// obstacle's texel of two 1 x N targets (force, torque); cells where the force is zero are clipped.
+// The force is the reaction of the liquid's energy E = sum_c h^d C_c rho0 e(rho_c / rho0) to the
+// body's pose. The gradient of E in the particles is the liquid's pressure force, -grad(W^T P)
+// (potential.frag); the body enters E through its kernel coverage C (pressure.frag reads
+// rho_c = splat / C), and dE/dC = -h^d p with p = rho0 (r P - e) the equation of state's pressure,
+// so F = -sum_c h^d p_c dC_c/dX. Over a column of cells across a face grad C sums to the face's
+// area, and sum_c P_c grad C_c is the surface integral of Phi = W^T P, which still water holds
+// hydrostatic (grad Phi = g) whatever its single cells' P do (docs/physics.md, "Bodies that float").
+// The torque: rotating the body moves its coverage the same way about its centre.
+#extension GL_GOOGLE_include_directive : require
+#define LIQUID_BODIES
+#include "liquid/common.glsl"
+#include "liquid/solver/pressure.glsl"
+
+layout(set = 0, binding = LIQUID_BINDING_BODY_CELL_PRESSURE) uniform GRID_SAMPLER u_cell_pressure;
+
+layout(push_constant) uniform BodyForcePush {
+  int body;  // the obstacle
+} pc;
+
+layout(location = 0) flat out vec3 v_force;
+layout(location = 1) flat out vec3 v_torque;
+
+// Body `body`'s factor of the kernel coverage at p (body_coverage()'s, before its clamp).
+float coverage_factor(int body, vec3 p) {
+  float d = obstacle_distance(body, p) / cell_size();
+  return d >= 0.0 ? 1.0 - body_mass_beyond(d) : body_mass_beyond(-d);
+}
+
+// The equation of state's pressure p / rho0 = r P - e (m^2/s^2) from the Tait form's P (clamped at
+// zero below rest density, where the energy e is zero too): k gamma / (gamma + 1) (r^(gamma + 1) - 1).
+float state_pressure(float tait) {
+  if (tait <= 0.0) return 0.0;
+  float ratio_power = tait / u.stiffness + 1.0;  // r^gamma
+  float ratio = pow(ratio_power, 1.0 / u.gamma);
+  return u.stiffness * u.gamma / (u.gamma + 1.0) * (ratio_power * ratio - 1.0);
+}
+
+#if DIM == 3
+const float k_cell_power = 3.0;
+#else
+const float k_cell_power = 2.0;  // per metre of depth
+#endif
+
+void main() {
+  const ivec3 n = grid_cells();
+  const int index = gl_VertexIndex;
+  const ivec3 c = ivec3(index % n.x, (index / n.x) % n.y, index / (n.x * n.y));
+  gl_PointSize = 1.0;
+  gl_Position = vec4(2.0, 2.0, 0.0, 1.0);  // outside the target: clipped
+  v_force = vec3(0.0);
+  v_torque = vec3(0.0);
+  const float h = cell_size();
+  const vec3 x = cell_center(c);
+  // The coverage changes within r of the surface, and the differences reach a cell further.
+  if (abs(obstacle_distance(pc.body, x)) >= (u.kernel_radius + 1.0) * h) return;
+  // C is the walls' share times every body's factor; only this body's moves with it.
+  float others = 1.0;
+  [[unroll]] for (int i = 0; i < obstacle_count(); ++i)
+    if (obstacle_dynamic(i) && i != pc.body) others *= coverage_factor(i, x);
+  if (others * coverage_factor(pc.body, x) <= k_min_body_coverage) return;  // under the clamp C does not move
+  vec3 grad_coverage = vec3(0.0);
+  [[unroll]] for (int a = 0; a < DIM; ++a) {
+    vec3 e = vec3(0.0);
+    e[a] = h;
+    grad_coverage[a] = (coverage_factor(pc.body, x + e) - coverage_factor(pc.body, x - e)) / (2.0 * h);
+  }
+  if (dot(grad_coverage, grad_coverage) == 0.0) return;
+  const float p = state_pressure(fetch_grid(u_cell_pressure, c).r);
+  v_force = -u.rest_density * p * cell_coverage(c) * others * grad_coverage * pow(h, k_cell_power);
+  v_torque = cross(obstacle_offset(pc.body, x), v_force);
+  gl_Position = vec4(0.0, (float(pc.body) + 0.5) / float(obstacle_count()) * 2.0 - 1.0, 0.0, 1.0);
+}

@@ -1,0 +1,127 @@
+// The grid pass's update of one cell (section 4, grid.frag), with the no-inflow condition the body
+// exchange pass (body_exchange.vert) also applies. Include after common.glsl; SPLAT_ADJOINT as in
+// grid.frag.
+#ifndef LIQUID_GRID_UPDATE_GLSL
+#define LIQUID_GRID_UPDATE_GLSL
+#include "liquid/solver/pressure.glsl"
+
+#ifndef SPLAT_ADJOINT
+#define SPLAT_ADJOINT 0
+#endif
+
+layout(set = 0, binding = LIQUID_BINDING_GRID_SPLAT) uniform GRID_SAMPLER u_splat;
+#if SPLAT_ADJOINT
+layout(set = 0, binding = LIQUID_BINDING_GRID_POTENTIAL) uniform GRID_SAMPLER u_potential;
+#endif
+
+// The chapter's pressure at neighbour cell c (clamped into the grid, which makes the difference
+// one-sided at the walls: neighbour()) whose kernel share inside the domain is `coverage` and where
+// the meshes' distances are `meshes`: liquid plus obstacle or ground density. (Dynamic bodies need
+// the splat-adjoint pressure, whose P is pressure.frag's.)
+float pressure_at(ivec3 c, float coverage, vec4 meshes) {
+  float rho = u.density_scale * fetch_grid(u_splat, c).a / coverage;
+  rho += obstacle_density_at_cell(c, meshes);
+  if (shallow_water()) rho += u.rest_density * ground_height(cell_center(c).xy) / u.rest_depth;
+  return pressure_from_density(rho);
+}
+
+// The neighbour `offset` cells from c, clamped into the grid.
+ivec3 neighbour(ivec3 c, ivec3 offset) { return clamp(c + offset, ivec3(0), grid_cells() - 1); }
+
+#if SPLAT_ADJOINT
+// Phi at the neighbour `offset` (-1 or 1) cells from c along axis a; one cell beyond a wall, the
+// wall cell's (fetch_grid clamps to its mirror image) plus the hydrostatic rise, as potential.frag
+// gathers P. Only axis a can leave the grid, so only its part of the rise is taken.
+float potential_at(ivec3 c, int a, int offset) {
+  c[a] += offset;
+  return fetch_grid(u_potential, c).r + wall_ghost_rise_along(a, c[a]);
+}
+#endif
+
+// Obstacle i's condition on the velocity at cell centre p: inside a static obstacle the liquid moves
+// with it; inside a dynamic one and within a cell of any surface, no relative velocity into it (a
+// body's force has no viscous part, so its inside may not drag the liquid along either:
+// docs/physics.md, "Bodies that float"). The obstacle's velocity is its material's at p (v + w x r).
+vec3 obstacle_condition(int i, vec3 p, vec3 velocity, MeshSample meshes) {
+  float d = obstacle_distance(i, p, meshes);
+  if (d > cell_size()) return velocity;
+  vec3 v_obstacle = obstacle_velocity_at(i, p);
+  if (d < 0.0 && !obstacle_dynamic(i)) return v_obstacle;
+  vec3 normal = obstacle_normal(i, p, meshes);
+  float into = dot(velocity - v_obstacle, normal);
+  return into < 0.0 ? velocity - into * normal : velocity;
+}
+
+// u' of cell c whose splat is `splat`: the splatted velocity, accelerated by -grad P + g + f_ext
+// over dt, then no flow through the walls or into obstacles.
+vec3 grid_update(ivec3 c, vec4 splat) {
+  ivec3 n = grid_cells();
+  float h = cell_size();
+  float dt = u.dt;
+  bool fluid = splat.a > k_fluid_epsilon;
+  vec3 velocity = fluid ? splat.rgb / splat.a : vec3(0.0);
+
+#if SPLAT_ADJOINT
+  // Central differences of Phi, with the hydrostatic ghost cells beyond the walls.
+  vec3 grad_p = vec3(0.0);
+  [[unroll]] for (int a = 0; a < DIM; ++a) grad_p[a] = potential_at(c, a, 1) - potential_at(c, a, -1);
+  MeshSample meshes = mesh_sample_at_cell(c, true);
+#else
+  // Wall coverage is a product over the axes, so each neighbour's is the centre's with one factor
+  // swapped: 3 factors per axis instead of a full product per neighbour.
+  vec3 below = vec3(1.0), here = vec3(1.0), above = vec3(1.0);
+  [[unroll]] for (int a = 0; a < DIM; ++a) {
+    below[a] = axis_coverage(c[a] - 1, n[a]);
+    here[a] = axis_coverage(c[a], n[a]);
+    above[a] = axis_coverage(c[a] + 1, n[a]);
+  }
+
+  // The meshes' distances at the six neighbours, read once for their pressures and the cell's
+  // normal (obstacle_condition).
+  ivec3 x_above = neighbour(c, ivec3(1, 0, 0)), x_below = neighbour(c, ivec3(-1, 0, 0));
+  ivec3 y_above = neighbour(c, ivec3(0, 1, 0)), y_below = neighbour(c, ivec3(0, -1, 0));
+  ivec3 z_above = neighbour(c, ivec3(0, 0, 1)), z_below = neighbour(c, ivec3(0, 0, -1));
+  vec4 meshes_x_above = mesh_distances_at_cell(x_above), meshes_x_below = mesh_distances_at_cell(x_below);
+  vec4 meshes_y_above = mesh_distances_at_cell(y_above), meshes_y_below = mesh_distances_at_cell(y_below);
+  MeshSample meshes = mesh_sample_of(mesh_distances_at_cell(c));
+  meshes.gradient_x = meshes_x_above - meshes_x_below;
+  meshes.gradient_y = meshes_y_above - meshes_y_below;
+
+  // Eq. 3: central differences of the pressure.
+  vec3 grad_p;
+  grad_p.x = pressure_at(x_above, above.x * here.y * here.z, meshes_x_above) -
+             pressure_at(x_below, below.x * here.y * here.z, meshes_x_below);
+  grad_p.y = pressure_at(y_above, here.x * above.y * here.z, meshes_y_above) -
+             pressure_at(y_below, here.x * below.y * here.z, meshes_y_below);
+  grad_p.z = 0.0;
+#if DIM == 3
+  vec4 meshes_z_above = mesh_distances_at_cell(z_above), meshes_z_below = mesh_distances_at_cell(z_below);
+  meshes.gradient_z = meshes_z_above - meshes_z_below;
+  grad_p.z = pressure_at(z_above, here.x * here.y * above.z, meshes_z_above) -
+             pressure_at(z_below, here.x * here.y * below.z, meshes_z_below);
+#endif
+#endif
+  grad_p /= 2.0 * h;
+
+  vec3 p = cell_center(c);
+  vec3 acceleration = -grad_p + u.gravity + external_acceleration(p);
+  velocity += dt * acceleration;
+
+#define LIQUID_OBSTACLE_CONDITION(i) \
+  if (i < obstacle_count()) velocity = obstacle_condition(i, p, velocity, meshes);
+  FOR_EACH_OBSTACLE(LIQUID_OBSTACLE_CONDITION)
+#undef LIQUID_OBSTACLE_CONDITION
+
+  // Section 4's wall condition: in a cell next to a wall, the velocity component normal to that
+  // wall is zero.
+  if ((c.x == 0 && velocity.x < 0.0) || (c.x == n.x - 1 && velocity.x > 0.0)) velocity.x = 0.0;
+  if ((c.y == 0 && velocity.y < 0.0) || (c.y == n.y - 1 && velocity.y > 0.0)) velocity.y = 0.0;
+#if DIM == 3
+  if ((c.z == 0 && velocity.z < 0.0) || (c.z == n.z - 1 && velocity.z > 0.0)) velocity.z = 0.0;
+#else
+  velocity.z = 0.0;
+#endif
+  return velocity;
+}
+
+#endif
