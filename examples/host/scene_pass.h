@@ -7,6 +7,7 @@
 
 #include "host_mesh.h"
 #include "host_vulkan.h"
+#include "shaders/host_limits.h"
 
 #include "engine/vk/image.h"
 #include "engine/vk/pipeline.h"
@@ -18,7 +19,7 @@ class ScenePass {
   static constexpr VkFormat k_color_format = VK_FORMAT_R16G16B16A16_SFLOAT;  // linear HDR
   static constexpr VkFormat k_depth_format = VK_FORMAT_D32_SFLOAT;           // reversed Z
 
-  static constexpr size_t k_max_vertices = 256;                             // scene.vert's uniform array
+  static constexpr size_t k_max_vertices = HOST_MAX_VERTICES;               // scene.vert's uniform array
 
   // Uploads both meshes into the host's own buffers (at most k_max_vertices vertices in all).
   ScenePass(engine::vk::Context& context, const HostVulkan& vulkan, const HostMesh& floor, const HostMesh& paddle);

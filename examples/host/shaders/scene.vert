@@ -1,4 +1,6 @@
 #version 450
+#extension GL_GOOGLE_include_directive : require
+#include "host_limits.h"
 // The host's own geometry, its vertices pulled from a uniform buffer by the index each indexed draw
 // gives (host_mesh.h's layout: position, then normal with the material in w; 32 bytes a vertex),
 // each draw placed in the world by `model`.
@@ -7,9 +9,7 @@ layout(push_constant) uniform ScenePush {
   mat4 model;            // this draw's placement in the world
 } pc;
 
-// Must match ScenePass::k_max_vertices.
-const int k_max_vertices = 256;
-layout(set = 0, binding = 0) uniform HostVertices { vec4 position_normal[2 * k_max_vertices]; } vertices;
+layout(set = 0, binding = 0) uniform HostVertices { vec4 position_normal[2 * HOST_MAX_VERTICES]; } vertices;
 
 layout(location = 0) out vec3 v_normal;
 layout(location = 1) out vec3 v_world;
