@@ -2,11 +2,13 @@
 # The cost of mesh obstacles (liquid/solver/mesh_field.h) against a whole 3D step: the paper's 3D
 # scene (assets/scenes/paper_3d.json, ~90k particles after its first steps) at 64^3 and 96^3 with a
 # torus of 768 triangles (assets/scenes/meshes/torus.obj), and at 96^3 with one of 10,000, in its
-# pool. Each is run with the torus moving (voxelized every step) and standing still (voxelized
-# once), and the scene once without it: moving - still is the voxelization, still - none what
-# sampling the field costs the grid and particle passes. Prints liquid_run's median wall time per
-# step and GPU time per pass (the liquid.mesh_* passes are one voxelization; liquid.mesh_spread's
-# median is one of its passes, of which there are log2 of the band's reach: 2 at the default band).
+# pool. Each is run with the torus moving (its field made again every step: the reference field's
+# resample, liquid.mesh_resample) and standing still (made once), and the scene once without it:
+# moving - still is the per-step cost of a moving mesh, still - none what sampling the field costs
+# the grid and particle passes. Prints liquid_run's median wall time per step and GPU time per pass
+# (liquid.mesh_inside, _seed, _spread and _reference are the one voxelization of the mesh into its
+# reference field, in the first step, so their medians are single runs; liquid.mesh_spread's is one
+# of its passes, of which there are log2 of the band's reach: 2 at the default band).
 # Usage: tools/mesh_voxelization_cost.sh [BUILD_DIR] [STEPS]   (figures: docs/lavapipe-performance.md)
 set -euo pipefail
 build=${1:-build}

@@ -20,6 +20,8 @@ constexpr VkImageUsageFlags k_field_usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAG
                                             VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
 // The closest surface points (xyz, m) of the seed and spread passes.
 constexpr VkFormat k_nearest_format = VK_FORMAT_R32G32B32A32_SFLOAT;
+// A mesh's reference field: its signed distance alone.
+constexpr VkFormat k_reference_format = VK_FORMAT_R32_SFLOAT;
 // The inside pass's crossing counts: small whole numbers, exact in half floats.
 constexpr VkFormat k_inside_format = VK_FORMAT_R16G16B16A16_SFLOAT;
 // The seed pass's depth: a cell's distance to the closest triangle so far, over the band.
@@ -57,24 +59,72 @@ engine::vk::GraphicsPipelineDesc raster_pipeline(const GridLayout& layout, bool 
       .specialization = specialization};
 }
 
-// The spread passes (field = false) and the field pass, drawn over a mesh's box.
-engine::vk::GraphicsPipelineDesc spread_pipeline(const GridLayout& layout, bool field,
-                                                 const std::vector<int32_t>& specialization) {
+// The passes drawn over a mesh's box.
+enum class BoxKind {
+  Spread,     // a jump-flood step: closest points to closest points
+  Field,      // the last step and the signed distance, into the mesh's channel of the field
+  Reference,  // the same into the mesh's own reference field (3D)
+  Resample,   // the reference at a pose, into the mesh's channel of the field (3D)
+};
+
+engine::vk::GraphicsPipelineDesc box_pipeline(const GridLayout& layout, BoxKind kind,
+                                              const std::vector<int32_t>& specialization) {
   using namespace liquid_shaders;
   engine::vk::GraphicsPipelineDesc desc{
-      .name = field ? "liquid.mesh_field" : "liquid.mesh_spread",
       .vertex = grid_pass_shaders(layout).vertex,
       .geometry = grid_pass_shaders(layout).geometry,
-      .fragment = field ? layout.pick(mesh_field_frag_2d, mesh_field_frag_3d, mesh_field_frag_3d_atlas)
-                        : layout.pick(mesh_spread_frag_2d, mesh_spread_frag_3d, mesh_spread_frag_3d_atlas),
-      .color_formats = {field ? k_mesh_field_format : k_nearest_format},
-      .blend = {field ? engine::vk::BlendMode::Min : engine::vk::BlendMode::None},
-      .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
-                   {LIQUID_BINDING_MESH_NEAREST, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
+      .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages}},
       .push_constant_size = sizeof(gpu::MeshRasterPush),
       .specialization = specialization};
-  if (field) desc.bindings.push_back({LIQUID_BINDING_MESH_INSIDE, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
+  const auto sampled = [&desc](uint32_t binding) {
+    desc.bindings.push_back({binding, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
+  };
+  const auto three_d = [&layout](std::span<const uint32_t> layered, std::span<const uint32_t> atlas) {
+    return layout.atlas() ? atlas : layered;
+  };
+  switch (kind) {
+    case BoxKind::Spread:
+      desc.name = "liquid.mesh_spread";
+      desc.fragment = layout.pick(mesh_spread_frag_2d, mesh_spread_frag_3d, mesh_spread_frag_3d_atlas);
+      desc.color_formats = {k_nearest_format};
+      sampled(LIQUID_BINDING_MESH_NEAREST);
+      break;
+    case BoxKind::Field:
+      desc.name = "liquid.mesh_field";
+      desc.fragment = layout.pick(mesh_field_frag_2d, mesh_field_frag_3d, mesh_field_frag_3d_atlas);
+      desc.color_formats = {k_mesh_field_format};
+      desc.blend = {engine::vk::BlendMode::Min};
+      sampled(LIQUID_BINDING_MESH_NEAREST);
+      sampled(LIQUID_BINDING_MESH_INSIDE);
+      break;
+    case BoxKind::Reference:
+      desc.name = "liquid.mesh_reference";
+      desc.fragment = three_d(mesh_reference_frag_3d, mesh_reference_frag_3d_atlas);
+      desc.color_formats = {k_reference_format};
+      sampled(LIQUID_BINDING_MESH_NEAREST);
+      sampled(LIQUID_BINDING_MESH_INSIDE);
+      break;
+    case BoxKind::Resample:
+      desc.name = "liquid.mesh_resample";
+      desc.fragment = three_d(mesh_resample_frag_3d, mesh_resample_frag_3d_atlas);
+      desc.color_formats = {k_mesh_field_format};
+      desc.blend = {engine::vk::BlendMode::Min};
+      desc.push_constant_size = sizeof(gpu::MeshResamplePush);
+      sampled(LIQUID_BINDING_MESH_REFERENCE);
+      break;
+  }
   return desc;
+}
+
+// The bounds (in cells) of `mesh` placed by `placement`.
+std::pair<glm::vec3, glm::vec3> bounds_in_cells(const TriangleMesh& mesh, const glm::mat4& placement, float cell_size) {
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (const glm::vec3& v : mesh.vertices) {
+    const glm::vec3 p = glm::vec3(placement * glm::vec4(v, 1.0f)) / cell_size;
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  return {lo, hi};
 }
 
 // The largest z extent (m) of a triangle of `mesh` placed by `placement`.
@@ -98,6 +148,17 @@ engine::vk::ImageDesc depth_desc(const GridLayout& layout) {
   engine::vk::ImageDesc desc = layout.image_desc(k_seed_depth_format, 0);
   if (desc.kind == engine::vk::ImageKind::Image3D) desc.kind = engine::vk::ImageKind::Image2DArray;
   return desc;
+}
+
+// The jump flood's steps, halving down to 1, for a band of `band_cells`: with the field pass's 1
+// they reach 2 * first cells along each axis, which must be as far as a seed within
+// LIQUID_MESH_SEED_CELLS of the surface is from a cell at the band's edge, plus half a cell for the
+// seed's offset from the cell's foot.
+std::vector<int> jump_flood_steps(float band_cells) {
+  const int reach = int(std::ceil(band_cells - gpu::k_mesh_seed_cells + 0.5f));
+  std::vector<int> steps{1};
+  while (2 * steps.front() < reach) steps.insert(steps.begin(), 2 * steps.front());
+  return steps;
 }
 
 }  // namespace
@@ -148,9 +209,10 @@ MeshField::MeshField(engine::vk::Context& context, const Scene& scene, const Sim
       band_(setup.obstacle_band + gpu::k_mesh_field_margin_cells * setup.cell_size),
       inside_(context, raster_pipeline(layout, false, specialization)),
       seed_(context, raster_pipeline(layout, true, specialization)),
-      spread_(context, spread_pipeline(layout, false, specialization)),
-      field_pipeline_(context, spread_pipeline(layout, true, specialization)),
+      spread_(context, box_pipeline(layout, BoxKind::Spread, specialization)),
+      field_pipeline_(context, box_pipeline(layout, BoxKind::Field, specialization)),
       nearest_(context, VK_FILTER_NEAREST),
+      linear_(context, VK_FILTER_LINEAR),
       field_(context, layout.image_desc(k_mesh_field_format, k_field_usage), "liquid.mesh_field"),
       inside_counts_(context,
                      layout.image_desc(k_inside_format, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT),
@@ -163,8 +225,21 @@ MeshField::MeshField(engine::vk::Context& context, const Scene& scene, const Sim
   for (size_t i = 0; i < scene.obstacles.size(); ++i) {
     const Obstacle& o = scene.obstacles[i];
     if (o.shape != ObstacleShape::Mesh) continue;
-    meshes_.push_back({i, mesh_triangle_texture(context, o.mesh, "liquid.mesh_triangles" + std::to_string(meshes_.size())),
-                       uint32_t(o.mesh.indices.size() / 3)});
+    const std::string index = std::to_string(meshes_.size());
+    meshes_.push_back({i, mesh_triangle_texture(context, o.mesh, "liquid.mesh_triangles" + index),
+                       uint32_t(o.mesh.indices.size() / 3), std::nullopt});
+    // A reference field where the mesh fits in the grid at its first scale.
+    if (layout.dimension == 3 && reference_placement(o.mesh, mesh_to_world(o.mesh, o.center)))
+      meshes_.back().reference = Reference{
+          engine::vk::Image(context,
+                            layout.image_desc(k_reference_format,
+                                              VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT),
+                            "liquid.mesh_reference" + index),
+          {}, std::nullopt, glm::mat4(1.0f)};
+  }
+  if (std::any_of(meshes_.begin(), meshes_.end(), [](const Mesh& m) { return m.reference.has_value(); })) {
+    reference_pipeline_.emplace(context, box_pipeline(layout, BoxKind::Reference, specialization));
+    resample_pipeline_.emplace(context, box_pipeline(layout, BoxKind::Resample, specialization));
   }
 }
 
@@ -177,9 +252,52 @@ std::vector<glm::vec4> MeshField::read(engine::vk::Context& context) {
 
 ImageHandle MeshField::import(engine::graph::RenderGraph& graph) {
   triangle_handles_.clear();
-  for (Mesh& m : meshes_) triangle_handles_.push_back(graph.import_image(m.triangles.name(), m.triangles));
+  for (Mesh& m : meshes_) {
+    triangle_handles_.push_back(graph.import_image(m.triangles.name(), m.triangles));
+    if (m.reference) m.reference->handle = graph.import_image(m.reference->field.name(), m.reference->field);
+  }
   inside_handle_ = graph.import_image(inside_counts_.name(), inside_counts_);
   return graph.import_image(field_.name(), field_);
+}
+
+void MeshField::invalidate() {
+  voxelized_.reset();
+  written_.insert(written_.end(), unconfirmed_.begin(), unconfirmed_.end());
+  for (Mesh& m : meshes_)
+    if (m.reference) m.reference->scale.reset();  // its voxelization may not have run either
+}
+
+std::optional<glm::mat4> MeshField::reference_placement(const TriangleMesh& mesh, const glm::mat4& placement) const {
+  const auto [lo, hi] = bounds_in_cells(mesh, placement, cell_size_);
+  // Whole cells, so that where the pose is the reference's moved by whole cells the resample reads
+  // the reference's texels exactly.
+  const glm::vec3 shift = glm::round(glm::vec3(layout_.cells) * 0.5f - 0.5f * (lo + hi));
+  // The box of the reference's band and one cell more: the reference's edge cells hold its band,
+  // which the resample's clamp to the grid's edge then reads past it.
+  const float reach = reference_band() / cell_size_ + 1.0f;
+  if (glm::any(glm::lessThan(lo + shift - reach, glm::vec3(0.0f))) ||
+      glm::any(glm::greaterThan(hi + shift + reach, glm::vec3(layout_.cells))))
+    return std::nullopt;
+  return glm::translate(glm::mat4(1.0f), shift * cell_size_) * placement;
+}
+
+gpu::MeshRasterPush MeshField::raster_push(const TriangleMesh& mesh, const glm::mat4& placement, int slot,
+                                           float band) const {
+  const float band_cells = band / cell_size_;
+  const auto [lo, hi] = bounds_in_cells(mesh, placement, cell_size_);
+  gpu::MeshRasterPush push{};
+  push.local_to_world = placement;
+  push.slot = slot;
+  push.band = band;
+  const glm::ivec3 cells = layout_.cells;
+  push.box_min = glm::ivec4(glm::clamp(glm::ivec3(glm::floor(lo - band_cells)), glm::ivec3(0), cells), 0);
+  push.box_max = glm::ivec4(glm::clamp(glm::ivec3(glm::ceil(hi + band_cells)), glm::ivec3(0), cells), 0);
+  if (layout_.dimension == 2) {  // the cells at z = 0: the mesh's cross-section, if it has one there
+    const bool crosses = lo.z - band_cells < 0.0f && hi.z + band_cells > 0.0f;
+    push.box_min.z = 0;
+    push.box_max.z = crosses ? 1 : 0;
+  }
+  return push;
 }
 
 ImageHandle MeshField::update(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
@@ -191,101 +309,139 @@ ImageHandle MeshField::update(engine::graph::RenderGraph& graph, const engine::v
   voxelized_ = placements;
   ++voxelizations_;
 
-  // Per mesh: the push constants (its box: the cells within the band of its bounds) and the
-  // instances of the inside and seed passes (the most slices one triangle reaches in each).
-  const float band_cells = band_ / cell_size_;
-  std::vector<gpu::MeshRasterPush> pushes;
-  std::vector<uint32_t> inside_instances, seed_instances;
+  // Per mesh, how this field is made: from its triangles (into its reference, when it has none of
+  // its scale yet, or into the field at the pose when it has no reference), and from its reference.
+  struct Voxelization {
+    size_t mesh;
+    gpu::MeshRasterPush push;  // at the placement voxelized
+    bool into_reference;
+    uint32_t inside_instances = 1, seed_instances = 1;
+  };
+  std::vector<Voxelization> voxelizations;
+  std::vector<bool> resampled(meshes_.size(), false);
   for (size_t k = 0; k < meshes_.size(); ++k) {
     const TriangleMesh& mesh = obstacles[meshes_[k].obstacle].mesh;
-    glm::vec3 lo(INFINITY), hi(-INFINITY);
-    for (const glm::vec3& v : mesh.vertices) {
-      const glm::vec3 p = glm::vec3(placements[k] * glm::vec4(v, 1.0f)) / cell_size_;
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
+    std::optional<Reference>& reference = meshes_[k].reference;
+    std::optional<glm::mat4> at;
+    if (reference && reference->scale != mesh.scale) {
+      at = reference_placement(mesh, placements[k]);
+      reference->scale.reset();
+      if (at) {
+        reference->scale = mesh.scale;
+        reference->placement = *at;
+      }
     }
-    gpu::MeshRasterPush push{};
-    push.local_to_world = placements[k];
-    push.slot = int(k);
-    push.band = band_;
-    const glm::ivec3 cells = layout_.cells;
-    push.box_min = glm::ivec4(glm::clamp(glm::ivec3(glm::floor(lo - band_cells)), glm::ivec3(0), cells), 0);
-    push.box_max = glm::ivec4(glm::clamp(glm::ivec3(glm::ceil(hi + band_cells)), glm::ivec3(0), cells), 0);
-    if (layout_.dimension == 2) {  // the cells at z = 0: the mesh's cross-section, if it has one there
-      const bool crosses = lo.z - band_cells < 0.0f && hi.z + band_cells > 0.0f;
-      push.box_min.z = 0;
-      push.box_max.z = crosses ? 1 : 0;
-    }
-    pushes.push_back(push);
+    resampled[k] = reference && reference->scale;
+    if (resampled[k] && !at) continue;  // its reference holds it
+    const glm::mat4 placement = at ? *at : placements[k];
+    Voxelization v{k, raster_push(mesh, placement, int(k), at ? reference_band() : band_), at.has_value()};
     // The tallest triangle (cells): the inside pass's slices per triangle are at most its
     // height rounded up, plus one; the seed pass's the whole number of slice centres within its
     // height plus the seed band on either side (a thousandth for the GPU's rounding).
-    const float tallest = tallest_triangle(mesh, placements[k]) / cell_size_;
-    inside_instances.push_back(layout_.dimension == 3 ? uint32_t(std::ceil(tallest)) + 1 : 1u);
-    seed_instances.push_back(
-        layout_.dimension == 3 ? uint32_t(std::floor(tallest + 2.0f * gpu::k_mesh_seed_cells + 1e-3f)) + 1 : 1u);
+    if (layout_.dimension == 3) {
+      const float tallest = tallest_triangle(mesh, placement) / cell_size_;
+      v.inside_instances = uint32_t(std::ceil(tallest)) + 1;
+      v.seed_instances = uint32_t(std::floor(tallest + 2.0f * gpu::k_mesh_seed_cells + 1e-3f)) + 1;
+    }
+    voxelizations.push_back(v);
   }
+  if (!voxelizations.empty()) ++triangle_voxelizations_;
 
-  // The field holds distances only in the boxes of the last voxelization (or of the ones before,
-  // if its graph did not run): those are reset to the band before the new boxes are drawn.
+  // The boxes at the poses. The field holds distances only in the boxes of the last update (or of
+  // the ones before, if its graph did not run): those are reset to the band by the first pass into it.
   std::vector<MeshBox> boxes;
-  for (const gpu::MeshRasterPush& push : pushes) boxes.push_back(box_of(push));
+  for (size_t k = 0; k < meshes_.size(); ++k)
+    boxes.push_back(box_of(raster_push(obstacles[meshes_[k].obstacle].mesh, placements[k], int(k), band_)));
   std::vector<MeshBox> reset = written_;
   reset.insert(reset.end(), boxes.begin(), boxes.end());
   unconfirmed_ = std::exchange(written_, boxes);
-
-  // The jump flood's steps, halving down to 1: with the field pass's 1 they reach 2 * first cells
-  // along each axis, which must be as far as a seed within LIQUID_MESH_SEED_CELLS of the surface
-  // is from a cell at the band's edge, plus half a cell for the seed's offset from the cell's foot.
-  const int reach = int(std::ceil(band_cells - gpu::k_mesh_seed_cells + 0.5f));
-  std::vector<int> spread_steps{1};
-  while (2 * spread_steps.front() < reach) spread_steps.insert(spread_steps.begin(), 2 * spread_steps.front());
+  const auto reset_once = [&reset]() { return std::exchange(reset, {}); };
 
   const engine::vk::ImageDesc nearest_desc = layout_.image_desc(k_nearest_format, 0);
-  const ImageHandle inside = add_inside_pass(graph, uniforms, graph.latest(inside_handle_), pushes, inside_instances);
+  ImageHandle inside;
+  if (!voxelizations.empty()) {
+    std::vector<size_t> meshes;
+    std::vector<gpu::MeshRasterPush> pushes;
+    std::vector<uint32_t> instances;
+    for (const Voxelization& v : voxelizations) {
+      meshes.push_back(v.mesh);
+      pushes.push_back(v.push);
+      instances.push_back(v.inside_instances);
+    }
+    inside = add_inside_pass(graph, uniforms, graph.latest(inside_handle_), meshes, pushes, instances);
+  }
   ImageHandle nearest = graph.create_image("liquid.mesh_nearest", nearest_desc);
   ImageHandle spread = graph.create_image("liquid.mesh_spread", nearest_desc);
   ImageHandle depth = graph.create_image("liquid.mesh_seed_depth", depth_desc(layout_));
-  for (size_t k = 0; k < meshes_.size(); ++k) {
-    nearest = add_seed_pass(graph, uniforms, k, nearest, depth, pushes[k], seed_instances[k]);
-    for (int step : spread_steps) {
-      pushes[k].step = step;
-      spread = add_box_pass(graph, uniforms, {"liquid.mesh_spread", &spread_, Access::ColorAttachmentWrite}, nearest,
-                            ImageHandle{}, spread, pushes[k]);
+  for (Voxelization& v : voxelizations) {
+    nearest = add_seed_pass(graph, uniforms, v.mesh, nearest, depth, v.push, v.seed_instances);
+    for (int step : jump_flood_steps(v.push.band / cell_size_)) {
+      v.push.step = step;
+      spread = add_box_pass(graph, uniforms, {"liquid.mesh_spread", &spread_, Access::ColorAttachmentWrite, {},
+                                              {{LIQUID_BINDING_MESH_NEAREST, nearest}}, &nearest_},
+                            spread, box_of(v.push), std::as_bytes(std::span(&v.push, 1)));
       std::swap(nearest, spread);
     }
-    pushes[k].step = 1;
-    const BoxPass pass{"liquid.mesh_field", &field_pipeline_, Access::ColorAttachmentBlend};
-    field = add_box_pass(graph, uniforms, pass, nearest, inside, field, pushes[k], k == 0 ? reset : std::vector<MeshBox>{});
+    v.push.step = 1;
+    const std::vector<std::pair<uint32_t, ImageHandle>> inputs{{LIQUID_BINDING_MESH_NEAREST, nearest},
+                                                               {LIQUID_BINDING_MESH_INSIDE, inside}};
+    if (v.into_reference) {
+      // The whole reference cleared to the band (it is redone only when the mesh's scale changes).
+      Reference& reference = *meshes_[v.mesh].reference;
+      const BoxPass pass{"liquid.mesh_reference", &*reference_pipeline_, Access::ColorAttachmentWrite,
+                         engine::graph::clear_to(reference_band(), 0.0f, 0.0f, 0.0f), inputs, &nearest_};
+      reference.handle = add_box_pass(graph, uniforms, pass, graph.latest(reference.handle), box_of(v.push),
+                                      std::as_bytes(std::span(&v.push, 1)));
+    } else {
+      const BoxPass pass{"liquid.mesh_field", &field_pipeline_, Access::ColorAttachmentBlend,
+                         {engine::graph::LoadOp::Load, {}}, inputs, &nearest_};
+      field = add_box_pass(graph, uniforms, pass, field, box_of(v.push), std::as_bytes(std::span(&v.push, 1)),
+                           reset_once());
+    }
+  }
+  for (size_t k = 0; k < meshes_.size(); ++k) {
+    if (!resampled[k]) continue;
+    Reference& reference = *meshes_[k].reference;
+    gpu::MeshResamplePush push{};
+    // In double precision, so that a pose moved by whole cells from the reference maps cell
+    // centres onto cell centres.
+    push.reference_from_world = glm::mat4(glm::dmat4(reference.placement) * glm::inverse(glm::dmat4(placements[k])));
+    push.slot = int(k);
+    push.band = band_;
+    const BoxPass pass{"liquid.mesh_resample", &*resample_pipeline_, Access::ColorAttachmentBlend,
+                       {engine::graph::LoadOp::Load, {}}, {{LIQUID_BINDING_MESH_REFERENCE, graph.latest(reference.handle)}},
+                       &linear_};
+    field = add_box_pass(graph, uniforms, pass, field, boxes[k], std::as_bytes(std::span(&push, 1)), reset_once());
   }
   return field;
 }
 
 ImageHandle MeshField::add_inside_pass(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                                       ImageHandle target, const std::vector<gpu::MeshRasterPush>& pushes,
+                                       ImageHandle target, const std::vector<size_t>& meshes,
+                                       const std::vector<gpu::MeshRasterPush>& pushes,
                                        const std::vector<uint32_t>& instances) const {
   struct Data {
-    std::vector<engine::passes::PassBindings> bindings;  // one per mesh (its triangles)
+    std::vector<engine::passes::PassBindings> bindings;  // one per mesh counted (its triangles)
     ImageHandle target;
   };
   return graph
       .add_pass<Data>(
           "liquid.mesh_inside",
           [&](PassBuilder& b, Data& d) {
-            for (ImageHandle triangles : triangle_handles_) {
+            for (size_t mesh : meshes) {
               d.bindings.emplace_back(inside_);
               d.bindings.back().bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
-              d.bindings.back().bind_image(b, LIQUID_BINDING_MESH_TRIANGLES, triangles, nearest_.handle());
+              d.bindings.back().bind_image(b, LIQUID_BINDING_MESH_TRIANGLES, triangle_handles_[mesh], nearest_.handle());
             }
             d.target = b.write(target, Access::ColorAttachmentBlend, {engine::graph::LoadOp::Load, {}});
           },
-          [this, pushes, instances](PassContext& ctx, const Data& d) {
+          [this, meshes, pushes, instances](PassContext& ctx, const Data& d) {
             // Only the meshes' boxes are counted in and read: zeroed, all before any mesh adds.
             for (const gpu::MeshRasterPush& push : pushes) clear_box(ctx.cmd, box_of(push), VkClearValue{});
-            for (size_t k = 0; k < meshes_.size(); ++k) {
-              d.bindings[k].bind_and_push(ctx);
-              inside_.push_constants(ctx.cmd, pushes[k]);
-              vkCmdDraw(ctx.cmd, 3 * meshes_[k].triangle_count, instances[k], 0, 0);
+            for (size_t i = 0; i < meshes.size(); ++i) {
+              d.bindings[i].bind_and_push(ctx);
+              inside_.push_constants(ctx.cmd, pushes[i]);
+              vkCmdDraw(ctx.cmd, 3 * meshes_[meshes[i]].triangle_count, instances[i], 0, 0);
             }
           })
       .target;
@@ -325,8 +481,8 @@ ImageHandle MeshField::add_seed_pass(engine::graph::RenderGraph& graph, const en
 }
 
 ImageHandle MeshField::add_box_pass(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                                    const BoxPass& pass, ImageHandle nearest, ImageHandle inside, ImageHandle target,
-                                    const gpu::MeshRasterPush& push, const std::vector<MeshBox>& reset) const {
+                                    const BoxPass& pass, ImageHandle target, const MeshBox& box,
+                                    std::span<const std::byte> push, const std::vector<MeshBox>& reset) const {
   struct Data {
     engine::passes::PassBindings bindings;
     ImageHandle target;
@@ -337,20 +493,19 @@ ImageHandle MeshField::add_box_pass(engine::graph::RenderGraph& graph, const eng
           [&](PassBuilder& b, Data& d) {
             d.bindings = engine::passes::PassBindings(*pass.pipeline);
             d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
-            d.bindings.bind_image(b, LIQUID_BINDING_MESH_NEAREST, nearest, nearest_.handle());
-            if (inside.valid()) d.bindings.bind_image(b, LIQUID_BINDING_MESH_INSIDE, inside, nearest_.handle());
-            const bool loaded = pass.access == Access::ColorAttachmentBlend;
-            d.target = b.write(target, pass.access, {loaded ? engine::graph::LoadOp::Load : engine::graph::LoadOp::DontCare, {}});
+            for (const auto& [binding, image] : pass.inputs) d.bindings.bind_image(b, binding, image, pass.sampler->handle());
+            d.target = b.write(target, pass.access, pass.target_options);
           },
-          [this, pass, push, reset](PassContext& ctx, const Data& d) {
+          [this, pipeline = pass.pipeline, box, push = std::vector<std::byte>(push.begin(), push.end()),
+           reset](PassContext& ctx, const Data& d) {
             VkClearValue band{};
             band.color = {{band_, band_, band_, band_}};
-            for (const MeshBox& box : reset) clear_box(ctx.cmd, box, band);
+            for (const MeshBox& b : reset) clear_box(ctx.cmd, b, band);
             d.bindings.bind_and_push(ctx);
-            pass.pipeline->push_constants(ctx.cmd, push);
+            pipeline->push_constants(ctx.cmd, push.data(), uint32_t(push.size()));
             // The full-screen triangle, cut to the box by the scissor: once per slice of it on the
             // layered paths (the instance is the slice), once per tile in the atlas.
-            for (const VkClearRect& rect : mesh_box_rects(layout_, box_of(push))) {
+            for (const VkClearRect& rect : mesh_box_rects(layout_, box)) {
               vkCmdSetScissor(ctx.cmd, 0, 1, &rect.rect);
               vkCmdDraw(ctx.cmd, 3, rect.layerCount, 0, rect.baseArrayLayer);
             }

@@ -20,9 +20,18 @@
 // a cell over the exact one where the closest surface point lies between them
 // (docs/lavapipe-performance.md, "Mesh obstacles"). Graphics pipeline only; every 3D path (layered
 // by the vertex or geometry shader, or the atlas's tiles). In 2D the grid's cells lie at z = 0: the
-// mesh's cross-section. The seed, spread and field passes run once per mesh. Shaders:
+// mesh's cross-section. The seed, spread and field passes run once per mesh.
+// In 3D a mesh whose box fits in the grid (a cell to spare) with the mesh placed at the grid's
+// centre is voxelized so once, into its own reference field (R32F, grid-sized) at that reference
+// placement, and again only when its scale changes; at each pose,
+//   liquid.mesh_resample  over the mesh's box: the reference read trilinearly where the same point
+//                         of the mesh lies in the reference placement (mesh_resample.frag),
+//                         MIN-blended into the mesh's channel.
+// Moving and turning keep distances, so this is the field of the pose up to the interpolation
+// between the reference's cells (exact where the pose is the reference's shifted by whole cells).
+// A mesh too large for that is voxelized at every pose as above. Shaders:
 // shaders/liquid/solver/mesh_raster.vert, mesh_raster.geom, mesh_inside.frag, mesh_seed.frag,
-// mesh_spread.frag.
+// mesh_spread.frag, mesh_resample.frag.
 #pragma once
 
 #include "engine/passes/bindings.h"
@@ -40,6 +49,8 @@
 #include <glm/glm.hpp>
 
 #include <optional>
+#include <span>
+#include <utility>
 #include <vector>
 
 namespace liquid {
@@ -83,44 +94,66 @@ class MeshField {
   ImageHandle update(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
                      const std::vector<Obstacle>& obstacles, const std::vector<ObstaclePose>& poses, ImageHandle field);
   // Forgets the last voxelization, so the next update() redoes it (its graph was not executed: the
-  // field still holds the boxes before it).
-  void invalidate() {
-    voxelized_.reset();
-    written_.insert(written_.end(), unconfirmed_.begin(), unconfirmed_.end());
-  }
+  // field still holds the boxes before it, and the references what they held, or nothing).
+  void invalidate();
   // The field downloaded, cell (x, y, z) at x + nx (y + ny z), one channel per mesh (blocking: no
   // frame of the node in flight).
   std::vector<glm::vec4> read(engine::vk::Context& context);
-  // How many voxelizations update() has declared (tests and tools).
+  // How many new fields update() has declared, and of those how many voxelized a mesh's triangles
+  // (its reference, or its field at the pose) rather than resampling every mesh (tests and tools).
   int voxelizations() const { return voxelizations_; }
+  int triangle_voxelizations() const { return triangle_voxelizations_; }
+  // Whether mesh `mesh` (in scene order among the meshes) has a reference field, resampled at each pose.
+  bool resampled(size_t mesh) const { return meshes_.at(mesh).reference.has_value(); }
   float band() const { return band_; }
 
  private:
+  // A mesh's reference field: its signed distance at one placement, resampled at each pose.
+  struct Reference {
+    engine::vk::Image field;     // R32F, the grid's layout; the band outside the mesh's box
+    ImageHandle handle;          // its latest version in the graph being declared
+    std::optional<float> scale;  // the mesh's scale the field holds (none: nothing yet)
+    glm::mat4 placement{1.0f};   // the reference placement
+  };
   struct Mesh {
     size_t obstacle = 0;          // index in the scene's obstacles
     engine::vk::Image triangles;  // RGBA32F, 3 texels per triangle (the mesh's frame)
     uint32_t triangle_count = 0;
+    std::optional<Reference> reference;  // 3D only
   };
-  // A pass drawn over a mesh's box: a spread pass or the field pass.
+  // Where mesh `mesh` placed by `placement` would be voxelized into its reference field: the
+  // placement moved by whole cells to the grid's centre, or none if its box does not fit.
+  std::optional<glm::mat4> reference_placement(const TriangleMesh& mesh, const glm::mat4& placement) const;
+  // The push constants of a voxelization of `mesh` at `placement` into slot `slot`, with `band`:
+  // its box (the cells within the band of its bounds, clamped to the grid).
+  gpu::MeshRasterPush raster_push(const TriangleMesh& mesh, const glm::mat4& placement, int slot, float band) const;
+  // A reference's band: a cell past the field's, so that the resample's interpolation next to the
+  // field's band reads distances, not the clamp, before it clamps them.
+  float reference_band() const { return band_ + cell_size_; }
+  // A pass drawn over a mesh's box: a spread pass, the field pass (into the field or a reference)
+  // or the resample pass.
   struct BoxPass {
     const char* name;
     const engine::vk::GraphicsPipeline* pipeline;
     Access access;  // of its target: written, or MIN-blended (the field)
+    engine::graph::AttachmentOptions target_options;  // loaded where blended, cleared for a reference
+    std::vector<std::pair<uint32_t, ImageHandle>> inputs;  // binding, image (sampled)
+    const engine::vk::Sampler* sampler;
   };
   static MeshBox box_of(const gpu::MeshRasterPush& push) { return {glm::ivec3(push.box_min), glm::ivec3(push.box_max)}; }
-  // Every mesh's triangles counted into `target`, cleared first.
+  // The triangles of meshes `meshes` (at `pushes`' placements) counted into `target`, cleared first.
   ImageHandle add_inside_pass(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                              ImageHandle target, const std::vector<gpu::MeshRasterPush>& pushes,
-                              const std::vector<uint32_t>& instances) const;
+                              ImageHandle target, const std::vector<size_t>& meshes,
+                              const std::vector<gpu::MeshRasterPush>& pushes, const std::vector<uint32_t>& instances) const;
   // Mesh `mesh`'s closest points within a cell of it into `nearest`, with `depth` (both cleared in its box).
   ImageHandle add_seed_pass(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, size_t mesh,
                             ImageHandle nearest, ImageHandle& depth, const gpu::MeshRasterPush& push,
                             uint32_t instances) const;
-  // `pass` over the box of `push`, reading `nearest` (and the field pass `inside`) into `target`;
-  // the boxes `reset` cleared to the band first (the field pass).
+  // `pass` over `box` with push constants `push` into `target`; the boxes `reset` cleared to the
+  // band first (the first pass into the field).
   ImageHandle add_box_pass(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                           const BoxPass& pass, ImageHandle nearest, ImageHandle inside, ImageHandle target,
-                           const gpu::MeshRasterPush& push, const std::vector<MeshBox>& reset = {}) const;
+                           const BoxPass& pass, ImageHandle target, const MeshBox& box, std::span<const std::byte> push,
+                           const std::vector<MeshBox>& reset = {}) const;
   // vkCmdClearAttachments of the pass's attachment 0 (or its depth) over `box`.
   void clear_box(VkCommandBuffer cmd, const MeshBox& box, VkClearValue value,
                  VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT) const;
@@ -131,7 +164,8 @@ class MeshField {
   std::vector<Mesh> meshes_;
   std::vector<ImageHandle> triangle_handles_;  // the last import()'s
   engine::vk::GraphicsPipeline inside_, seed_, spread_, field_pipeline_;
-  engine::vk::Sampler nearest_;
+  std::optional<engine::vk::GraphicsPipeline> reference_pipeline_, resample_pipeline_;  // 3D
+  engine::vk::Sampler nearest_, linear_;
   engine::vk::Image field_;
   engine::vk::Image inside_counts_;  // the inside pass's target: valid in the boxes it last counted
   ImageHandle inside_handle_;        // the last import()'s
@@ -139,6 +173,7 @@ class MeshField {
   std::vector<MeshBox> unconfirmed_;  // written_ before the last update(), until its graph runs
   std::optional<std::vector<glm::mat4>> voxelized_;  // the placements of the field's contents
   int voxelizations_ = 0;
+  int triangle_voxelizations_ = 0;
 };
 
 }  // namespace liquid

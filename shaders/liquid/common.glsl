@@ -238,18 +238,21 @@ int mesh_slot(int index) {
          mesh_before(index, 6, OBSTACLE_KIND_6);
 }
 
-#if MESH_FIELD
-// Trilinear between cell centres (bilinear in 2D).
-vec4 mesh_field_at(vec3 p) {
+// A grid image with linear filtering at point p (m): trilinear between cell centres (bilinear in
+// 2D), clamped to the grid's edge.
+vec4 sample_grid_linear(GRID_SAMPLER s, vec3 p) {
   vec3 uvw = p / (vec3(grid_cells()) * cell_size());
 #if DIM == 2
-  return textureLod(u_mesh_field, uvw.xy, 0.0);
+  return textureLod(s, uvw.xy, 0.0);
 #elif ATLAS
-  return atlas_sample_linear(u_mesh_field, uvw, grid_cells(), atlas_tiles());
+  return atlas_sample_linear(s, uvw, grid_cells(), atlas_tiles());
 #else
-  return textureLod(u_mesh_field, uvw, 0.0);
+  return textureLod(s, uvw, 0.0);
 #endif
 }
+
+#if MESH_FIELD
+vec4 mesh_field_at(vec3 p) { return sample_grid_linear(u_mesh_field, p); }
 #endif
 
 // At any point (the particle pass): filtered, the gradient by central differences a quarter cell apart.

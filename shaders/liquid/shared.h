@@ -94,6 +94,7 @@
 #define LIQUID_BINDING_MESH_TRIANGLES 1     // mesh_raster.vert, mesh_draw.vert: the triangles' corners
 #define LIQUID_BINDING_MESH_INSIDE 1        // mesh_spread.frag (the field): the signed crossing counts
 #define LIQUID_BINDING_MESH_NEAREST 2       // mesh_spread.frag: the closest surface points so far
+#define LIQUID_BINDING_MESH_REFERENCE 1     // mesh_resample.frag: the mesh's reference field
 // Views.
 // The active region (liquid/solver/active_region.h): the 3D grid passes' vertex shader reads the
 // rectangle of each slice; the reduction passes read the marks (a grid) and then the rows' spans.
@@ -245,6 +246,15 @@ LIQUID_PUSH(MeshRasterPush) {
   float band;              // m: the field's band (the seed pass's depth scale)
   ivec4 box_min;           // the cells within the band of the mesh's bounds, [box_min, box_max) (xyz)
   ivec4 box_max;
+};
+
+// The mesh resample pass's push constants (liquid/solver/mesh_field.cpp, mesh_resample.frag).
+LIQUID_PUSH(MeshResamplePush) {
+  mat4 reference_from_world;  // a world point to the point of the reference placement the mesh has there
+  int slot;                   // the mesh field's channel
+  float band;                 // m: the field's band
+  int unused0;
+  int unused1;
 };
 
 // Drawing a mesh obstacle into the 3D view (liquid/render/mesh_draw.h): 128 bytes, lavapipe's limit.

@@ -1168,7 +1168,7 @@ TEST_CASE("a host's own mesh, from its interleaved vertex buffer, is an obstacle
     graph.execute(cmd.begin());
     cmd.submit_and_wait();
   }
-  // Moved every step: voxelized every step.
+  // Moved every step: its field made again every step (resampled, or voxelized if it has no reference).
   CHECK(node.simulation().mesh_field()->voxelizations() == 4 * node.substeps());
   CHECK_THROWS_AS(node.set_mesh_transform(boat + 1, glm::quat(1, 0, 0, 0), 1.0f), std::out_of_range);  // no such obstacle
   CHECK_THROWS_AS(node.set_mesh_transform(boat, glm::quat(1, 0, 0, 0), 0.0f), std::invalid_argument);

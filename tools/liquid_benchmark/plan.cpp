@@ -220,8 +220,9 @@ liquid::TriangleMesh torus_mesh(float R, float r, int major, int minor) {
 }
 
 // Mesh obstacles (liquid/solver/mesh_field.h), simulation only: paper_3d with a torus of 10,000
-// triangles in its pool, as tools/mesh_voxelization_cost.sh places it, moving (voxelized every
-// step: the voxelization's cost) and standing still (voxelized once: sampling the field's cost).
+// triangles in its pool, as tools/mesh_voxelization_cost.sh places it, moving (its field made
+// again every step: resampled from its reference field) and standing still (made once: sampling
+// the field's cost).
 std::vector<Configuration> mesh_configurations(const Options& o) {
   liquid::Obstacle torus;
   torus.shape = liquid::ObstacleShape::Mesh;
@@ -245,7 +246,7 @@ std::vector<Configuration> mesh_configurations(const Options& o) {
       c.grid_path = path;
       c.note = "paper_3d with a torus of " + std::to_string(triangles) + " triangles in its pool, grid " +
                grid_label(c.grid) + ", " +
-               (moving ? "moving at 0.5 m/s (voxelized every step)" : "standing still (voxelized once)") + "; " +
+               (moving ? "moving at 0.5 m/s (its field made every step)" : "standing still (its field made once)") + "; " +
                c.note;
       out.push_back(std::move(c));
     }

@@ -50,12 +50,14 @@ double seconds_since(Clock::time_point start) {
 }
 
 // The splat-adjoint pressure's passes are the solver's too, and so are the separable splat's
-// deposit and spreads (and its potential's spreads) and the active region's reductions.
+// deposit and spreads (and its potential's spreads), the active region's reductions, the mesh
+// obstacles' field (all but drawing them into the view) and the floating bodies' passes.
 bool is_solver_pass(const std::string& name) {
+  const auto starts = [&name](const char* prefix) { return name.rfind(prefix, 0) == 0; };
   return name == "liquid.splat" || name == "liquid.pressure" || name == "liquid.potential" || name == "liquid.grid" ||
-         name == "liquid.particle" || name == "liquid.deposit" || name.rfind("liquid.splat_spread_", 0) == 0 ||
-         name.rfind("liquid.active_", 0) == 0 ||
-         name.rfind("liquid.potential_", 0) == 0;
+         name == "liquid.particle" || name == "liquid.deposit" || starts("liquid.splat_spread_") ||
+         starts("liquid.active_") || starts("liquid.potential_") || starts("liquid.body") ||
+         (starts("liquid.mesh_") && name != "liquid.mesh_draw");
 }
 
 // The node, its renderer and a frame loop, as a host engine would hold them.

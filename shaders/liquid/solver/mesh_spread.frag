@@ -8,10 +8,15 @@
 //            with a neighbour's point), then the field: the distance to the point, clamped to the
 //            band, negative where the crossing counts (mesh_inside.frag) from the cell up do not
 //            cancel, in the mesh's channel; the other channels get LIQUID_MESH_FAR, which the MIN
-//            blending leaves as they are.
+//            blending leaves as they are. With REFERENCE=1 the distance alone, into the mesh's
+//            reference field (mesh_field.h), which mesh_resample.frag then places at each pose.
 #extension GL_GOOGLE_include_directive : require
 #include "liquid/common.glsl"
 #include "liquid/solver/grid_fragment.glsl"
+
+#ifndef REFERENCE
+#define REFERENCE 0
+#endif
 
 layout(set = 0, binding = LIQUID_BINDING_MESH_NEAREST) uniform GRID_SAMPLER u_nearest;
 #if FIELD
@@ -45,8 +50,13 @@ void main() {
   vec4 count = vec4(0.0);
   for (int z = c.z; z < pc.box_max.z; ++z) count += fetch_grid(u_inside, ivec3(c.xy, z));
   float d = min(best, pc.band);
+  float signed_distance = abs(count[pc.slot]) > 0.5 ? -d : d;
+#if REFERENCE
+  out_value = vec4(signed_distance);  // the mesh's own reference field (R32F: one channel)
+#else
   out_value = vec4(LIQUID_MESH_FAR);
-  out_value[pc.slot] = abs(count[pc.slot]) > 0.5 ? -d : d;
+  out_value[pc.slot] = signed_distance;
+#endif
 #else
   out_value = vec4(nearest, 0.0);
 #endif
