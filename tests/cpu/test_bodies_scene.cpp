@@ -3,6 +3,7 @@
 #include "liquid/physics/body.h"
 #include "liquid/physics/obstacles.h"
 #include "liquid/scene.h"
+#include "liquid/scene/limits.h"
 #include "tests/support/meshes.h"
 
 #include <catch2/catch.hpp>
@@ -11,6 +12,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 using Catch::Contains;
@@ -222,4 +225,33 @@ TEST_CASE("a dynamic mesh is re-expressed about its centre of mass and principal
   for (int a = 0; a < 3; ++a) CHECK(mesh_moments[a] == Approx(box_moments[a]).epsilon(1e-4));
   CHECK(liquid::body_volume(body, 3) == Approx(liquid::body_volume(analytic, 3)).epsilon(1e-5));
   CHECK(liquid::body_surface(body, 3) == Approx(liquid::body_surface(analytic, 3)).epsilon(1e-5));
+}
+
+TEST_CASE("a dynamic mesh is refused in 2D, from a scene file or built in code", "[scene][bodies][mesh]") {
+  std::filesystem::path dir = std::filesystem::temp_directory_path() / "liquid_dynamic_mesh_2d";
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream obj(dir / "box.obj");
+    for (const glm::vec3& v : test::box_mesh(glm::vec3(0.05f)).vertices) obj << "v " << v.x << " " << v.y << " " << v.z << "\n";
+    const std::vector<uint32_t> f = test::box_mesh(glm::vec3(0.05f)).indices;
+    for (size_t t = 0; t < f.size(); t += 3) obj << "f " << f[t] + 1 << " " << f[t + 1] + 1 << " " << f[t + 2] + 1 << "\n";
+  }
+  Json j = pool_with(Json::object());
+  j["obstacles"][0] = {{"shape", "mesh"}, {"file", "box.obj"}, {"center", {0.5, 0.3}}, {"dynamic", true}, {"density", 500}};
+  REQUIRE_THROWS_WITH(liquid::parse_scene(j.dump(), (dir / "pool.json").string()),
+                      Contains("obstacles[0].dynamic: a mesh obstacle can be dynamic in 3D only"));
+  // In 3D it is read, its mass the mesh's volume times its density.
+  Json solid = pool_with(Json::object(), 3);
+  solid["obstacles"][0] = {{"shape", "mesh"}, {"file", "box.obj"}, {"center", {0.5, 0.3, 0.25}}, {"dynamic", true}, {"density", 500}};
+  const liquid::Scene scene = liquid::parse_scene(solid.dump(), (dir / "pool.json").string());
+  CHECK(scene.obstacles.at(0).dynamic);
+  CHECK(liquid::body_mass(scene.obstacles.at(0), 3) == Approx(500.0 * 0.001).epsilon(1e-5));
+  // A host's 2D scene with a dynamic mesh.
+  liquid::Scene host = parse(pool_with(Json::object()));
+  host.obstacles[0].shape = liquid::ObstacleShape::Mesh;
+  host.obstacles[0].mesh = test::box_mesh(glm::vec3(0.05f));
+  host.obstacles[0].dynamic = true;
+  host.obstacles[0].density = 500.0f;
+  REQUIRE_THROWS_WITH(liquid::check_list_limits(host), Contains("obstacles[0].dynamic: a mesh obstacle can be dynamic in 3D only"));
+  std::filesystem::remove_all(dir);
 }
