@@ -46,7 +46,8 @@ class LiquidNode {
   LiquidNode(const LiquidNode&) = delete;
   LiquidNode& operator=(const LiquidNode&) = delete;
 
-  // The scene the node was created from.
+  // The scene the node was created from, as it runs it: a mesh's current transform, and a dynamic
+  // mesh re-expressed about its centre of mass and principal axes (README, "Bodies that float").
   const Scene& scene() const;
   int dimension() const;
   engine::vk::Context& context() const;

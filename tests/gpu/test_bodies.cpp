@@ -2,6 +2,7 @@
 // body sinking, a neutral one staying put, the momentum the body and the liquid exchange, and a
 // dynamic mesh box moving as the analytic box on every 3D path.
 #include "liquid/node.h"
+#include "liquid/physics/body.h"
 #include "liquid/solver/simulation.h"
 #include "tests/gpu/liquid_helpers.h"
 #include "tests/support/meshes.h"
@@ -371,4 +372,23 @@ TEST_CASE("a dynamic mesh box of half the water's density floats, one of 1,200 k
 TEMPLATE_TEST_CASE("on each 3D path a dynamic mesh box moves as the analytic box", "[gpu][liquid][bodies][mesh]",
                    test::VertexLayerPath, test::AtlasPath) {
   compare_mesh_body(TestType::path, 500.0f, 0.12f, 0.3);
+}
+
+TEST_CASE("the shipped dam break with a boat runs, the boat a dynamic mesh the liquid moves", "[gpu][liquid][bodies][mesh]") {
+  liquid::LiquidNode node(test::gpu(), test::shipped_scene("dam_break_3d_floating"));
+  const int count = node.active_particles();
+  const liquid::BodyState start = node.read_bodies().at(0);
+  const liquid::Obstacle& boat = node.scene().obstacles.at(0);
+  // Its mass is the hull's volume at 400 kg/m^3; it sits on the dry floor at first.
+  CHECK(start.mass == Approx(400.0 * liquid::mesh_mass_properties(boat.mesh).volume).epsilon(1e-5));
+  CHECK(start.mass > 0.2f);
+  const liquid::Diagnostics d = test::run_steps(node, 30);
+  const liquid::BodyState now = d.bodies.at(0);
+  INFO("boat centre from (" << start.pose.center.x << ", " << start.pose.center.y << ") to (" << now.pose.center.x << ", "
+                            << now.pose.center.y << ") m after " << node.time() << " s");
+  CHECK(std::isfinite(now.pose.center.x));
+  CHECK(now.pose.center.y > 0.0f);
+  CHECK(now.pose.center.y < 0.6f);
+  test::require_conserved(node, d, count);
+  REQUIRE_NO_VALIDATION_MESSAGES();
 }
