@@ -81,6 +81,10 @@ void LiquidNode::set_mesh_transform(size_t index, glm::quat rotation, float scal
   simulation_->set_mesh_transform(index, rotation, scale);
 }
 
+void LiquidNode::set_mesh_transform(size_t index, glm::quat rotation, float scale, glm::vec3 angular_velocity) {
+  simulation_->set_mesh_transform(index, rotation, scale, angular_velocity);
+}
+
 Obstacle mesh_obstacle(std::span<const std::byte> vertex_bytes, size_t stride, std::span<const uint32_t> indices,
                        glm::vec3 center, const std::string& name) {
   if (stride < 3 * sizeof(float)) throw SceneError(name + ": the vertex stride must be at least 12 bytes");

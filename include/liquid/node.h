@@ -46,7 +46,8 @@ class LiquidNode {
   LiquidNode(const LiquidNode&) = delete;
   LiquidNode& operator=(const LiquidNode&) = delete;
 
-  // The scene the node was created from.
+  // The scene the node was created from, as it runs it: a mesh's current transform, and a dynamic
+  // mesh re-expressed about its centre of mass and principal axes (README, "Bodies that float").
   const Scene& scene() const;
   int dimension() const;
   engine::vk::Context& context() const;
@@ -103,11 +104,16 @@ class LiquidNode {
   void set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity, Frame frame = Frame::Liquid);
   // A mesh obstacle's own transform for the following steps (with set_obstacle_pose() for its
   // centre and velocity, once per frame for a host-driven mesh), in the liquid's frame. The mesh is
-  // voxelized again in the steps where its placement changed; a turn adds no velocity to the
-  // liquid (the mesh's velocity is its centre's). Throws std::out_of_range when obstacle `index` is
-  // not a mesh and std::invalid_argument for a scale that is not finite and > 0 or a zero or
-  // non-finite rotation.
+  // voxelized again in the steps where its placement changed. Its turn moves the liquid: the mesh's
+  // surface moves at v + w x (p - center), w the turn from the rotation of the previous call (at an
+  // earlier time) to this one, divided by the time between them, the shorter way round; held for
+  // as long again, so a mesh the host stops turning stops stirring; zero for the first call. Throws
+  // std::out_of_range when obstacle `index` is not a mesh and std::invalid_argument for a dynamic
+  // mesh (the liquid turns it), a scale that is not finite and > 0 or a zero or non-finite rotation.
   void set_mesh_transform(size_t index, glm::quat rotation, float scale);
+  // The same with the angular velocity given (rad/s, the liquid's frame), held until the next call:
+  // for a host whose turn between frames exceeds half a turn, or that knows its rate exactly.
+  void set_mesh_transform(size_t index, glm::quat rotation, float scale, glm::vec3 angular_velocity);
   // Every obstacle's pose at `time` (scripted or set); a dynamic obstacle's is its last known state
   // (latest_bodies(), read_bodies() or diagnose()), whatever `time`.
   std::vector<ObstaclePose> obstacle_poses(double time, Frame frame = Frame::Liquid) const;

@@ -104,6 +104,10 @@ struct Obstacle {
   glm::vec3 oscillation_amplitude{0.0f};  // m
   float oscillation_frequency = 0.0f;     // Hz
   glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};  // the shape's frame to world (w, x, y, z); 2D: about z
+  // rad/s, world frame (2D: about z only): a scripted spin about `center`, the shape turned to
+  // angleAxis(|w| t, w / |w|) * rotation at time t, its material moving at w x (p - center); a
+  // dynamic obstacle's initial angular velocity.
+  glm::vec3 angular_velocity{0.0f};
   bool dynamic = false;  // a rigid body (spheres and boxes): exactly one of density and mass is > 0
   float density = 0.0f;  // kg/m^3
   float mass = 0.0f;     // kg (2D: kg per metre of depth)

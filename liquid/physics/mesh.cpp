@@ -33,8 +33,10 @@ float triangle_distance(glm::vec3 p, glm::vec3 a, glm::vec3 b, glm::vec3 c) {
 
 }  // namespace
 
-glm::mat4 mesh_to_world(const TriangleMesh& mesh, glm::vec3 center) {
-  return glm::translate(glm::mat4(1.0f), center) * glm::mat4_cast(mesh.rotation) *
+glm::mat4 mesh_to_world(const TriangleMesh& mesh, glm::vec3 center) { return mesh_to_world(mesh, center, mesh.rotation); }
+
+glm::mat4 mesh_to_world(const TriangleMesh& mesh, glm::vec3 center, glm::quat rotation) {
+  return glm::translate(glm::mat4(1.0f), center) * glm::mat4_cast(rotation) *
          glm::scale(glm::mat4(1.0f), glm::vec3(mesh.scale));
 }
 
@@ -47,8 +49,11 @@ float longest_edge(const TriangleMesh& mesh) {
   return longest;
 }
 
-PlacedMesh::PlacedMesh(const TriangleMesh& mesh, glm::vec3 center, float reach) : reach_(reach) {
-  const glm::mat4 m = mesh_to_world(mesh, center);
+PlacedMesh::PlacedMesh(const TriangleMesh& mesh, glm::vec3 center, float reach)
+    : PlacedMesh(mesh, center, mesh.rotation, reach) {}
+
+PlacedMesh::PlacedMesh(const TriangleMesh& mesh, glm::vec3 center, glm::quat rotation, float reach) : reach_(reach) {
+  const glm::mat4 m = mesh_to_world(mesh, center, rotation);
   lo_ = glm::vec3(INFINITY);
   hi_ = glm::vec3(-INFINITY);
   for (uint32_t i : mesh.indices) {

@@ -16,6 +16,8 @@ namespace liquid {
 
 // The mesh's local-to-world transform at obstacle centre `center`: center + rotation * (scale * v).
 glm::mat4 mesh_to_world(const TriangleMesh& mesh, glm::vec3 center);
+// The same turned by `rotation` instead of the mesh's own (an obstacle's pose's orientation).
+glm::mat4 mesh_to_world(const TriangleMesh& mesh, glm::vec3 center, glm::quat rotation);
 
 // Longest triangle edge, in the mesh's own frame (before scale).
 float longest_edge(const TriangleMesh& mesh);
@@ -26,6 +28,7 @@ float longest_edge(const TriangleMesh& mesh);
 class PlacedMesh {
  public:
   PlacedMesh(const TriangleMesh& mesh, glm::vec3 center, float reach);
+  PlacedMesh(const TriangleMesh& mesh, glm::vec3 center, glm::quat rotation, float reach);
   float distance(glm::vec3 p) const;
   bool inside(glm::vec3 p) const;
 

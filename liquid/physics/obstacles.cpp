@@ -9,9 +9,29 @@ ObstaclePose scripted_pose(const Obstacle& obstacle, double time) {
   const double omega = 2.0 * M_PI * obstacle.oscillation_frequency;
   const glm::vec3 wave = obstacle.oscillation_amplitude * float(std::sin(omega * time));
   const glm::vec3 wave_velocity = obstacle.oscillation_amplitude * float(omega * std::cos(omega * time));
-  if (obstacle.dynamic) return {obstacle.center, obstacle.velocity, obstacle.rotation, glm::vec3(0.0f)};
-  return {obstacle.center + obstacle.velocity * float(time) + wave, obstacle.velocity + wave_velocity, obstacle.rotation,
-          glm::vec3(0.0f)};
+  if (obstacle.dynamic) return {obstacle.center, obstacle.velocity, obstacle.rotation, obstacle.angular_velocity};
+  return {obstacle.center + obstacle.velocity * float(time) + wave, obstacle.velocity + wave_velocity,
+          spun_rotation(obstacle, time), obstacle.angular_velocity};
+}
+
+glm::quat spun_rotation(const Obstacle& obstacle, double time) {
+  const glm::vec3 w = obstacle.angular_velocity;
+  const double speed = std::sqrt(double(w.x) * w.x + double(w.y) * w.y + double(w.z) * w.z);
+  if (speed == 0.0) return obstacle.rotation;
+  // The angle modulo a turn, in double: a float angle loses the spin's phase after a few minutes.
+  const double angle = std::fmod(speed * time, 2.0 * M_PI);
+  return glm::normalize(glm::angleAxis(float(angle), w / float(speed)) * obstacle.rotation);
+}
+
+glm::vec3 turn_rate(glm::quat from, glm::quat to, double seconds) {
+  if (!(seconds > 0.0)) return glm::vec3(0.0f);
+  glm::quat delta = glm::normalize(to * glm::inverse(from));
+  if (delta.w < 0.0f) delta = -delta;  // the shorter way round
+  const glm::vec3 axis(delta.x, delta.y, delta.z);
+  const float s = glm::length(axis);
+  if (s == 0.0f) return glm::vec3(0.0f);
+  const double angle = 2.0 * std::atan2(double(s), double(delta.w));
+  return axis / s * float(angle / seconds);
 }
 
 glm::vec3 obstacle_velocity_at(const ObstaclePose& pose, glm::vec3 p) {
@@ -46,14 +66,15 @@ float obstacle_distance(const Obstacle& obstacle, const ObstaclePose& pose, glm:
       return (obstacle.threshold - field) / std::max(glm::length(gradient), 1e-4f);
     }
     case ObstacleShape::Mesh:  // one query: PlacedObstacle serves many
-      return PlacedMesh(obstacle.mesh, pose.center, 1e30f).distance(dimension == 2 ? glm::vec3(p.x, p.y, 0.0f) : p);
+      return PlacedMesh(obstacle.mesh, pose.center, pose.orientation, 1e30f)
+          .distance(dimension == 2 ? glm::vec3(p.x, p.y, 0.0f) : p);
   }
   return 1e30f;
 }
 
 PlacedObstacle::PlacedObstacle(const Obstacle& obstacle, const ObstaclePose& pose, int dimension, float mesh_reach)
     : obstacle_(&obstacle), pose_(pose), dimension_(dimension) {
-  if (obstacle.shape == ObstacleShape::Mesh) mesh_.emplace(obstacle.mesh, pose.center, mesh_reach);
+  if (obstacle.shape == ObstacleShape::Mesh) mesh_.emplace(obstacle.mesh, pose.center, pose.orientation, mesh_reach);
 }
 
 float PlacedObstacle::distance(glm::vec3 p) const {

@@ -8,15 +8,23 @@
 #include "liquid/types.h"
 
 #include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include <optional>
 #include <vector>
 
 namespace liquid {
 
-// Scripted motion of the scene: center + velocity t + amplitude sin(2 pi f t), at the scene's
-// rotation, not turning. (A dynamic obstacle's is where it starts.)
+// Scripted motion of the scene: center + velocity t + amplitude sin(2 pi f t), turned by its spin
+// (Obstacle::angular_velocity) from the scene's rotation. (A dynamic obstacle's is where it starts.)
 ObstaclePose scripted_pose(const Obstacle& obstacle, double time);
+
+// The scripted orientation at `time`: angleAxis(|w| t, w / |w|) * rotation, w the obstacle's spin.
+glm::quat spun_rotation(const Obstacle& obstacle, double time);
+
+// The constant angular velocity (rad/s, world frame) that turns `from` into `to` in `seconds`, the
+// shorter way round; zero for no time or no turn.
+glm::vec3 turn_rate(glm::quat from, glm::quat to, double seconds);
 
 // Signed distance (m, negative inside) of `p` to the obstacle placed at `pose` (a box in its
 // rotated frame); `dimension` 2 ignores z (a box is then the rectangle of its x and y extents).

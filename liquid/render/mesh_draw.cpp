@@ -49,7 +49,8 @@ MeshDrawPass::Targets MeshDrawPass::add_to(engine::graph::RenderGraph& graph, Ta
               d.bindings.emplace_back(pipeline_);
               d.bindings.back().bind_image(b, LIQUID_BINDING_MESH_TRIANGLES,
                                            graph.import_image(m.triangles.name(), m.triangles), nearest_.handle());
-              const glm::mat4 model = mesh_to_world(node_.scene().obstacles[m.obstacle].mesh, poses[m.obstacle].center);
+              const glm::mat4 model = mesh_to_world(node_.scene().obstacles[m.obstacle].mesh, poses[m.obstacle].center,
+                                                    poses[m.obstacle].orientation);
               gpu::MeshDrawPush push{};
               push.view_projection = view_projection;
               const glm::mat4 rows = glm::transpose(model);

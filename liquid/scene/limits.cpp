@@ -37,6 +37,10 @@ void check_list_limits(const Scene& scene) {
     if (!(mesh.scale > 0.0f && std::isfinite(mesh.scale)))
       throw SceneError((scene.source.empty() ? scene.name : scene.source) + ": obstacles[" + std::to_string(i) +
                        "]: the mesh's scale must be a finite number > 0");
+    // The scene file refuses it too (liquid/scene/scene.cpp); a host's scene is checked here.
+    if (scene.obstacles[i].dynamic && scene.dimension != 3)
+      throw SceneError((scene.source.empty() ? scene.name : scene.source) + ": obstacles[" + std::to_string(i) +
+                       "].dynamic: a mesh obstacle can be dynamic in 3D only");
   }
   require_at_most(scene, "obstacles", meshes, gpu::k_max_mesh_obstacles, " meshes");
 }

@@ -18,6 +18,7 @@ constexpr int k_max_grid_resolution = 2048;
 constexpr double k_max_gravity = 1000.0;        // m/s^2 per component
 constexpr double k_max_speed = 1000.0;          // m/s per component
 constexpr double k_max_frequency = 1000.0;      // Hz
+constexpr double k_max_angular_speed = 1000.0;  // rad/s per component (about 160 turns a second)
 constexpr int k_max_emitter_capacity = 1 << 24;  // 16M particles
 constexpr double k_max_body_density = 1e5;      // kg/m^3, past any solid (osmium: 22590)
 constexpr double k_max_body_mass = 1e9;         // kg
@@ -103,6 +104,17 @@ glm::quat read_rotation(const Reader& r, const Json& value, const std::string& p
   return glm::angleAxis(glm::radians(degrees), axis);
 }
 
+// "angular_velocity" (rad/s, world frame): [x, y, z] in 3D, one number (about z, counter-clockwise)
+// in 2D, where an obstacle turns about z only.
+glm::vec3 read_angular_velocity(const Reader& r, const Json& value, const std::string& path) {
+  if (r.dimension() == 2) {
+    if (!value.is_number())
+      r.fail(path, std::string("must be one number in 2D (rad/s about z), got ") + value.type_name());
+    return glm::vec3(0.0f, 0.0f, float(r.number_in(value, path, -k_max_angular_speed, k_max_angular_speed)));
+  }
+  return r.vector(value, path, 3, k_max_angular_speed);
+}
+
 // "dynamic": true with "density" (kg/m^3) or "mass" (kg; in 2D, kg per metre of depth).
 void read_body(const Reader& r, const Json& value, const std::string& path, Obstacle& obstacle) {
   const Json* dynamic = Reader::find(value, "dynamic");
@@ -114,9 +126,10 @@ void read_body(const Reader& r, const Json& value, const std::string& path, Obst
     if (density || mass) r.fail(child(path, density ? "density" : "mass"), "only allowed with \"dynamic\": true");
     return;
   }
-  if (obstacle.shape == ObstacleShape::Metaballs || obstacle.shape == ObstacleShape::Mesh)
-    r.fail(child(path, "dynamic"), std::string(obstacle.shape == ObstacleShape::Mesh ? "mesh" : "metaball") +
-                                       " obstacles cannot be dynamic (only spheres and boxes)");
+  if (obstacle.shape == ObstacleShape::Metaballs)
+    r.fail(child(path, "dynamic"), "metaball obstacles cannot be dynamic (only spheres, boxes and meshes)");
+  if (obstacle.shape == ObstacleShape::Mesh && r.dimension() == 2)
+    r.fail(child(path, "dynamic"), "a mesh obstacle can be dynamic in 3D only");
   if (Reader::find(value, "oscillation")) r.fail(child(path, "oscillation"), "not allowed on a dynamic obstacle (the liquid moves it)");
   if (density && mass) r.fail(child(path, "mass"), "give density or mass, not both");
   if (!density && !mass) r.fail(child(path, "density"), "missing required key (a dynamic obstacle needs density or mass)");
@@ -148,13 +161,13 @@ Obstacle read_obstacle(const Reader& r, const Json& value, const std::string& pa
                                           {"sphere", "box", "metaballs", "mesh"}));
   switch (obstacle.shape) {
     case ObstacleShape::Sphere:
-      r.check_keys(value, path, {"shape", "center", "radius", "velocity", "oscillation", "rotation", "dynamic", "density", "mass"});
+      r.check_keys(value, path, {"shape", "center", "radius", "velocity", "oscillation", "rotation", "angular_velocity", "dynamic", "density", "mass"});
       obstacle.center = r.scene_vector(r.require(value, path, "center"), child(path, "center"));
       obstacle.radius =
           float(r.number_in(r.require(value, path, "radius"), child(path, "radius"), 0.0, k_max_length, true));
       break;
     case ObstacleShape::Box: {
-      r.check_keys(value, path, {"shape", "center", "half_extent", "velocity", "oscillation", "rotation", "dynamic", "density", "mass"});
+      r.check_keys(value, path, {"shape", "center", "half_extent", "velocity", "oscillation", "rotation", "angular_velocity", "dynamic", "density", "mass"});
       obstacle.center = r.scene_vector(r.require(value, path, "center"), child(path, "center"));
       const std::string extent_path = child(path, "half_extent");
       obstacle.half_extent = r.scene_vector(r.require(value, path, "half_extent"), extent_path);
@@ -182,7 +195,8 @@ Obstacle read_obstacle(const Reader& r, const Json& value, const std::string& pa
       break;
     }
     case ObstacleShape::Mesh:
-      r.check_keys(value, path, {"shape", "center", "file", "rotation", "scale", "velocity", "oscillation"});
+      r.check_keys(value, path, {"shape", "center", "file", "rotation", "angular_velocity", "scale", "velocity", "oscillation",
+                                 "dynamic", "density", "mass"});
       obstacle.center = r.scene_vector(r.require(value, path, "center"), child(path, "center"));
       obstacle.mesh = read_mesh(r, value, path);
       break;
@@ -191,6 +205,8 @@ Obstacle read_obstacle(const Reader& r, const Json& value, const std::string& pa
     obstacle.velocity = r.scene_vector(*v, child(path, "velocity"), k_max_speed);
   if (const Json* v = Reader::find(value, "oscillation")) read_oscillation(r, *v, child(path, "oscillation"), obstacle);
   if (const Json* v = Reader::find(value, "rotation")) obstacle.rotation = read_rotation(r, *v, child(path, "rotation"), obstacle.shape == ObstacleShape::Mesh);
+  if (const Json* v = Reader::find(value, "angular_velocity"))
+    obstacle.angular_velocity = read_angular_velocity(r, *v, child(path, "angular_velocity"));
   if (obstacle.shape == ObstacleShape::Mesh) obstacle.mesh.rotation = obstacle.rotation;  // voxelized turned
   read_body(r, value, path, obstacle);
   return obstacle;
@@ -334,14 +350,15 @@ void read_contents(const Reader& r, const Json& doc, Scene& scene) {
   scene.obstacles = read_array<Obstacle>(r, doc, "obstacles", read_obstacle);
   // The body force is the reaction of the splat-adjoint pressure's energy (the chapter's pressure
   // force is no gradient of one); it has no term for shallow water's ground, nor does it read the
-  // mesh field: bodies and meshes are not yet in one scene.
+  // mesh field: bodies and static meshes are not yet in one scene (a dynamic mesh carries its own
+  // distance, liquid/solver/body_shapes.h).
   const bool meshes = std::any_of(scene.obstacles.begin(), scene.obstacles.end(),
-                                  [](const Obstacle& o) { return o.shape == ObstacleShape::Mesh; });
+                                  [](const Obstacle& o) { return o.shape == ObstacleShape::Mesh && !o.dynamic; });
   for (size_t i = 0; i < scene.obstacles.size(); ++i)
     if (scene.obstacles[i].dynamic && (shallow || meshes || scene.pressure_force != PressureForce::SplatAdjoint))
       r.fail(element("obstacles", i) + ".dynamic",
              shallow  ? "not available in shallow_water mode"
-             : meshes ? "not available in a scene with mesh obstacles"
+             : meshes ? "not available in a scene with static mesh obstacles"
                       : "needs \"pressure_force\": \"splat_adjoint\" (the body force is the reaction of its energy)");
   if (!shallow && Reader::find(doc, "ground")) r.fail("ground", "only allowed in shallow_water mode");
   scene.ground = read_array<GroundHill>(r, doc, "ground", read_ground_hill);

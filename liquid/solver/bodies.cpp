@@ -19,6 +19,7 @@ std::vector<glm::vec4> initial_body_texels(const Scene& scene, const SimulationS
     row[LIQUID_BODY_POSITION] = glm::vec4(o.center, 1.0f);
     row[LIQUID_BODY_ORIENTATION] = glm::vec4(o.rotation.x, o.rotation.y, o.rotation.z, o.rotation.w);
     row[LIQUID_BODY_VELOCITY] = glm::vec4(o.velocity, 0.0f);
+    row[LIQUID_BODY_ANGULAR_VELOCITY] = glm::vec4(o.angular_velocity, 0.0f);
     row[LIQUID_BODY_ACCELERATION] = glm::vec4(setup.gravity, 0.0f);
   }
   return texels;

@@ -16,7 +16,7 @@ namespace liquid {
 int gpu_body_texels();
 
 // LIQUID_BODY_TEXELS x max(1, obstacles) texels, row by row: each dynamic obstacle at its scene
-// pose, velocity and rotation, at rest in rotation, its last acceleration gravity (so the added-mass
+// pose, velocity, rotation and angular velocity, its last acceleration gravity (so the added-mass
 // term does not slow a free fall); other rows zero.
 std::vector<glm::vec4> initial_body_texels(const Scene& scene, const SimulationSetup& setup);
 

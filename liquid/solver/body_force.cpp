@@ -1,6 +1,7 @@
 #include "liquid/solver/body_force.h"
 
 #include "engine/passes/bindings.h"
+#include "liquid/solver/body_shapes.h"
 #include "liquid/solver/state.h"
 #include "liquid/solver/uniforms.h"
 #include "liquid_shaders.h"
@@ -35,6 +36,7 @@ engine::vk::GraphicsPipelineDesc point_reduction(const char* name, std::span<con
                    {LIQUID_BINDING_BODIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
       .push_constant_size = push_size,
       .specialization = specialization};
+  add_body_shapes_binding(desc.bindings, VK_SHADER_STAGE_VERTEX_BIT);
   if (extra_binding != 0)
     desc.bindings.push_back({extra_binding, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT});
   return desc;
@@ -53,13 +55,14 @@ BodyForcePass::BodyForcePass(engine::vk::Context& context, const GridLayout& lay
                                                      liquid_shaders::body_exchange_vert_3d_atlas),
                                          LIQUID_BINDING_BODY_PARTICLES, sizeof(BodyExchangePush), specialization)),
       nearest_(context, VK_FILTER_NEAREST),
+      linear_(context, VK_FILTER_LINEAR),
       obstacles_(uint32_t(obstacles)),
       cells_(uint32_t(layout.cell_count())),
       particle_mass_(particle_mass) {}
 
 BodyForceImages BodyForcePass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
                                       ImageHandle splat, ImageHandle cell_pressure, ImageHandle positions, int active,
-                                      ImageHandle bodies,
+                                      ImageHandle bodies, ImageHandle body_shapes,
                                       const std::vector<int>& dynamic_obstacles) const {
   const engine::vk::ImageDesc desc{engine::vk::ImageKind::Image2D, 1, obstacles_, 1, k_body_format, 0};
   BodyForceImages out{graph.create_image("liquid.body_force", desc), graph.create_image("liquid.body_torque", desc)};
@@ -84,6 +87,7 @@ BodyForceImages BodyForcePass::add_to(engine::graph::RenderGraph& graph, const e
                       d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
                       d.bindings.bind_image(b, LIQUID_BINDING_GRID_SPLAT, splat, s);
                       d.bindings.bind_image(b, LIQUID_BINDING_BODIES, bodies, s);
+                      bind_body_shapes(d.bindings, b, body_shapes, linear_);
                       if (exchange) d.bindings.bind_image(b, LIQUID_BINDING_BODY_PARTICLES, positions, s);
                       if (!exchange) d.bindings.bind_image(b, LIQUID_BINDING_BODY_CELL_PRESSURE, cell_pressure, s);
                       d.out.force = b.write(out.force, Access::ColorAttachmentBlend, start);

@@ -33,16 +33,17 @@ class BodyForcePass {
 
   // From the step's `splat` (the velocity arriving at the bodies), its cells' pressure
   // `cell_pressure` (PressurePass), the particles' `positions` before their update (the first
-  // `active`) and the body state the grid pass read, for the dynamic obstacles `dynamic_obstacles`
+  // `active`) and the body state the grid pass read (with `body_shapes`), for the dynamic obstacles `dynamic_obstacles`
   // (their indices).
   BodyForceImages add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle splat,
                          ImageHandle cell_pressure, ImageHandle positions, int active, ImageHandle bodies,
-                         const std::vector<int>& dynamic_obstacles) const;
+                         ImageHandle body_shapes, const std::vector<int>& dynamic_obstacles) const;
 
  private:
   engine::vk::GraphicsPipeline pressure_;  // a point per cell
   engine::vk::GraphicsPipeline exchange_;  // a point per particle
   engine::vk::Sampler nearest_;
+  engine::vk::Sampler linear_;  // the body shapes'
   uint32_t obstacles_ = 0;
   uint32_t cells_ = 0;
   float particle_mass_ = 0.0f;

@@ -3,6 +3,7 @@
 #include "engine/passes/bindings.h"
 #include "liquid/solver/active_region.h"
 #include "liquid/solver/images.h"
+#include "liquid/solver/body_shapes.h"
 #include "liquid/solver/mesh_field.h"
 #include "liquid/solver/state.h"
 #include "liquid/solver/uniforms.h"
@@ -29,6 +30,7 @@ std::vector<engine::vk::DescriptorBinding> grid_bindings(const SimulationSetup& 
       {LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
       {LIQUID_BINDING_GRID_SPLAT, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
       {LIQUID_BINDING_BODIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}};
+  add_body_shapes_binding(bindings, VK_SHADER_STAGE_FRAGMENT_BIT);
   if (setup.splat_adjoint_pressure)
     bindings.push_back({LIQUID_BINDING_GRID_POTENTIAL, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
   add_mesh_field_binding(meshes, bindings);
@@ -51,12 +53,13 @@ GridPass::GridPass(engine::vk::Context& context, const SimulationSetup& setup, c
                     .bindings = grid_bindings(setup, meshes, active_region),
                     .specialization = specialization}),
       nearest_(context, VK_FILTER_NEAREST),
+      linear_(context, VK_FILTER_LINEAR),
       splat_adjoint_(setup.splat_adjoint_pressure),
       layout_(layout),
       active_region_(active_region) {}
 
 GridImages GridPass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                            ImageHandle splat, ImageHandle bodies, const GridImages& grids, ImageHandle potential,
+                            ImageHandle splat, ImageHandle bodies, ImageHandle body_shapes, const GridImages& grids, ImageHandle potential,
                             ImageHandle mesh_field, ImageHandle region) const {
   if (splat_adjoint_ != potential.valid())
     throw std::logic_error(splat_adjoint_ ? "liquid.grid: the splat-adjoint pressure needs the potential image"
@@ -73,6 +76,7 @@ GridImages GridPass::add_to(engine::graph::RenderGraph& graph, const engine::vk:
             d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
             d.bindings.bind_image(b, LIQUID_BINDING_GRID_SPLAT, splat, nearest_.handle());
             d.bindings.bind_image(b, LIQUID_BINDING_BODIES, bodies, nearest_.handle());
+            bind_body_shapes(d.bindings, b, body_shapes, linear_);
             if (potential.valid()) d.bindings.bind_image(b, LIQUID_BINDING_GRID_POTENTIAL, potential, nearest_.handle());
             bind_mesh_field(d.bindings, b, mesh_field, nearest_);
             const engine::graph::AttachmentOptions load =

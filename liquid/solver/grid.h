@@ -23,18 +23,19 @@ class GridPass {
            const std::vector<int32_t>& specialization, bool meshes, bool active_region);
 
   // Reads `splat` (and, with the splat-adjoint pressure, PressurePass's `potential`) and the body
-  // state `bodies` (dynamic obstacles' poses), writes the updated velocity (u', fluid flag) and
+  // state `bodies` (dynamic obstacles' poses) with `body_shapes` (liquid/solver/body_shapes.h), writes the updated velocity (u', fluid flag) and
   // rho / rho0 into `grids`. With mesh obstacles (`meshes`), reads their field
   // (liquid/solver/mesh_field.h). `region`: the step's active region (valid exactly when the pass
   // was made for one).
   GridImages add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle splat,
-                    ImageHandle bodies, const GridImages& grids, ImageHandle potential, ImageHandle mesh_field,
+                    ImageHandle bodies, ImageHandle body_shapes, const GridImages& grids, ImageHandle potential, ImageHandle mesh_field,
                     ImageHandle region) const;
 
  private:
   engine::vk::GraphicsPipeline pipeline_;
   engine::vk::Sampler nearest_;  // also the mesh field's: read at cell centres (a linear sampler made
                                  // lavapipe's fetches from it four times slower)
+  engine::vk::Sampler linear_;   // the body shapes'
   bool splat_adjoint_ = false;
   GridLayout layout_;
   bool active_region_ = false;

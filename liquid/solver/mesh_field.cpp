@@ -178,7 +178,7 @@ engine::vk::Image mesh_triangle_texture(engine::vk::Context& context, const Tria
 
 bool has_mesh_obstacles(const Scene& scene) {
   return std::any_of(scene.obstacles.begin(), scene.obstacles.end(),
-                     [](const Obstacle& o) { return o.shape == ObstacleShape::Mesh; });
+                     [](const Obstacle& o) { return o.shape == ObstacleShape::Mesh && !o.dynamic; });
 }
 
 void add_mesh_field_binding(bool meshes, std::vector<engine::vk::DescriptorBinding>& bindings) {
@@ -224,7 +224,7 @@ MeshField::MeshField(engine::vk::Context& context, const Scene& scene, const Sim
   engine::graph::upload_image(context, field_, std::as_bytes(std::span(far)));
   for (size_t i = 0; i < scene.obstacles.size(); ++i) {
     const Obstacle& o = scene.obstacles[i];
-    if (o.shape != ObstacleShape::Mesh) continue;
+    if (o.shape != ObstacleShape::Mesh || o.dynamic) continue;  // a dynamic mesh carries its own distance (body_shapes.h)
     const std::string index = std::to_string(meshes_.size());
     meshes_.push_back({i, mesh_triangle_texture(context, o.mesh, "liquid.mesh_triangles" + index),
                        uint32_t(o.mesh.indices.size() / 3), std::nullopt});

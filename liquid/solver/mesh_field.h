@@ -57,7 +57,8 @@ namespace liquid {
 
 constexpr VkFormat k_mesh_field_format = VK_FORMAT_R32G32B32A32_SFLOAT;
 
-// Whether the scene has mesh obstacles (its passes then take the MESH_FIELD variants).
+// Whether the scene has static mesh obstacles (its passes then take the MESH_FIELD variants); a
+// dynamic mesh is not in the field, it carries its own distance (liquid/solver/body_shapes.h).
 bool has_mesh_obstacles(const Scene& scene);
 
 // A mesh's triangles as a texture (RGBA32F, LIQUID_MESH_TRIANGLE_TEXTURE_WIDTH wide): the corners

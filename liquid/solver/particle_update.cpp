@@ -2,6 +2,7 @@
 
 #include "engine/passes/bindings.h"
 #include "engine/passes/fullscreen.h"
+#include "liquid/solver/body_shapes.h"
 #include "liquid/solver/images.h"
 #include "liquid/solver/mesh_field.h"
 #include "liquid/solver/state.h"
@@ -20,6 +21,7 @@ std::vector<engine::vk::DescriptorBinding> particle_bindings(bool meshes) {
       {LIQUID_BINDING_PARTICLE_SPLAT, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
       {LIQUID_BINDING_PARTICLE_GRID_VELOCITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
       {LIQUID_BINDING_BODIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}};
+  add_body_shapes_binding(bindings, VK_SHADER_STAGE_FRAGMENT_BIT);
   add_mesh_field_binding(meshes, bindings);
   return bindings;
 }
@@ -46,7 +48,7 @@ ParticleUpdatePass::ParticleUpdatePass(engine::vk::Context& context, const GridL
 
 ParticleImages ParticleUpdatePass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
                                           const ParticleImages& current, ImageHandle splat, const GridImages& grids,
-                                          ImageHandle bodies, const ParticleImages& next, int active_after,
+                                          ImageHandle bodies, ImageHandle body_shapes, const ParticleImages& next, int active_after,
                                           ImageHandle mesh_field) const {
   struct Data {
     engine::passes::PassBindings bindings;
@@ -64,6 +66,7 @@ ParticleImages ParticleUpdatePass::add_to(engine::graph::RenderGraph& graph, con
             d.bindings.bind_image(b, LIQUID_BINDING_PARTICLE_SPLAT, splat, s);
             d.bindings.bind_image(b, LIQUID_BINDING_PARTICLE_GRID_VELOCITY, grids.velocity, s);
             d.bindings.bind_image(b, LIQUID_BINDING_BODIES, bodies, s);
+            bind_body_shapes(d.bindings, b, body_shapes, linear_);
             bind_mesh_field(d.bindings, b, mesh_field, linear_);
             d.out.positions = b.write(next.positions, Access::ColorAttachmentWrite);
             d.out.velocities = b.write(next.velocities, Access::ColorAttachmentWrite);

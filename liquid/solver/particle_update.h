@@ -23,15 +23,16 @@ class ParticleUpdatePass {
                      bool meshes = false);
 
   // From `current` into `next` (the other texture of the ping-pong pair), for the rows holding
-  // `active_after` particles; `bodies`: the dynamic obstacles' state at the end of the step.
+  // `active_after` particles; `bodies`: the dynamic obstacles' state at the end of the step, with
+  // `body_shapes` (liquid/solver/body_shapes.h).
   ParticleImages add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
                         const ParticleImages& current, ImageHandle splat, const GridImages& grids, ImageHandle bodies,
-                        const ParticleImages& next, int active_after, ImageHandle mesh_field = {}) const;
+                        ImageHandle body_shapes, const ParticleImages& next, int active_after, ImageHandle mesh_field = {}) const;
 
  private:
   engine::vk::GraphicsPipeline pipeline_;
   engine::vk::Sampler nearest_;
-  engine::vk::Sampler linear_;  // the mesh field
+  engine::vk::Sampler linear_;  // the mesh field and the body shapes
 };
 
 }  // namespace liquid

@@ -2,6 +2,7 @@
 
 #include "engine/passes/bindings.h"
 #include "liquid/solver/active_region.h"
+#include "liquid/solver/body_shapes.h"
 #include "liquid/solver/images.h"
 #include "liquid/solver/mesh_field.h"
 #include "liquid/solver/uniforms.h"
@@ -21,7 +22,10 @@ engine::vk::GraphicsPipelineDesc grid_pipeline(const char* name, const GridLayou
   std::vector<engine::vk::DescriptorBinding> bindings{
       {LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, k_solver_uniform_stages},
       {binding, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}};
-  if (bodies) bindings.push_back({LIQUID_BINDING_BODIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
+  if (bodies) {
+    bindings.push_back({LIQUID_BINDING_BODIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
+    add_body_shapes_binding(bindings, VK_SHADER_STAGE_FRAGMENT_BIT);
+  }
   add_mesh_field_binding(meshes, bindings);
   add_active_region_binding(active_region, bindings);
   return engine::vk::GraphicsPipelineDesc{
@@ -48,6 +52,7 @@ PressurePass::PressurePass(engine::vk::Context& context, const GridLayout& layou
                                                        liquid_shaders::pressure_frag_3d_atlas_mesh)),
                               LIQUID_BINDING_PRESSURE_SPLAT, specialization, true, meshes, active_region)),
       nearest_(context, VK_FILTER_NEAREST),
+      linear_(context, VK_FILTER_LINEAR),
       desc_(layout.image_desc(k_pressure_format, 0)),
       layout_(layout),
       active_region_(active_region) {
@@ -63,7 +68,7 @@ PressurePass::PressurePass(engine::vk::Context& context, const GridLayout& layou
 }
 
 ImageHandle PressurePass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                                 ImageHandle splat, ImageHandle bodies, ImageHandle& pressure,
+                                 ImageHandle splat, ImageHandle bodies, ImageHandle body_shapes, ImageHandle& pressure,
                                  ImageHandle& potential, ImageHandle& scratch, ImageHandle mesh_field,
                                  ImageHandle region) const {
   struct Data {
@@ -71,7 +76,7 @@ ImageHandle PressurePass::add_to(engine::graph::RenderGraph& graph, const engine
     ImageHandle out;
   };
   auto pass = [&](const char* name, const engine::vk::GraphicsPipeline& pipeline, uint32_t binding, ImageHandle input,
-                  ImageHandle output, ImageHandle body_state, ImageHandle field) {
+                  ImageHandle output, ImageHandle body_state, ImageHandle shapes, ImageHandle field) {
     return graph
         .add_pass<Data>(
             name,
@@ -79,7 +84,10 @@ ImageHandle PressurePass::add_to(engine::graph::RenderGraph& graph, const engine
               d.bindings = engine::passes::PassBindings(pipeline);
               d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
               d.bindings.bind_image(b, binding, input, nearest_.handle());
-              if (body_state.valid()) d.bindings.bind_image(b, LIQUID_BINDING_BODIES, body_state, nearest_.handle());
+              if (body_state.valid()) {
+                d.bindings.bind_image(b, LIQUID_BINDING_BODIES, body_state, nearest_.handle());
+                bind_body_shapes(d.bindings, b, shapes, linear_);
+              }
               bind_mesh_field(d.bindings, b, field, nearest_);
               d.out = b.write(output, Access::ColorAttachmentWrite,
                               bind_active_region(d.bindings, b, region, active_region_, nearest_));
@@ -90,9 +98,10 @@ ImageHandle PressurePass::add_to(engine::graph::RenderGraph& graph, const engine
             })
         .out;
   };
-  pressure = pass("liquid.pressure", pressure_, LIQUID_BINDING_PRESSURE_SPLAT, splat, pressure, bodies, mesh_field);
+  pressure = pass("liquid.pressure", pressure_, LIQUID_BINDING_PRESSURE_SPLAT, splat, pressure, bodies, body_shapes,
+                  mesh_field);
   if (potential_) {
-    potential = pass("liquid.potential", *potential_, LIQUID_BINDING_POTENTIAL_PRESSURE, pressure, potential, {}, {});
+    potential = pass("liquid.potential", *potential_, LIQUID_BINDING_POTENTIAL_PRESSURE, pressure, potential, {}, {}, {});
     return potential;
   }
   if (scratch.valid()) return spread_->add_to_keeping(graph, uniforms, pressure, potential, scratch, region);

@@ -35,14 +35,14 @@ class PressurePass {
   // Grid-sized descriptions of the two intermediate images (the node creates them as transients).
   engine::vk::ImageDesc image_desc() const { return desc_; }
 
-  // Reads `splat` and the body state `bodies` (the dynamic bodies' kernel coverage), writes P into
+  // Reads `splat` and the body state `bodies` with `body_shapes` (the dynamic bodies' kernel coverage), writes P into
   // `pressure` and smooths it into Phi (the handles are advanced to their new versions); returns
   // Phi, which is in `potential`, or in `pressure` for the separable splat's spread in 2D (its
   // passes alternate between the two images). With a valid `scratch` (a third such image) the
   // spread alternates between `potential` and it instead and P stays in `pressure`, for the body
   // force pass. `region`: the step's active region (valid exactly when the pass was made for one).
   ImageHandle add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle splat,
-                     ImageHandle bodies, ImageHandle& pressure, ImageHandle& potential, ImageHandle& scratch,
+                     ImageHandle bodies, ImageHandle body_shapes, ImageHandle& pressure, ImageHandle& potential, ImageHandle& scratch,
                      ImageHandle mesh_field, ImageHandle region) const;
 
  private:
@@ -50,6 +50,7 @@ class PressurePass {
   std::optional<engine::vk::GraphicsPipeline> potential_;  // the point-sprite splat's gather
   std::optional<SeparableBlur> spread_;                     // the separable splat's passes
   engine::vk::Sampler nearest_;  // also the mesh field's (P reads the obstacles' density at cell centres)
+  engine::vk::Sampler linear_;   // the body shapes'
   engine::vk::ImageDesc desc_;
   GridLayout layout_;
   bool active_region_ = false;

@@ -2,6 +2,8 @@
 
 #include "engine/graph/transfer.h"
 #include "engine/vk/context.h"
+#include "liquid/physics/body.h"
+#include "liquid/physics/obstacles.h"
 #include "liquid/physics/time_step.h"
 #include "liquid/scene/format.h"
 #include "liquid/solver/bodies.h"
@@ -48,6 +50,18 @@ void check_atlas_fits(const engine::vk::Context& context, const GridLayout& layo
                              "; lower grid_resolution or use another 3D path");
 }
 
+// The scene as the solver runs it: a mesh obstacle's rotation is its mesh's (what a host set on the
+// mesh), and a dynamic mesh is re-expressed about its centre of mass and principal axes, where its
+// rigid body turns (liquid/physics/body.h).
+Scene solver_scene(Scene scene) {
+  for (Obstacle& o : scene.obstacles) {
+    if (o.shape != ObstacleShape::Mesh) continue;
+    o.rotation = o.mesh.rotation;
+    o = mesh_body_in_principal_frame(o);
+  }
+  return scene;
+}
+
 template <class T>
 std::vector<T> as_vector(const std::vector<std::byte>& bytes, size_t count) {
   std::vector<T> out(count);
@@ -58,7 +72,7 @@ std::vector<T> as_vector(const std::vector<std::byte>& bytes, size_t count) {
 }  // namespace
 
 Simulation::Simulation(engine::vk::Context& context, const Scene& scene, const LiquidOptions& options)
-    : context_(context), scene_(scene), setup_(make_setup(scene, device_limits(context))),
+    : context_(context), scene_(solver_scene(scene)), setup_(make_setup(scene_, device_limits(context))),
       frames_in_flight_(options.frames_in_flight) {
   layout_ = GridLayout(setup_.dimension, setup_.grid_cells, grid_path(context, options, setup_.dimension));
   check_atlas_fits(context, layout_);
@@ -85,6 +99,7 @@ Simulation::Simulation(engine::vk::Context& context, const Scene& scene, const L
   particle_update_ = std::make_unique<ParticleUpdatePass>(context, layout_, specialization, meshes);
   if (meshes) mesh_field_ = std::make_unique<MeshField>(context, scene_, setup_, layout_, specialization);
   const bool dynamic = std::any_of(scene.obstacles.begin(), scene.obstacles.end(), [](const Obstacle& o) { return o.dynamic; });
+  body_shapes_ = make_body_shapes(context, scene_, setup_);
   if (dynamic) {
     body_force_ = std::make_unique<BodyForcePass>(context, layout_, int(scene.obstacles.size()), setup_.particle_mass,
                                                   specialization);
@@ -110,6 +125,7 @@ Simulation::Simulation(engine::vk::Context& context, const Scene& scene, const L
   active_ = setup_.initial_particles;
   emitted_.assign(scene.emitters.size(), 0);
   pose_overrides_.resize(scene.obstacles.size());
+  mesh_turns_.resize(scene.obstacles.size());
   body_pushes_.resize(scene.obstacles.size());
   body_readbacks_.resize(options.frames_in_flight + 1);
 }
@@ -135,13 +151,40 @@ void Simulation::set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 vel
   pose_overrides_[index] = PoseOverride{center, velocity, time_};
 }
 
-void Simulation::set_mesh_transform(size_t index, glm::quat rotation, float scale) {
+void Simulation::set_mesh_transform(size_t index, glm::quat rotation, float scale,
+                                    std::optional<glm::vec3> angular_velocity) {
   if (index >= scene_.obstacles.size() || scene_.obstacles[index].shape != ObstacleShape::Mesh)
     throw std::out_of_range("liquid: obstacle " + std::to_string(index) + " is not a mesh");
+  if (scene_.obstacles[index].dynamic)
+    throw std::invalid_argument("liquid: obstacle " + std::to_string(index) + " is a dynamic mesh: the liquid turns it");
   if (!(scale > 0.0f && std::isfinite(scale))) throw std::invalid_argument("liquid: a mesh's scale must be finite and > 0");
   if (!(std::isfinite(glm::length(rotation)) && glm::length(rotation) > 0.0f))
     throw std::invalid_argument("liquid: a mesh's rotation must be a finite, nonzero quaternion");
-  scene_.obstacles[index].mesh.rotation = glm::normalize(rotation);
+  if (angular_velocity && !(std::isfinite(angular_velocity->x) && std::isfinite(angular_velocity->y) &&
+                            std::isfinite(angular_velocity->z)))
+    throw std::invalid_argument("liquid: a mesh's angular velocity must be finite");
+  rotation = glm::normalize(rotation);
+  // The turn is measured from the rotation in effect at the last call made at an earlier time (or
+  // the scene's, the first time): calls at one time (several in a frame) correct each other, and
+  // the turn between two frames' calls is the one the host made over that interval.
+  std::optional<MeshTurn>& turn = mesh_turns_[index];
+  if (!turn) {
+    const ObstaclePose now = obstacle_poses(time_)[index];
+    turn = MeshTurn{now.orientation, time_, now.orientation, time_};
+  } else if (time_ > turn->set_at) {
+    turn->from = turn->rotation;
+    turn->from_time = turn->set_at;
+  }
+  turn->rotation = rotation;
+  turn->set_at = time_;
+  if (angular_velocity) {  // the host's: held until its next call
+    turn->angular_velocity = *angular_velocity;
+    turn->until = INFINITY;
+  } else {  // held as long as the turn took, so a mesh the host stops turning stops stirring
+    turn->angular_velocity = turn_rate(turn->from, rotation, time_ - turn->from_time);
+    turn->until = time_ + (time_ - turn->from_time);
+  }
+  scene_.obstacles[index].mesh.rotation = rotation;
   scene_.obstacles[index].mesh.scale = scale;
 }
 
@@ -149,10 +192,18 @@ std::vector<ObstaclePose> Simulation::obstacle_poses(double time) const {
   std::vector<ObstaclePose> poses;
   for (size_t i = 0; i < scene_.obstacles.size(); ++i) {
     const Obstacle& obstacle = scene_.obstacles[i];
-    if (const auto& o = pose_overrides_[i])
-      poses.push_back({o->center + o->velocity * float(time - o->since), o->velocity, obstacle.rotation, glm::vec3(0.0f)});
-    else
-      poses.push_back(scripted_pose(obstacle, time));
+    ObstaclePose pose = scripted_pose(obstacle, time);
+    if (const auto& o = pose_overrides_[i]) {  // the host's centre and velocity; the scripted spin goes on
+      pose.center = o->center + o->velocity * float(time - o->since);
+      pose.velocity = o->velocity;
+    }
+    if (const auto& turn = mesh_turns_[i]) {  // the host's turn of a mesh
+      pose.orientation = turn->rotation;
+      // Steps end a little past a frame's nominal time in float; a millionth of the interval covers them.
+      const double slack = 1e-6 * std::max(turn->until - turn->set_at, 0.0) + 1e-9;
+      pose.angular_velocity = time <= turn->until + slack ? turn->angular_velocity : glm::vec3(0.0f);
+    }
+    poses.push_back(pose);
   }
   for (const BodyState& b : bodies_) poses[size_t(b.obstacle)] = b.pose;  // the last known state
   return poses;
@@ -250,16 +301,20 @@ Simulation::Splat Simulation::add_splat(engine::graph::RenderGraph& graph, const
 }
 
 GridImages Simulation::add_grid(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
-                                const Splat& splat, ImageHandle bodies, const GridImages& grids,
+                                const Splat& splat, ImageHandle bodies, ImageHandle body_shapes, const GridImages& grids,
                                 PressureImages& pressure, ImageHandle mesh_field) const {
-  if (!pressure_) return grid_->add_to(graph, slice, splat.splat, bodies, grids, {}, mesh_field, splat.region);
-  const ImageHandle potential = pressure_->add_to(graph, slice, splat.splat, bodies, pressure.pressure,
+  if (!pressure_) return grid_->add_to(graph, slice, splat.splat, bodies, body_shapes, grids, {}, mesh_field, splat.region);
+  const ImageHandle potential = pressure_->add_to(graph, slice, splat.splat, bodies, body_shapes, pressure.pressure,
                                                   pressure.potential, pressure.scratch, mesh_field, splat.region);
-  return grid_->add_to(graph, slice, splat.splat, bodies, grids, potential, mesh_field, splat.region);
+  return grid_->add_to(graph, slice, splat.splat, bodies, body_shapes, grids, potential, mesh_field, splat.region);
 }
 
 ImageHandle Simulation::update_mesh_field(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
                                           const std::vector<ObstaclePose>& poses, ImageHandle field) {
+  // A mesh is voxelized (and drawn) at its pose's orientation: the scene's, spun by the script, the
+  // host's turn, or a dynamic mesh's last known.
+  for (size_t i = 0; i < scene_.obstacles.size(); ++i)
+    if (scene_.obstacles[i].shape == ObstacleShape::Mesh) scene_.obstacles[i].mesh.rotation = poses[i].orientation;
   if (!mesh_field_) return {};
   return mesh_field_->update(graph, slice, scene_.obstacles, poses, field);
 }
@@ -283,6 +338,7 @@ LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
   for (int i = 0; i < 2; ++i) bodies[i] = graph.import_image(s.bodies[i].name(), s.bodies[i]);
   collect_body_readbacks();
   ImageHandle mesh_field = mesh_field_ ? mesh_field_->import(graph) : ImageHandle{};
+  body_shapes_handle_ = graph.import_image(body_shapes_.name(), body_shapes_);
 
   const float dt = float(time_step_);
   for (int k = 0; k < steps; ++k) {
@@ -303,7 +359,7 @@ LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
     mesh_field = update_mesh_field(graph, slice, step.obstacle_poses, mesh_field);
     const Splat step_splat = add_splat(graph, slice, particles[cur], splat, active_);
     splat = step_splat.splat;
-    grids = add_grid(graph, slice, step_splat, bodies[s.body_current], grids, pressure, mesh_field);
+    grids = add_grid(graph, slice, step_splat, bodies[s.body_current], body_shapes_handle_, grids, pressure, mesh_field);
     if (body_integration_) {
       // The liquid's pressure on the bodies at the pose the grid pass used, then their step; the
       // particle pass keeps particles out of where they are at its end.
@@ -311,13 +367,13 @@ LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
       for (size_t i = 0; i < scene_.obstacles.size(); ++i)
         if (scene_.obstacles[i].dynamic) dynamic.push_back(int(i));
       const BodyForceImages force = body_force_->add_to(graph, slice, splat, pressure.pressure, particles[cur].positions,
-                                                        active_, bodies[s.body_current], dynamic);
+                                                        active_, bodies[s.body_current], body_shapes_handle_, dynamic);
       const int body_next = 1 - s.body_current;
       bodies[body_next] = body_integration_->add_to(graph, slice, bodies[s.body_current], force, bodies[body_next]);
       s.body_current = body_next;
     }
     particles[next] = particle_update_->add_to(graph, slice, particles[cur], splat, grids, bodies[s.body_current],
-                                               particles[next], step.active_after, mesh_field);
+                                               body_shapes_handle_, particles[next], step.active_after, mesh_field);
     s.current = next;
     active_ = step.active_after;
     time_ = t1;
@@ -347,8 +403,8 @@ LiquidImages Simulation::add_grids_to(engine::graph::RenderGraph& graph, const L
   ImageHandle mesh_field = images.mesh_field;
   if (mesh_field_ && !mesh_field.valid()) throw std::invalid_argument("liquid: add_grids_to needs the images of add_to()");
   mesh_field = update_mesh_field(graph, slice, step.obstacle_poses, mesh_field);
-  const GridImages grids = add_grid(graph, slice, splat, images.bodies, GridImages{images.grid_velocity, images.density},
-                                    pressure, mesh_field);
+  const GridImages grids = add_grid(graph, slice, splat, images.bodies, body_shapes_handle_,
+                                    GridImages{images.grid_velocity, images.density}, pressure, mesh_field);
   return {images.positions, images.velocities, splat.splat, grids.velocity, grids.density, images.bodies, mesh_field};
 }
 

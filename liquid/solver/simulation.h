@@ -14,6 +14,7 @@
 #include "liquid/solver/active_region.h"
 #include "liquid/solver/body_force.h"
 #include "liquid/solver/body_integration.h"
+#include "liquid/solver/body_shapes.h"
 #include "liquid/solver/grid.h"
 #include "liquid/solver/mesh_field.h"
 #include "liquid/solver/particle_update.h"
@@ -54,7 +55,8 @@ class Simulation {
   RuntimeParameters runtime_parameters() const { return {setup_.gravity, setup_.pic_ratio, setup_.stiffness}; }
   void set_runtime_parameters(const RuntimeParameters& parameters);
   void set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity);
-  void set_mesh_transform(size_t index, glm::quat rotation, float scale);
+  void set_mesh_transform(size_t index, glm::quat rotation, float scale,
+                          std::optional<glm::vec3> angular_velocity = std::nullopt);
   std::vector<ObstaclePose> obstacle_poses(double time) const;
   void set_body_force(size_t index, glm::vec3 force, glm::vec3 torque);
   std::vector<BodyState> read_bodies();
@@ -106,7 +108,7 @@ class Simulation {
                   const ParticleImages& particles, ImageHandle splat, int active) const;
   // One step's grid pass, after the splat-adjoint pressure passes when the scene uses them.
   GridImages add_grid(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice, const Splat& splat,
-                      ImageHandle bodies, const GridImages& grids, PressureImages& pressure, ImageHandle mesh_field) const;
+                      ImageHandle bodies, ImageHandle body_shapes, const GridImages& grids, PressureImages& pressure, ImageHandle mesh_field) const;
   // The index of a dynamic obstacle, or std::out_of_range / std::invalid_argument naming it.
   size_t dynamic_obstacle(size_t index) const;
   // Keeps the newest per-frame read-back of the body state that has completed (latest_bodies()).
@@ -133,7 +135,11 @@ class Simulation {
   std::unique_ptr<ParticleUpdatePass> particle_update_;
   std::unique_ptr<BodyForcePass> body_force_;              // only with dynamic obstacles
   std::unique_ptr<BodyIntegrationPass> body_integration_;
-  std::unique_ptr<MeshField> mesh_field_;  // only with mesh obstacles
+  std::unique_ptr<MeshField> mesh_field_;  // only with static mesh obstacles
+  // The dynamic meshes' distance in their own frames (liquid/solver/body_shapes.h; 1 x 1 x 1
+  // without them), and its handle in the graph add_to() last declared (add_grids_to() reads it too).
+  engine::vk::Image body_shapes_;
+  ImageHandle body_shapes_handle_;
   std::unique_ptr<LiquidState> state_;
   std::unique_ptr<engine::vk::UniformArena> uniforms_;
   std::unique_ptr<engine::vk::UniformArena> grid_uniforms_;  // add_grids_to()'s block, one per frame
@@ -153,6 +159,18 @@ class Simulation {
     double since;
   };
   std::vector<std::optional<PoseOverride>> pose_overrides_;
+  // A host's turn of a mesh (set_mesh_transform): its rotation, and the angular velocity the liquid
+  // sees at its surface, measured from the rotation in effect at the last call made at an earlier
+  // time (`from`, at `from_time`) unless the host gave it, and held until `until` (s).
+  struct MeshTurn {
+    glm::quat rotation;
+    double set_at = 0.0;  // s, the latest call's time
+    glm::quat from;
+    double from_time = 0.0;
+    glm::vec3 angular_velocity{0.0f};
+    double until = 0.0;
+  };
+  std::vector<std::optional<MeshTurn>> mesh_turns_;
   std::vector<BodyPush> body_pushes_;  // per obstacle
   // The dynamic obstacles' state as last known on the host (a blocking read, or the newest
   // completed per-frame read-back): what the views draw and obstacle_poses() reports for them.

@@ -2,6 +2,7 @@
 
 #include "liquid/physics/body.h"
 #include "liquid/physics/pic_blend.h"
+#include "liquid/solver/body_shapes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -95,7 +96,12 @@ gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& set
         g.ball_count = int(o.balls.size());
         for (const Metaball& m : o.balls) u.balls[ball++] = glm::vec4(m.center, m.radius);
         break;
-      case ObstacleShape::Mesh: break;  // its distance is the mesh field's (liquid/solver/mesh_field.h)
+      case ObstacleShape::Mesh:  // its distance is the mesh field's (liquid/solver/mesh_field.h)
+        if (o.dynamic) {         // or, a body's, the body-shape texture's (liquid/solver/body_shapes.h)
+          g.sphere_radius = body_shape_half_size(o, setup);
+          for (const glm::vec3& v : o.mesh.vertices) g.box_half_extent = glm::max(g.box_half_extent, glm::abs(v) * o.mesh.scale);
+        }
+        break;
     }
   }
   for (size_t i = 0; i < scene.ground.size(); ++i) {

@@ -238,6 +238,40 @@ int mesh_slot(int index) {
          mesh_before(index, 6, OBSTACLE_KIND_6);
 }
 
+// Dynamic meshes (rigid bodies from triangle meshes, 3D): their distance is not in the mesh field
+// (which the host's and scripted meshes' poses place) but in the body-shape texture, one channel
+// per dynamic mesh, in the body's own frame about its centre of mass (liquid/solver/body_shapes.h),
+// sampled at the pose in the body-state texture, as a box's distance is evaluated in its frame.
+bool mesh_body(int index) {
+  return obstacle_kind(index) == LIQUID_OBSTACLE_MESH && obstacle_dynamic(index);
+}
+int mesh_body_before(int index, int j, int code) {
+  return j < index && code == (LIQUID_OBSTACLE_MESH | LIQUID_OBSTACLE_DYNAMIC) ? 1 : 0;
+}
+int mesh_body_slot(int index) {
+  return mesh_body_before(index, 0, OBSTACLE_KIND_0) + mesh_body_before(index, 1, OBSTACLE_KIND_1) +
+         mesh_body_before(index, 2, OBSTACLE_KIND_2) + mesh_body_before(index, 3, OBSTACLE_KIND_3) +
+         mesh_body_before(index, 4, OBSTACLE_KIND_4) + mesh_body_before(index, 5, OBSTACLE_KIND_5) +
+         mesh_body_before(index, 6, OBSTACLE_KIND_6);
+}
+// Declared with the body state (LIQUID_BODIES) in the passes that evaluate obstacles' distances;
+// the integration pass (LIQUID_BODY_STATE_ONLY) reads the state alone.
+#if defined(LIQUID_BODIES) && !defined(LIQUID_BODY_STATE_ONLY)
+#define LIQUID_BODY_SHAPES
+#endif
+#ifdef LIQUID_BODY_SHAPES
+layout(set = 0, binding = LIQUID_BINDING_BODY_SHAPES) uniform sampler3D u_body_shapes;
+// `offset` from the body's centre (world axes): trilinear in its cube of side 2 s (s in
+// sphere_radius), past the cube its value at the cube's face plus the distance to the cube.
+float mesh_body_distance(int index, vec3 offset) {
+  vec3 local = quat_rotate_inverse(obstacle_frame(index).orientation, offset);
+  float half_size = u.obstacles[index].sphere_radius;
+  vec3 uvw = clamp(local / (2.0 * half_size) + 0.5, 0.0, 1.0);
+  float d = channel(textureLod(u_body_shapes, uvw, 0.0), mesh_body_slot(index));
+  return d + length(max(abs(local) - half_size, 0.0));
+}
+#endif
+
 // A grid image with linear filtering at point p (m): trilinear between cell centres (bilinear in
 // 2D), clamped to the grid's edge.
 vec4 sample_grid_linear(GRID_SAMPLER s, vec3 p) {
@@ -304,13 +338,22 @@ MeshSample mesh_sample_at_cell(ivec3 c, bool with_gradient) {
   return m;
 }
 
-// Signed distance of obstacle `index` at p; a mesh's from `meshes` (sampled at p). Only a box
-// turns its distance with its orientation (a sphere's does not change, metaballs take no rotation,
-// a mesh is voxelized turned), so the others skip the quaternion.
+// Signed distance of obstacle `index` at p; a mesh's from `meshes` (sampled at p), a dynamic
+// mesh's from the body-shape texture (far in shaders without the body state: the views draw it
+// as a mesh). Only a box and a dynamic mesh turn their distance with their orientation (a sphere's
+// does not change, metaballs take no rotation, a static mesh is voxelized turned), so the others
+// skip the quaternion.
 float obstacle_distance(int index, vec3 p, MeshSample meshes) {
   Obstacle o = u.obstacles[index];
   vec3 offset = obstacle_offset(index, p);
   int kind = obstacle_kind(index);
+  if (mesh_body(index)) {
+#ifdef LIQUID_BODY_SHAPES
+    return mesh_body_distance(index, offset);
+#else
+    return LIQUID_MESH_FAR;
+#endif
+  }
   if (kind == LIQUID_OBSTACLE_MESH) return channel(meshes.distance, mesh_slot(index));
   if (kind == LIQUID_OBSTACLE_SPHERE) return length(offset) - o.sphere_radius;
   if (kind == LIQUID_OBSTACLE_BOX) {
@@ -331,13 +374,13 @@ float obstacle_distance(int index, vec3 p) {
   return obstacle_distance(index, p, none);
 }
 
-// Outward normal: exact for a sphere, a mesh's from its gradient in `meshes`, by central
-// differences for the other kinds.
+// Outward normal: exact for a sphere, a static mesh's from its gradient in `meshes`, by central
+// differences for the other kinds (a dynamic mesh's of its body-shape distance).
 vec3 obstacle_normal(int index, vec3 p, MeshSample meshes) {
   vec3 n;
   if (obstacle_kind(index) == LIQUID_OBSTACLE_SPHERE) {
     n = obstacle_offset(index, p);
-  } else if (obstacle_kind(index) == LIQUID_OBSTACLE_MESH) {
+  } else if (obstacle_kind(index) == LIQUID_OBSTACLE_MESH && !obstacle_dynamic(index)) {
     int slot = mesh_slot(index);
     n = vec3(channel(meshes.gradient_x, slot), channel(meshes.gradient_y, slot), channel(meshes.gradient_z, slot));
   } else {

@@ -91,6 +91,9 @@
 // The mesh obstacles' signed distance field (the MESH_FIELD variants of the grid, pressure and
 // particle passes and of the 2D view), and the passes that build it (liquid/solver/mesh_field.h).
 #define LIQUID_BINDING_MESH_FIELD 7  // past the bodies' 5
+// The dynamic meshes' distance in their own frames (liquid/solver/body_shapes.h), read with the
+// body state wherever dynamic obstacles are evaluated (LIQUID_BODIES).
+#define LIQUID_BINDING_BODY_SHAPES 8
 #define LIQUID_BINDING_MESH_TRIANGLES 1     // mesh_raster.vert, mesh_draw.vert: the triangles' corners
 #define LIQUID_BINDING_MESH_INSIDE 1        // mesh_spread.frag (the field): the signed crossing counts
 #define LIQUID_BINDING_MESH_NEAREST 2       // mesh_spread.frag: the closest surface points so far
@@ -163,8 +166,8 @@ namespace liquid::gpu {
 
 LIQUID_STRUCT(Obstacle) {
   vec3 center;              // m, at the end of the step
-  float sphere_radius;      // m
-  vec3 box_half_extent;     // m
+  float sphere_radius;      // m; a dynamic mesh: half the side of its cube in the body-shape texture
+  vec3 box_half_extent;     // m; a dynamic mesh: its bounds' half extent about its centre (wall contact)
   float metaball_threshold; // surface where sum (1 - d^2/R^2)^2 reaches it
   vec3 velocity;            // m/s, of the centre
   int first_ball;           // metaballs: first entry in balls[]

@@ -23,7 +23,7 @@ const std::vector<std::string> k_shipped_scenes = {
     "paper_2d_64k.json", "paper_3d.json",     "shallow_water.json", "obstacles_2d.json",
     "rest_pool_2d.json", "symmetric_2d.json", "small_3d.json",      "jet_2d.json",
     "column_2d.json",    "column_3d.json",    "dam_break_tank_2d.json", "floating_box_2d.json",
-    "floating_boxes_3d.json", "mesh_pool_3d.json"};
+    "floating_boxes_3d.json", "mesh_pool_3d.json", "dam_break_3d_floating.json"};
 
 // A small valid 2D scene; each malformed case changes one thing.
 Json valid_2d() {
@@ -100,6 +100,10 @@ TEST_CASE("shipped scenes carry what their names promise", "[scene]") {
   for (const Obstacle& o : paper.obstacles) CHECK(o.shape == ObstacleShape::Sphere);
 
   CHECK(load_scene(k_scene_dir / "dam_break_3d.json").camera.has_value());
+  const Scene boat = load_scene(k_scene_dir / "dam_break_3d_floating.json");
+  REQUIRE(boat.obstacles.size() == 1);
+  CHECK(boat.obstacles[0].shape == ObstacleShape::Mesh);
+  CHECK((boat.obstacles[0].dynamic && boat.obstacles[0].density < 1000.0f));  // floats
   CHECK(load_scene(k_scene_dir / "jet_2d.json").emitters.size() == 1);
 }
 

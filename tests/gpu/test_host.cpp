@@ -1170,6 +1170,16 @@ TEST_CASE("a host's own mesh, from its interleaved vertex buffer, is an obstacle
   }
   // Moved every step: its field made again every step (resampled, or voxelized if it has no reference).
   CHECK(node.simulation().mesh_field()->voxelizations() == 4 * node.substeps());
+  // Its surface turns at the rate of the host's turn between the last two frames, for a frame, then stops.
+  const double frame_time = node.substeps() * node.time_step();
+  CHECK(node.obstacle_poses(node.time())[boat].angular_velocity.y == Approx(0.3 / frame_time).epsilon(1e-3));
+  CHECK(node.obstacle_poses(node.time() + 1.01 * frame_time)[boat].angular_velocity.y == 0.0f);
+  for (int frame = 4; frame < 5; ++frame) {
+    const glm::quat rotation = glm::angleAxis(0.3f * float(frame), glm::vec3(0.0f, 1.0f, 0.0f));
+    // Turning at a known rate about the vertical (rad/s, the liquid's frame).
+    node.set_mesh_transform(boat, rotation, 1.0f, glm::vec3(0.0f, 2.0f, 0.0f));
+    CHECK(node.obstacle_poses(node.time() + 10.0)[boat].angular_velocity.y == 2.0f);  // held until the next call
+  }
   CHECK_THROWS_AS(node.set_mesh_transform(boat + 1, glm::quat(1, 0, 0, 0), 1.0f), std::out_of_range);  // no such obstacle
   CHECK_THROWS_AS(node.set_mesh_transform(boat, glm::quat(1, 0, 0, 0), 0.0f), std::invalid_argument);
   const liquid::Diagnostics d = node.diagnose();

@@ -1,5 +1,5 @@
 // Closed triangle meshes for the tests, built in code: an icosphere (a subdivided icosahedron with
-// its vertices on the sphere), counter-clockwise seen from outside.
+// its vertices on the sphere) and a box, counter-clockwise seen from outside.
 #pragma once
 
 #include "liquid/scene.h"
@@ -40,6 +40,22 @@ inline liquid::TriangleMesh icosphere(float radius, int subdivisions) {
   liquid::TriangleMesh mesh;
   for (const glm::vec3& p : v) mesh.vertices.push_back(p * radius);
   mesh.indices = std::move(f);
+  return mesh;
+}
+
+// A box of half extents `half` centred on the origin: 8 corners, 12 triangles.
+inline liquid::TriangleMesh box_mesh(glm::vec3 half) {
+  liquid::TriangleMesh mesh;
+  for (int i = 0; i < 8; ++i)
+    mesh.vertices.push_back(half * glm::vec3(i & 1 ? 1.0f : -1.0f, i & 2 ? 1.0f : -1.0f, i & 4 ? 1.0f : -1.0f));
+  // Corner i has x from bit 0, y from bit 1, z from bit 2; each face's two triangles counter-clockwise
+  // seen from outside.
+  mesh.indices = {0, 4, 6, 0, 6, 2,   // -x
+                  1, 3, 7, 1, 7, 5,   // +x
+                  0, 1, 5, 0, 5, 4,   // -y
+                  2, 6, 7, 2, 7, 3,   // +y
+                  0, 2, 3, 0, 3, 1,   // -z
+                  4, 5, 7, 4, 7, 6};  // +z
   return mesh;
 }
 

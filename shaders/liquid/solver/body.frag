@@ -13,6 +13,7 @@
 // domain and loses its velocity into a wall (no friction, no contact torque).
 #extension GL_GOOGLE_include_directive : require
 #define LIQUID_BODIES
+#define LIQUID_BODY_STATE_ONLY  // no distances: no body shapes
 #include "liquid/common.glsl"
 
 layout(set = 0, binding = LIQUID_BINDING_BODY_FORCE) uniform sampler2D u_force;
