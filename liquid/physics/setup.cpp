@@ -3,6 +3,7 @@
 #include "liquid/scene/format.h"
 #include "liquid/scene/limits.h"
 
+#include "liquid/physics/body.h"
 #include "liquid/physics/kernel.h"
 #include "liquid/physics/obstacles.h"
 #include "liquid/physics/time_step.h"
@@ -375,6 +376,14 @@ SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
   setup.wall_margin = scene.wall_margin_cells * setup.cell_size;
   setup.wall_share_beyond = wall_share_beyond(scene, spacing / h, gpu::k_wall_table_size);
   setup.body_share_beyond = body_share_beyond(scene, spacing / h, gpu::k_wall_table_size);
+  for (const Obstacle& o : scene.obstacles) {
+    BodyConstants& b = setup.bodies.emplace_back();
+    if (!o.dynamic) continue;
+    b.mass = float(body_mass(o, setup.dimension));
+    b.inertia = body_inertia(o, setup.dimension);
+    b.added_mass = float(body_added_mass(o, setup.dimension, setup.rest_density, setup.cell_size));
+    b.added_inertia_ratio = float(body_added_inertia_ratio(o, setup.dimension, b.added_mass));
+  }
   check_time_step(scene, setup);
   return setup;
 }

@@ -22,6 +22,15 @@ struct DeviceLimits {
 // The solver's parameters, derived from a scene once. The solver reads its scalars from here, never
 // from the Scene (which keeps what the user wrote: shallow water, for one, replaces the scene's
 // stiffness, gamma and gravity); only the scene's lists (obstacles, emitters, hills) are read there.
+// A dynamic obstacle's rigid-body constants (liquid/physics/body.h), computed once: a mesh's take
+// passes over its triangles.
+struct BodyConstants {
+  float mass = 0.0f;                 // kg
+  glm::vec3 inertia{0.0f};           // kg m^2, about the body's axes
+  float added_mass = 0.0f;           // kg (body_added_mass)
+  float added_inertia_ratio = 0.0f;  // (body_added_inertia_ratio)
+};
+
 struct SimulationSetup {
   int dimension = 2;
   bool shallow_water = false;   // section 6's height-field mode
@@ -47,6 +56,7 @@ struct SimulationSetup {
   float wall_margin = 0.0f;     // m, particles are kept this far from every wall (or where they started, if closer)
   std::vector<float> wall_share_beyond;  // the kernel's share beyond a wall k + 0.5 cells away (wall_coverage.h)
   std::vector<float> body_share_beyond;  // the same beyond a dynamic body's surface (body_share_beyond)
+  std::vector<BodyConstants> bodies;     // per obstacle: a dynamic one's constants (zero for the others)
   float obstacle_band = 0.0f;   // m, the obstacle density falls to zero this far outside (one kernel radius)
   float rest_depth = 0.0f;      // m, shallow water's depth at rest
   int initial_particles = 0;    // from fluid blocks

@@ -67,6 +67,10 @@ gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& set
   for (size_t k = 0; k < std::min(setup.body_share_beyond.size(), setup.wall_share_beyond.size()); ++k)
     u.body_kernel_beyond[k / 4][k % 4] = setup.body_share_beyond[k];
 
+  if (setup.bodies.size() != scene.obstacles.size())
+    throw std::invalid_argument("liquid: the setup has body constants for " + std::to_string(setup.bodies.size()) +
+                                " obstacles, the scene has " + std::to_string(scene.obstacles.size()) +
+                                " (make it with make_setup)");
   int ball = 0;
   for (size_t i = 0; i < scene.obstacles.size(); ++i) {
     const Obstacle& o = scene.obstacles[i];
@@ -78,10 +82,11 @@ gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& set
     g.angular_velocity = pose.angular_velocity;
     if (o.dynamic) {
       gpu::Body& b = u.bodies[i];
-      b.mass = float(body_mass(o, setup.dimension));
-      b.inertia = body_inertia(o, setup.dimension);
-      b.added_mass = float(body_added_mass(o, setup.dimension, setup.rest_density, setup.cell_size));
-      b.added_inertia_ratio = float(body_added_inertia_ratio(o, setup.dimension, b.added_mass));
+      const BodyConstants& constants = setup.bodies.at(i);
+      b.mass = constants.mass;
+      b.inertia = constants.inertia;
+      b.added_mass = constants.added_mass;
+      b.added_inertia_ratio = constants.added_inertia_ratio;
       if (i < step.body_pushes.size()) {
         b.external_force = step.body_pushes[i].force;
         b.external_torque = step.body_pushes[i].torque;
