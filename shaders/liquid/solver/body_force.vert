@@ -7,8 +7,9 @@
 // (potential.frag); the body enters E through its kernel coverage C (pressure.frag reads
 // rho_c = splat / C), and dE/dC = -h^d p with p = rho0 (r P - e) the equation of state's pressure,
 // so F = sum_c h^d p_c dC_c/dX, and C is the walls' share less the bodies' shares at the cell and at
-// its images beyond the walls (liquid_coverage), so dC/dX is the gradient of this body's share. Over a column of cells across a face grad C sums to the face's
-// area, and sum_c P_c grad C_c is the surface integral of Phi = W^T P, which still water holds
+// its images beyond the walls (liquid_coverage), so dC/dX is the gradient of this body's share.
+// Over a column of cells across a face grad C sums to the face's area, and sum_c P_c grad C_c is
+// the surface integral of Phi = W^T P, which still water holds
 // hydrostatic (grad Phi = g) whatever its single cells' P do (docs/physics.md, "Bodies that float").
 // The torque: rotating the body moves its coverage the same way about its centre.
 #extension GL_GOOGLE_include_directive : require

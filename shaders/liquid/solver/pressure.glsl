@@ -17,16 +17,16 @@ float kernel_mass_beyond(int k) {
 
 // The kernel's share beyond a dynamic body's surface (the body table) `distance` cells from a cell
 // centre (any distance >= 0): linear between the table's half-cell points, from one half on it.
-float body_mass_beyond_entry(int k) {
-  float beyond = 0.0;
-  [[unroll]] for (int i = 0; i < LIQUID_WALL_TABLE_SIZE; ++i)
-    beyond = k == i ? u.body_kernel_beyond[i / 4][i % 4] : beyond;
-  return beyond;
-}
+// Both entries are selected in one pass over the table.
 float body_mass_beyond(float distance) {
-  if (distance < 0.5) return mix(0.5, body_mass_beyond_entry(0), 2.0 * distance);
-  int k = int(floor(distance - 0.5));
-  return mix(body_mass_beyond_entry(k), body_mass_beyond_entry(k + 1), distance - 0.5 - float(k));
+  int k = int(floor(distance - 0.5));  // -1 below the first point; past the table both are 0
+  float below = 0.0, above = 0.0;
+  [[unroll]] for (int i = 0; i < LIQUID_WALL_TABLE_SIZE; ++i) {
+    float entry = u.body_kernel_beyond[i / 4][i % 4];
+    below = k == i ? entry : below;
+    above = k + 1 == i ? entry : above;
+  }
+  return k < 0 ? mix(0.5, above, 2.0 * distance) : mix(below, above, distance - 0.5 - float(k));
 }
 
 // Share of the kernel inside the domain along one axis, for the cell at index i of n: near a wall
@@ -39,7 +39,10 @@ float axis_coverage(int i, int n) {
 
 // The kernel's share beyond a plane `t` cells from its centre (t < 0: the centre is past the plane),
 // from the body table.
-float share_past_plane(float t) { return t >= 0.0 ? body_mass_beyond(t) : 1.0 - body_mass_beyond(-t); }
+float share_past_plane(float t) {
+  float beyond = body_mass_beyond(abs(t));
+  return t >= 0.0 ? beyond : 1.0 - beyond;
+}
 
 // The kernel's share at p inside dynamic obstacle i. A box's is the product of its slabs' shares
 // along its own axes (each slab: 1 minus the shares past its two faces), exact for one face and
