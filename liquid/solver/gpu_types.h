@@ -19,6 +19,6 @@ static_assert(offsetof(SolverUniforms, rest_depth) == 96);
 static_assert(offsetof(SolverUniforms, wall_kernel_beyond) == 112);
 static_assert(offsetof(SolverUniforms, obstacles) == 144);
 static_assert(offsetof(SolverUniforms, balls) == 144 + 96 * k_max_obstacles);
-static_assert(sizeof(SolverUniforms) == 144 + 96 * 8 + 16 * 32 + 16 * 16 + 32 * 4 + 48 * 4 + 48 * 8 + 16 * 2);
+static_assert(sizeof(SolverUniforms) == 144 + 96 * 8 + 16 * 32 + 16 * 16 + 32 * 4 + 48 * 4 + 48 * 8 + 16 * 2 + 16);
 
 }  // namespace liquid::gpu

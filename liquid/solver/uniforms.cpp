@@ -66,6 +66,7 @@ gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& set
     u.wall_kernel_beyond[k / 4][k % 4] = setup.wall_share_beyond[k];
   for (size_t k = 0; k < std::min(setup.body_share_beyond.size(), setup.wall_share_beyond.size()); ++k)
     u.body_kernel_beyond[k / 4][k % 4] = setup.body_share_beyond[k];
+  u.body_images_beyond_walls = setup.splat == SplatMode::Separable ? 1 : 0;
 
   if (setup.bodies.size() != scene.obstacles.size())
     throw std::invalid_argument("liquid: the setup has body constants for " + std::to_string(setup.bodies.size()) +

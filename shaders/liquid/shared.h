@@ -234,6 +234,12 @@ LIQUID_STRUCT(SolverUniforms) {
   // The same share beyond a dynamic body's surface k + 0.5 cells from a cell centre, as the
   // scene's lattice sees it (uniform liquid reads its rest density there): [k / 4][k % 4].
   vec4 body_kernel_beyond[LIQUID_WALL_TABLE_SIZE / 4];
+  // 1 when the walls are the liquid continued through them (the separable splat's mirror images):
+  // the kernel then also lacks a dynamic body's mirror image beyond a wall (pressure.glsl).
+  int body_images_beyond_walls;
+  int body_unused_0;
+  int body_unused_1;
+  int body_unused_2;
 };
 
 // The textures of a mesh's triangles (3 texels per triangle: its corners in the mesh's frame) are

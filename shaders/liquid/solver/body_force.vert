@@ -6,8 +6,10 @@
 // body's pose. The gradient of E in the particles is the liquid's pressure force, -grad(W^T P)
 // (potential.frag); the body enters E through its kernel coverage C (pressure.frag reads
 // rho_c = splat / C), and dE/dC = -h^d p with p = rho0 (r P - e) the equation of state's pressure,
-// so F = -sum_c h^d p_c dC_c/dX. Over a column of cells across a face grad C sums to the face's
-// area, and sum_c P_c grad C_c is the surface integral of Phi = W^T P, which still water holds
+// so F = sum_c h^d p_c dC_c/dX, and C is the walls' share less the bodies' shares at the cell and at
+// its images beyond the walls (liquid_coverage), so dC/dX is the gradient of this body's share.
+// Over a column of cells across a face grad C sums to the face's area, and sum_c P_c grad C_c is
+// the surface integral of Phi = W^T P, which still water holds
 // hydrostatic (grad Phi = g) whatever its single cells' P do (docs/physics.md, "Bodies that float").
 // The torque: rotating the body moves its coverage the same way about its centre.
 #extension GL_GOOGLE_include_directive : require
@@ -23,12 +25,6 @@ layout(push_constant) uniform BodyForcePush {
 
 layout(location = 0) flat out vec3 v_force;
 layout(location = 1) flat out vec3 v_torque;
-
-// Body `body`'s factor of the kernel coverage at p (body_coverage()'s, before its clamp).
-float coverage_factor(int body, vec3 p) {
-  float d = obstacle_distance(body, p) / cell_size();
-  return d >= 0.0 ? 1.0 - body_mass_beyond(d) : body_mass_beyond(-d);
-}
 
 // The equation of state's pressure p / rho0 = r P - e (m^2/s^2) from the Tait form's P (clamped at
 // zero below rest density, where the energy e is zero too): k gamma / (gamma + 1) (r^(gamma + 1) - 1).
@@ -57,20 +53,24 @@ void main() {
   const vec3 x = cell_center(c);
   // The coverage changes within r of the surface, and the differences reach a cell further.
   if (abs(obstacle_distance(pc.body, x)) >= (u.kernel_radius + 1.0) * h) return;
-  // C is the walls' share times every body's factor; only this body's moves with it.
-  float others = 1.0;
-  [[unroll]] for (int i = 0; i < obstacle_count(); ++i)
-    if (obstacle_dynamic(i) && i != pc.body) others *= coverage_factor(i, x);
-  if (others * coverage_factor(pc.body, x) <= k_min_body_coverage) return;  // under the clamp C does not move
-  vec3 grad_coverage = vec3(0.0);
-  [[unroll]] for (int a = 0; a < DIM; ++a) {
-    vec3 e = vec3(0.0);
-    e[a] = h;
-    grad_coverage[a] = (coverage_factor(pc.body, x + e) - coverage_factor(pc.body, x - e)) / (2.0 * h);
-  }
-  if (dot(grad_coverage, grad_coverage) == 0.0) return;
+  if (liquid_coverage(c) <= k_min_body_coverage) return;  // under the clamp C does not move
+  // C = the walls' share - the bodies' shares at x and at its images (liquid_coverage), so
+  // dC/dX = the gradient of this body's share at each image q, and a turn about the centre moves
+  // it by (q - X) x that gradient.
   const float p = state_pressure(fetch_grid(u_cell_pressure, c).r);
-  v_force = -u.rest_density * p * cell_coverage(c) * others * grad_coverage * pow(h, k_cell_power);
-  v_torque = cross(obstacle_offset(pc.body, x), v_force);
+  if (p == 0.0) return;
+  const float weight = u.rest_density * p * pow(h, k_cell_power);
+  for (int k = 0; k < body_image_count(); ++k) {
+    const vec3 q = body_image(x, k);
+    vec3 grad_share = vec3(0.0);
+    [[unroll]] for (int a = 0; a < DIM; ++a) {
+      vec3 e = vec3(0.0);
+      e[a] = h;
+      grad_share[a] = (body_share_at(pc.body, q + e) - body_share_at(pc.body, q - e)) / (2.0 * h);
+    }
+    v_force += weight * grad_share;
+    v_torque += cross(obstacle_offset(pc.body, q), weight * grad_share);
+  }
+  if (dot(v_force, v_force) == 0.0 && dot(v_torque, v_torque) == 0.0) return;
   gl_Position = vec4(0.0, (float(pc.body) + 0.5) / float(obstacle_count()) * 2.0 - 1.0, 0.0, 1.0);
 }

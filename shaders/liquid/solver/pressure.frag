@@ -1,7 +1,7 @@
 #version 450
 // Splat-adjoint pressure, first pass: the pressure P of every cell (section 2.1's Tait form with the
 // walls' coverage, plus the obstacles' and the ground's artificial density, section 6), exactly as
-// grid.frag computes it for its neighbours, with the dynamic bodies' kernel coverage (body_coverage).
+// grid.frag computes it for its neighbours, with the dynamic bodies' kernel coverage (liquid_coverage).
 // potential.frag then smooths it.
 // Output: target 0 = P (m^2/s^2).
 #extension GL_GOOGLE_include_directive : require
@@ -20,7 +20,7 @@ void main() {
     out_pressure = 0.0;
     return;
   }
-  float rho = u.density_scale * fetch_grid(u_splat, c).a / (cell_coverage(c) * body_coverage(cell_center(c)));
+  float rho = u.density_scale * fetch_grid(u_splat, c).a / liquid_coverage(c);
   rho += obstacle_density_at_cell(c);
   if (shallow_water()) rho += u.rest_density * ground_height(cell_center(c).xy) / u.rest_depth;
   out_pressure = pressure_from_density(rho);
