@@ -161,6 +161,12 @@ double body_added_mass(const Obstacle& o, int dimension, double liquid_density, 
   return liquid_density * (body_volume(o, dimension) + body_surface(o, dimension) * cell_size);
 }
 
+float body_shape_half_size(const Obstacle& o, float kernel_radius_cells, float cell_size) {
+  float farthest = 0.0f;
+  for (const glm::vec3& v : o.mesh.vertices) farthest = std::max(farthest, glm::length(v) * o.mesh.scale);
+  return farthest + (kernel_radius_cells + 3.0f) * cell_size;
+}
+
 double body_added_inertia_ratio(const Obstacle& o, int dimension, double added_mass) {
   const glm::vec3 e = dimension == 2 ? glm::vec3(glm::vec2(o.half_extent), 0.0f) : o.half_extent;
   double radius = o.shape == ObstacleShape::Box ? double(glm::length(e)) : double(o.radius);

@@ -53,6 +53,12 @@ glm::vec3 body_inertia(const Obstacle& obstacle, int dimension);
 // comes to rest.
 double body_added_mass(const Obstacle& obstacle, int dimension, double liquid_density, double cell_size);
 
+// A dynamic mesh's distance texture (liquid/solver/body_shapes.h): half the side (m) of the cube
+// about the body's centre of mass that its channel spans, its mesh's farthest vertex plus the kernel
+// radius and three cells (body_force.vert reads the distance within r + 1 cells of the surface and
+// differences it a cell either side).
+float body_shape_half_size(const Obstacle& obstacle, float kernel_radius_cells, float cell_size);
+
 // The same for rotation, as a fraction of the body's smallest principal moment: the added mass at
 // the body's circumradius (the shell the no-inflow condition turns with it lies there).
 double body_added_inertia_ratio(const Obstacle& obstacle, int dimension, double added_mass);

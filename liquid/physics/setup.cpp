@@ -383,6 +383,9 @@ SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
     b.inertia = body_inertia(o, setup.dimension);
     b.added_mass = float(body_added_mass(o, setup.dimension, setup.rest_density, setup.cell_size));
     b.added_inertia_ratio = float(body_added_inertia_ratio(o, setup.dimension, b.added_mass));
+    if (o.shape != ObstacleShape::Mesh) continue;
+    b.shape_half_size = body_shape_half_size(o, setup.kernel_radius_cells, setup.cell_size);
+    for (const glm::vec3& v : o.mesh.vertices) b.shape_half_extent = glm::max(b.shape_half_extent, glm::abs(v) * o.mesh.scale);
   }
   check_time_step(scene, setup);
   return setup;

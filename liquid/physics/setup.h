@@ -29,6 +29,10 @@ struct BodyConstants {
   glm::vec3 inertia{0.0f};           // kg m^2, about the body's axes
   float added_mass = 0.0f;           // kg (body_added_mass)
   float added_inertia_ratio = 0.0f;  // (body_added_inertia_ratio)
+  // A dynamic mesh's: its distance texture's half side (body_shape_half_size) and its vertices'
+  // largest |coordinate| per axis about its centre of mass (m; the wall contact's extent).
+  float shape_half_size = 0.0f;
+  glm::vec3 shape_half_extent{0.0f};
 };
 
 struct SimulationSetup {

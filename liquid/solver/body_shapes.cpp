@@ -15,17 +15,11 @@ constexpr int k_max_resolution = 128;
 
 bool is_mesh_body(const Obstacle& o) { return o.dynamic && o.shape == ObstacleShape::Mesh; }
 
-float body_shape_half_size(const Obstacle& o, const SimulationSetup& setup) {
-  float farthest = 0.0f;
-  for (const glm::vec3& v : o.mesh.vertices) farthest = std::max(farthest, glm::length(v) * o.mesh.scale);
-  return farthest + (setup.kernel_radius_cells + 3.0f) * setup.cell_size;
-}
-
 int body_shape_resolution(const Scene& scene, const SimulationSetup& setup) {
   int n = 1;
-  for (const Obstacle& o : scene.obstacles)
-    if (is_mesh_body(o))
-      n = std::max(n, int(std::ceil(2.0f * body_shape_half_size(o, setup) / (0.5f * setup.cell_size))));
+  for (size_t i = 0; i < scene.obstacles.size(); ++i)
+    if (is_mesh_body(scene.obstacles[i]))
+      n = std::max(n, int(std::ceil(2.0f * setup.bodies.at(i).shape_half_size / (0.5f * setup.cell_size))));
   return std::min(n, k_max_resolution);
 }
 
@@ -33,9 +27,10 @@ std::vector<glm::vec4> body_shape_texels(const Scene& scene, const SimulationSet
   const int n = body_shape_resolution(scene, setup);
   std::vector<glm::vec4> texels(size_t(n) * n * n, glm::vec4(float(LIQUID_MESH_FAR)));
   int slot = 0;
-  for (const Obstacle& o : scene.obstacles) {
+  for (size_t i = 0; i < scene.obstacles.size(); ++i) {
+    const Obstacle& o = scene.obstacles[i];
     if (!is_mesh_body(o)) continue;
-    const float half = body_shape_half_size(o, setup), spacing = 2.0f * half / float(n);
+    const float half = setup.bodies.at(i).shape_half_size, spacing = 2.0f * half / float(n);
     // The body's own frame: the mesh unturned about its centre of mass (mesh_body_in_principal_frame).
     TriangleMesh own = o.mesh;
     own.rotation = glm::quat(1.0f, 0.0f, 0.0f, 0.0f);

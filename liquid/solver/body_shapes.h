@@ -28,11 +28,6 @@ constexpr VkFormat k_body_shapes_format = VK_FORMAT_R32G32B32A32_SFLOAT;
 // Whether obstacle `o` is a dynamic mesh (a body whose distance is in the body-shape texture).
 bool is_mesh_body(const Obstacle& o);
 
-// Half the side (m) of the cube about the body's centre of mass that its channel spans: its mesh's
-// farthest vertex plus the kernel radius and three cells (body_force.vert reads the distance within
-// r + 1 cells of the surface and differences it a cell either side).
-float body_shape_half_size(const Obstacle& o, const SimulationSetup& setup);
-
 // The texture's texels per side: the largest cube at half a cell, at most 128; 1 without dynamic meshes.
 int body_shape_resolution(const Scene& scene, const SimulationSetup& setup);
 

@@ -317,6 +317,9 @@ ImageHandle MeshField::update(engine::graph::RenderGraph& graph, const engine::v
     bool into_reference;
     uint32_t inside_instances = 1, seed_instances = 1;
   };
+  std::vector<gpu::MeshRasterPush> at_pose;  // each mesh's at its placement: its box in the field
+  for (size_t k = 0; k < meshes_.size(); ++k)
+    at_pose.push_back(raster_push(obstacles[meshes_[k].obstacle].mesh, placements[k], int(k), band_));
   std::vector<Voxelization> voxelizations;
   std::vector<bool> resampled(meshes_.size(), false);
   for (size_t k = 0; k < meshes_.size(); ++k) {
@@ -334,7 +337,7 @@ ImageHandle MeshField::update(engine::graph::RenderGraph& graph, const engine::v
     resampled[k] = reference && reference->scale;
     if (resampled[k] && !at) continue;  // its reference holds it
     const glm::mat4 placement = at ? *at : placements[k];
-    Voxelization v{k, raster_push(mesh, placement, int(k), at ? reference_band() : band_), at.has_value()};
+    Voxelization v{k, at ? raster_push(mesh, *at, int(k), reference_band()) : at_pose[k], at.has_value()};
     // The tallest triangle (cells): the inside pass's slices per triangle are at most its
     // height rounded up, plus one; the seed pass's the whole number of slice centres within its
     // height plus the seed band on either side (a thousandth for the GPU's rounding).
@@ -350,8 +353,7 @@ ImageHandle MeshField::update(engine::graph::RenderGraph& graph, const engine::v
   // The boxes at the poses. The field holds distances only in the boxes of the last update (or of
   // the ones before, if its graph did not run): those are reset to the band by the first pass into it.
   std::vector<MeshBox> boxes;
-  for (size_t k = 0; k < meshes_.size(); ++k)
-    boxes.push_back(box_of(raster_push(obstacles[meshes_[k].obstacle].mesh, placements[k], int(k), band_)));
+  for (const gpu::MeshRasterPush& push : at_pose) boxes.push_back(box_of(push));
   std::vector<MeshBox> reset = written_;
   reset.insert(reset.end(), boxes.begin(), boxes.end());
   unconfirmed_ = std::exchange(written_, boxes);

@@ -104,8 +104,8 @@ gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& set
         break;
       case ObstacleShape::Mesh:  // its distance is the mesh field's (liquid/solver/mesh_field.h)
         if (o.dynamic) {         // or, a body's, the body-shape texture's (liquid/solver/body_shapes.h)
-          g.sphere_radius = body_shape_half_size(o, setup);
-          for (const glm::vec3& v : o.mesh.vertices) g.box_half_extent = glm::max(g.box_half_extent, glm::abs(v) * o.mesh.scale);
+          g.sphere_radius = setup.bodies.at(i).shape_half_size;
+          g.box_half_extent = setup.bodies.at(i).shape_half_extent;
         }
         break;
     }
