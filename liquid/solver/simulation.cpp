@@ -99,7 +99,7 @@ Simulation::Simulation(engine::vk::Context& context, const Scene& scene, const L
   particle_update_ = std::make_unique<ParticleUpdatePass>(context, layout_, specialization, meshes);
   if (meshes) mesh_field_ = std::make_unique<MeshField>(context, scene_, setup_, layout_, specialization);
   const bool dynamic = std::any_of(scene.obstacles.begin(), scene.obstacles.end(), [](const Obstacle& o) { return o.dynamic; });
-  body_shapes_ = make_body_shapes(context, scene_, setup_);
+  body_shapes_ = make_body_shapes(context, scene_, setup_, layout_.path);
   if (dynamic) {
     body_force_ = std::make_unique<BodyForcePass>(context, layout_, int(scene.obstacles.size()), setup_.particle_mass,
                                                   specialization);

@@ -76,6 +76,8 @@ class Simulation {
   void restore_checkpoint(const Checkpoint& checkpoint);
 
   // What only the library's own code sees. The solver parameters derived from the scene:
+  // The dynamic meshes' distance texture (tests read it back).
+  engine::vk::Image& body_shapes() { return body_shapes_; }
   const SimulationSetup& setup() const { return setup_; }
   // How the grids are stored (3D: images or atlases, liquid/solver/grid_layout.h) and the splat's format.
   const GridLayout& grid_layout() const { return layout_; }

@@ -1,8 +1,10 @@
 // Dynamic obstacles (rigid bodies the liquid moves) on lavapipe: Archimedes in 2D and 3D, a heavy
 // body sinking, a neutral one staying put, the momentum the body and the liquid exchange, and a
 // dynamic mesh box moving as the analytic box on every 3D path.
+#include "engine/graph/transfer.h"
 #include "liquid/node.h"
 #include "liquid/physics/body.h"
+#include "liquid/physics/mesh.h"
 #include "liquid/solver/simulation.h"
 #include "tests/gpu/liquid_helpers.h"
 #include "tests/support/meshes.h"
@@ -519,6 +521,69 @@ TEST_CASE("a dynamic mesh box dropped tilted rights itself as the analytic box d
 TEMPLATE_TEST_CASE("on each 3D path a dynamic mesh box moves as the analytic box", "[gpu][liquid][bodies][mesh]",
                    test::VertexLayerPath, test::AtlasPath) {
   compare_mesh_body(TestType::path, 500.0f, 0.12f, 0.3);
+}
+
+// The rasterizer's distance texture of a dynamic mesh against the exact distance on the CPU
+// (liquid/physics/mesh.h), at every texel within its band: the 12-triangle box of the tests above
+// and a 320-triangle sphere, one channel each, turned off the grid's axes so no face lies on a
+// texel plane. Within the seed band (1.5 texels of the surface) the rasterizer's is the exact
+// distance to the closest triangle; beyond it, the jump flood's; past the band, the clamp.
+TEMPLATE_TEST_CASE("on each 3D path the rasterizer voxelizes a dynamic mesh's distance as its exact distance",
+                   "[gpu][liquid][bodies][mesh]", test::GeometryPath, test::VertexLayerPath, test::AtlasPath) {
+  Pool pool = coarse_3d_pool();
+  liquid::Scene scene = pool_scene(pool, 500.0f, 0.12f);
+  const glm::quat turn = glm::angleAxis(0.4f, glm::normalize(glm::vec3(1.0f, 2.0f, 0.5f)));
+  liquid::Obstacle box = scene.obstacles[0];
+  box.shape = liquid::ObstacleShape::Mesh;
+  box.mesh = test::box_mesh(glm::vec3(0.05f, 0.03f, 0.04f));
+  box.mesh.rotation = turn;
+  box.center.x = 0.09f;
+  liquid::Obstacle sphere = box;
+  sphere.mesh = test::icosphere(0.04f, 2);
+  sphere.center.x = 0.23f;
+  scene.obstacles = {box, sphere};
+  engine::vk::Context& context = test::gpu_for(TestType::path);
+  liquid::LiquidNode node(context, scene, test::options_for(TestType::path));
+  liquid::Simulation& simulation = node.simulation();
+  engine::vk::Image& shapes = simulation.body_shapes();
+  const int n = int(shapes.desc().width);
+  const std::vector<std::byte> bytes = engine::graph::download_image(context, shapes);
+  const glm::vec4* texels = reinterpret_cast<const glm::vec4*>(bytes.data());
+  const float h = node.cell_size();
+  for (int slot = 0; slot < 2; ++slot) {
+    // The body's own frame: its mesh about its centre of mass along its principal axes, as the
+    // node re-expressed it.
+    const liquid::Obstacle& o = simulation.scene().obstacles[size_t(slot)];
+    liquid::TriangleMesh own = o.mesh;
+    own.rotation = glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
+    const float half = simulation.setup().bodies.at(size_t(slot)).shape_half_size, texel = 2.0f * half / float(n);
+    const liquid::PlacedMesh exact(own, glm::vec3(0.0f), 2.0f * half);
+    // The field's band (liquid/solver/mesh_field.h): a cell of the node's grid past its kernel, and
+    // the field's margin in the cube's texels.
+    const float band = (scene.kernel_radius_cells + 1.0f) * h + liquid::gpu::k_mesh_field_margin_cells * texel;
+    double worst_seed = 0.0, worst_flood = 0.0, worst_clamp = 0.0;
+    int inside = 0;
+    for (int z = 0; z < n; ++z)
+      for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+          const glm::vec3 p = -glm::vec3(half) + (glm::vec3(x, y, z) + 0.5f) * texel;
+          const float d = exact.distance(p), gpu = texels[size_t(x) + size_t(n) * (size_t(y) + size_t(n) * z)][slot];
+          inside += d < 0.0f ? 1 : 0;
+          const double error = std::abs(double(gpu) - double(std::clamp(d, -band, band))) / texel;
+          if (std::abs(d) <= 1.5f * texel) worst_seed = std::max(worst_seed, error);
+          else if (std::abs(d) < band) worst_flood = std::max(worst_flood, error);
+          else worst_clamp = std::max(worst_clamp, error);
+        }
+    INFO("mesh " << slot << " (" << o.mesh.indices.size() / 3 << " triangles), " << n << "^3 texels of " << texel
+                 << " m, " << inside << " inside: largest error " << worst_seed << " texels within 1.5 of the surface, "
+                 << worst_flood << " within the band, " << worst_clamp << " past it");
+    WARN("mesh " << slot << ": " << worst_seed << " / " << worst_flood << " / " << worst_clamp << " texels");
+    CHECK(inside > 0);
+    CHECK(worst_seed < 0.01);
+    CHECK(worst_flood < 0.2);
+    CHECK(worst_clamp < 0.2);
+  }
+  REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
 TEST_CASE("the shipped dam break with a boat runs, the boat a dynamic mesh the liquid moves", "[gpu][liquid][bodies][mesh]") {
