@@ -200,16 +200,17 @@ float march_liquid(vec3 origin, vec3 dir, float t_enter, float t_exit) {
     outside_t = occupied ? t : brick_end;
     t = occupied ? t + fine : brick_end + nudge;
   }
-  if (!hit) return k_no_hit;
   // Bisection between the last point outside and the first inside (both t_enter when the ray
-  // enters the box inside the liquid).
+  // enters the box inside the liquid). `hit` in the loop's condition, not a return before it: a
+  // group of pixels none of which hit makes one trip instead of five (lavapipe runs a loop's body
+  // while any lane is active, and at least once; docs/lavapipe-performance.md).
   float a = outside_t, b = t;
-  for (int k = 0; k < k_bisection_steps; ++k) {
+  [[dont_unroll]] for (int k = 0; k < k_bisection_steps && hit; ++k) {
     float m = 0.5 * (a + b);
     if (density_at(origin + dir * m) > iso) b = m;
     else a = m;
   }
-  return b;
+  return hit ? b : k_no_hit;
 }
 
 // Where the ray enters the tank already inside the liquid, the surface seen is the tank's wall
@@ -224,11 +225,15 @@ vec3 box_face_normal(vec3 p) {
   return n;
 }
 
-vec3 density_normal(vec3 p) {
-  float e = cell_size();
-  vec3 g = vec3(density_at(p + vec3(e, 0, 0)) - density_at(p - vec3(e, 0, 0)),
-                density_at(p + vec3(0, e, 0)) - density_at(p - vec3(0, e, 0)),
-                density_at(p + vec3(0, 0, e)) - density_at(p - vec3(0, 0, e)));
+// Only where `wanted`, with that in the loop's condition (as the bisection's): a group of pixels
+// that wants none makes one trip of two lookups instead of six.
+vec3 density_normal(vec3 p, bool wanted) {
+  vec3 g = vec3(0.0);
+  [[dont_unroll]] for (int a = 0; a < 3 && wanted; ++a) {
+    vec3 e = vec3(0.0);
+    e[a] = cell_size();
+    g[a] = density_at(p + e) - density_at(p - e);
+  }
   float len = length(g);
   return len > 1e-6 ? -g / len : vec3(0.0, 1.0, 0.0);
 }
@@ -240,7 +245,9 @@ vec3 density_normal(vec3 p) {
 // is at least the distance, in the plane across the edge's axis, from the edge's point there to the
 // ray's shadow line (projecting shortens every distance). The loop below runs only while some pixel
 // of the group may be within reach: lavapipe runs a loop's body once for a group whose pixels all
-// fail its condition, instead of 12 times (docs/lavapipe-performance.md).
+// fail its condition, instead of 12 times. Each such loop here is [[dont_unroll]]: Mesa unrolls a
+// loop of a few constant trips, and its exit then becomes an `if` on each copy of the body, which
+// lavapipe runs whatever the condition (docs/lavapipe-performance.md, "Every line runs").
 bool near_tank_frame(vec3 origin, vec3 dir, float radius) {
   vec3 d = u.domain;
   vec4 corner_u = vec4(0.0, 1.0, 0.0, 1.0), corner_v = vec4(0.0, 0.0, 1.0, 1.0);  // the 4 edges of an axis
@@ -263,7 +270,7 @@ float trace_tank_frame(vec3 origin, vec3 dir, float radius) {
   vec3 d = u.domain;
   float best = k_no_hit;
   bool near = near_tank_frame(origin, dir, radius);
-  for (int axis = 0; axis < 3 && near; ++axis) {
+  [[dont_unroll]] for (int axis = 0; axis < 3 && near; ++axis) {
     for (int corner = 0; corner < 4; ++corner) {
       // Edge along `axis` at the corner of the other two axes picked by the two bits of `corner`.
       vec3 a = vec3(0.0);
@@ -316,7 +323,7 @@ void main() {
   if (t_liquid < k_no_hit) {
     vec3 p = origin + dir * t_liquid;
     bool through_wall = span.x > 0.0 && t_liquid <= span.x + 1e-3 * cell_size();
-    vec3 n = through_wall ? box_face_normal(p) : density_normal(p);
+    vec3 n = through_wall ? box_face_normal(p) : density_normal(p, t_liquid < k_no_hit && !through_wall);
     float cos_theta = clamp(dot(-dir, n), 0.0, 1.0);
     float fresnel = 0.02 + 0.98 * pow(1.0 - cos_theta, 5.0);  // Schlick, water F0 = 0.02
     vec3 reflected = sky(reflect(dir, n));
@@ -332,7 +339,8 @@ void main() {
     vec2 pixel = gl_FragCoord.xy - vec2(r.viewport_x, r.viewport_y);
     float jitter = fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
     vec3 q = p + refracted_dir * step_length * (jitter - 1.0);
-    for (int k = 0; k < 16; ++k) {
+    // Kept a loop (see near_tank_frame): it ends when every ray of the group has left the box.
+    [[dont_unroll]] for (int k = 0; k < 16; ++k) {
       q += refracted_dir * step_length;
       if (any(lessThan(q, vec3(0.0))) || any(greaterThan(q, u.domain))) break;
       if (fetch_grid(u_density, ivec3(q / cell_size())).r > r.iso_level) thickness += step_length;
