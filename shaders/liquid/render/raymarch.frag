@@ -261,6 +261,7 @@ bool near_tank_frame(vec3 origin, vec3 dir, float radius) {
     // ray runs along the axis).
     vec4 cross_d = across.x * to_v - across.y * to_u;
     vec4 distance2 = across2 > 1e-12 ? cross_d * cross_d / across2 : to_u * to_u + to_v * to_v;
+    // A hair over the radius, so that float rounding never drops a pixel the exact test keeps.
     near = near || any(lessThan(distance2, vec4(radius * radius * 1.0001)));
   }
   return near;
