@@ -2,6 +2,7 @@
 
 #include "liquid/scene/format.h"
 #include "liquid/scene/limits.h"
+#include "liquid/scene/obstacle_checks.h"
 
 #include "liquid/physics/body.h"
 #include "liquid/physics/kernel.h"
@@ -307,7 +308,9 @@ double splat_kernel_integral_cells(SplatMode mode, int dimension, double radius_
 SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
   if (scene.dimension != 2 && scene.dimension != 3)
     fail(scene, "dimension", "must be 2 or 3, got " + std::to_string(scene.dimension));
-  check_list_limits(scene);  // again for a scene built in code; a file's was checked when read
+  // Again for a scene built in code; a file's was checked when read.
+  check_list_limits(scene);
+  check_obstacle_placement(scene);
   SimulationSetup setup;
   setup.dimension = scene.dimension;
   setup.shallow_water = scene.mode == SimulationMode::ShallowWater;
