@@ -587,6 +587,13 @@ def check_video():
                             "-of", "csv=p=0", video], capture_output=True, text=True)
     if probe.stdout.strip() != "48,6":
         fail(f"ffprobe says {probe.stdout.strip()!r}: expected 6 frames 48 pixels wide (padded to even)")
+    # A run that fails after writing a frame leaves the video already there as it was.
+    encoded = open(video, "rb").read()
+    unstable = os.path.join(os.path.dirname(ARGS.scene), "unstable_2d.json")
+    run([unstable, "-s", "0", "-e", "2", "--steps-per-frame", "20", "-o", out, "--video", video, "--overwrite"] + SMALL,
+        expect=1)
+    if open(video, "rb").read() != encoded or os.path.exists(video + ".partial"):
+        fail("a failed --overwrite run replaced the video already there")
     # A relative name that ffmpeg would read as an option ("-lead.mp4"), given from another
     # directory: encoded where it was asked for, and recorded absolute for a resume from elsewhere.
     lead, out2 = os.path.join(ARGS.work, "-lead.mp4"), os.path.join(ARGS.work, "video_lead")
