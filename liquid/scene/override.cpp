@@ -33,6 +33,12 @@ std::vector<std::string> path_parts(const std::string& path) {
   return parts;
 }
 
+// Why a path with no parts (empty, "a..b", "a.") is refused, the same from parse_scene_override()
+// (a bad flag) and apply() (an override built in code).
+std::string not_a_field_path(const std::string& path) {
+  return "--set " + printable(path) + ": not a field path (use name, camera.position, fluid_blocks.0.max)";
+}
+
 bool is_index(const std::string& part) {
   return !part.empty() && part.find_first_not_of("0123456789") == std::string::npos && part.size() < 10;
 }
@@ -40,7 +46,7 @@ bool is_index(const std::string& part) {
 void apply(Json& doc, const SceneOverride& o) {
   const std::string where = "--set " + printable(o.path);
   const std::vector<std::string> parts = path_parts(o.path);
-  if (parts.empty()) throw SceneError(where + ": not a field path (use name, camera.position, fluid_blocks.0.max)");
+  if (parts.empty()) throw SceneError(not_a_field_path(o.path));
   // The scene file's limits, checked before the value is parsed or the document printed again.
   if (o.value.size() > k_max_scene_bytes)
     throw SceneError(where + ": the value is " + format_number(double(o.value.size())) + " bytes, larger than the " +
@@ -92,6 +98,8 @@ SceneOverride parse_scene_override(const std::string& text) {
   const size_t equals = text.find('=');
   if (equals == std::string::npos || equals == 0)
     throw std::invalid_argument("--set " + printable(text) + ": expected key=value (e.g. --set stiffness=20)");
+  // A path that cannot name a field is a bad flag too, refused before any scene is read.
+  if (path_parts(text.substr(0, equals)).empty()) throw std::invalid_argument(not_a_field_path(text.substr(0, equals)));
   return {text.substr(0, equals), text.substr(equals + 1)};
 }
 

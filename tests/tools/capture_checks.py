@@ -65,9 +65,9 @@ def read_ply(path):
     return namespace["read_liquid_ply"](path)
 
 
-def start_and_interrupt(args, after_frame_line, sig):
+def start_and_interrupt(args, after_frame_line, sig, cwd=None):
     """Starts a run, waits until it reports `after_frame_line` frames done, sends `sig`."""
-    process = subprocess.Popen([ARGS.tool] + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    process = subprocess.Popen([ARGS.tool] + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=cwd)
     for line in process.stdout:
         if line.startswith(f"frame {after_frame_line} of "):
             process.send_signal(sig)
@@ -285,6 +285,107 @@ def check_failsafe():
     print(f"a failed resume and a failed --overwrite left {len(old)} files as they were")
 
 
+def check_replace():
+    """--overwrite keeps the replaced run set aside until the new run ends well: a run that fails
+    after writing a frame removes its files and puts the old run back; after a run killed outright
+    the next run into the folder puts the old run back and says so; a run the user stops (SIGINT)
+    is the run, and the old one is deleted."""
+    out = os.path.join(ARGS.work, "replace")
+    shutil.rmtree(out, ignore_errors=True)
+    run([ARGS.scene, "-e", "2", "--export-particles", "-o", out] + SMALL)
+    old = contents(out)
+    unstable = os.path.join(os.path.dirname(ARGS.scene), "unstable_2d.json")
+    # Frame 0, the initial state, is written; the steps to frame 1 blow up.
+    failed = run([unstable, "-s", "0", "-e", "2", "--steps-per-frame", "20", "-o", out, "--overwrite"] + SMALL, expect=1)
+    if "unstable" not in failed.stderr or "frame 1 of 3" not in failed.stdout:
+        fail(f"the overwriting run should fail as unstable after writing frame 0: {failed.stdout!r} {failed.stderr!r}")
+    if files(out) != sorted(old) or contents(out) != old:
+        fail(f"a failed --overwrite run should leave the old run as it was: {files(out)}")
+    code, err = start_and_interrupt([ARGS.scene, "-e", "400", "-o", out, "--overwrite"] + SMALL, 2, signal.SIGKILL)
+    if not any(n.startswith(".replaced-run-") for n in files(out)):
+        fail(f"the killed --overwrite run left no set-aside run: {files(out)}")
+    refused = run([ARGS.scene, "-e", "1", "-o", out] + SMALL, expect=1)
+    if "put back the run that a killed --overwrite run had set aside" not in refused.stdout or \
+            refused.stderr.count("\n") != 1 or "holds another capture's files" not in refused.stderr:
+        fail(f"the next run should put the old run back, then refuse the folder: {refused.stdout!r} {refused.stderr!r}")
+    if files(out) != sorted(old) or contents(out) != old:
+        fail(f"after a killed --overwrite run the next run should have put the old run back: {files(out)}")
+    code, err = start_and_interrupt([ARGS.scene, "-e", "400", "-o", out, "--overwrite"] + SMALL, 2, signal.SIGINT)
+    names = files(out)
+    if code != 130 or any(n.startswith(".replaced-run-") or n.endswith(".ply") for n in names) or \
+            json.load(open(os.path.join(out, "summary.json")))["status"] != "interrupted":
+        fail(f"an --overwrite run stopped by the user should keep its frames and delete the old run: exit {code}, {names}")
+    print(f"a failed and a killed --overwrite run left {len(old)} files as they were; a stopped one replaced them")
+
+
+def check_refusals():
+    """Bad path flags are refused by name before the run, in one line with exit status 2, nothing
+    written: an empty --video or --resume, a --video that is the output folder, a --set path that
+    names no field."""
+    out = os.path.join(ARGS.work, "refused.mp4")
+    for args, message in (([ARGS.scene, "-e", "1", "-o", out, "--video", ""] + SMALL, "--video: needs a file name"),
+                          (["--resume", ""], "--resume: needs a capture folder"),
+                          ([ARGS.scene, "-o", out, "--video", out], f"--video {out}: is the output folder"),
+                          ([ARGS.scene, "-o", out, "--set", "a..b=1"], "--set a..b: not a field path")):
+        shutil.rmtree(out, ignore_errors=True)
+        refused = run(args, expect=2)
+        if refused.stderr.count("\n") != 1 or message not in refused.stderr or refused.stdout:
+            fail(f"{args}: should be refused in one line saying {message!r}: {refused.stdout!r} {refused.stderr!r}")
+        if os.path.exists(out) or os.path.exists(out + ".partial"):
+            fail(f"{args}: the refused run wrote {out}")
+
+
+def check_lock_write():
+    """A write that fails while the folder's lock is written (a full disk; here a file size limit of
+    0 bytes, so no file gets a byte) fails in one line and leaves no new folder behind."""
+    import resource
+    top = os.path.join(ARGS.work, "never_locked")
+    shutil.rmtree(top, ignore_errors=True)
+
+    def no_file_bytes():
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)  # a write past the limit fails instead of killing
+        resource.setrlimit(resource.RLIMIT_FSIZE, (0, 0))
+    result = subprocess.run([ARGS.tool, ARGS.scene, "-e", "1", "-o", os.path.join(top, "deeper")] + SMALL,
+                            capture_output=True, text=True, timeout=600, preexec_fn=no_file_bytes)
+    if result.returncode != 1 or result.stderr.count("\n") != 1 or "cannot write the folder's lock" not in result.stderr:
+        fail(f"a failed lock write should fail in one line: exit {result.returncode}, {result.stderr!r}")
+    if os.path.exists(top):
+        fail(f"a run whose lock could not be written left {top} behind: {os.listdir(top)}")
+
+
+# A closed cube, 6 cm across, faces wound outward.
+CUBE_OBJ = """v -0.03 -0.03 -0.03\nv 0.03 -0.03 -0.03\nv 0.03 0.03 -0.03\nv -0.03 0.03 -0.03
+v -0.03 -0.03 0.03\nv 0.03 -0.03 0.03\nv 0.03 0.03 0.03\nv -0.03 0.03 0.03
+f 1 4 3\nf 1 3 2\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 4 8 7\nf 4 7 3\nf 1 5 8\nf 1 8 4\nf 2 3 7\nf 2 7 6
+"""
+
+
+def check_resume_elsewhere():
+    """A run started with relative paths, of a scene whose mesh obstacle's file is relative to the
+    scene's folder, resumes from another working folder: capture.json records the scene absolute."""
+    base = os.path.join(ARGS.work, "mesh_scene")
+    shutil.rmtree(base, ignore_errors=True)
+    os.makedirs(os.path.join(base, "meshes"))
+    open(os.path.join(base, "meshes", "cube.obj"), "w").write(CUBE_OBJ)
+    scene = json.load(open(ARGS.scene))
+    scene["obstacles"] = [{"shape": "mesh", "file": "meshes/cube.obj", "center": [0.2, 0.05, 0.1]}]
+    json.dump(scene, open(os.path.join(base, "scene.json"), "w"))
+    code, err = start_and_interrupt(["scene.json", "-e", "6", "--checkpoint-every", "1", "-o", "out"] + SMALL, 2,
+                                    signal.SIGINT, cwd=base)
+    if code not in (0, 130):
+        fail(f"the run to resume exited {code}: {err}")
+    recorded = json.load(open(os.path.join(base, "out", "capture.json")))["scene_source"]
+    if recorded != os.path.join(base, "scene.json"):
+        fail(f"capture.json records the scene as {recorded!r}, not the absolute {os.path.join(base, 'scene.json')!r}")
+    resumed = subprocess.run([ARGS.tool, "--resume", os.path.join(base, "out"), "--validation"], capture_output=True,
+                             text=True, timeout=600, cwd=ARGS.work)
+    if resumed.returncode != 0:
+        fail(f"the resume from another folder failed: exit {resumed.returncode}, {resumed.stderr!r}")
+    frames = [n for n in files(os.path.join(base, "out")) if n.endswith(".png")]
+    if len(frames) != 6:
+        fail(f"the resumed run wrote {frames}, expected frames 1 to 6")
+
+
 def check_lock():
     """A folder is one run's while it runs: a --resume or an --overwrite run into it is refused in
     one line naming the running one's process id, and the running one finishes unharmed."""
@@ -486,6 +587,13 @@ def check_video():
                             "-of", "csv=p=0", video], capture_output=True, text=True)
     if probe.stdout.strip() != "48,6":
         fail(f"ffprobe says {probe.stdout.strip()!r}: expected 6 frames 48 pixels wide (padded to even)")
+    # A run that fails after writing a frame leaves the video already there as it was.
+    encoded = open(video, "rb").read()
+    unstable = os.path.join(os.path.dirname(ARGS.scene), "unstable_2d.json")
+    run([unstable, "-s", "0", "-e", "2", "--steps-per-frame", "20", "-o", out, "--video", video, "--overwrite"] + SMALL,
+        expect=1)
+    if open(video, "rb").read() != encoded or os.path.exists(video + ".partial"):
+        fail("a failed --overwrite run replaced the video already there")
     # A relative name that ffmpeg would read as an option ("-lead.mp4"), given from another
     # directory: encoded where it was asked for, and recorded absolute for a resume from elsewhere.
     lead, out2 = os.path.join(ARGS.work, "-lead.mp4"), os.path.join(ARGS.work, "video_lead")
@@ -551,6 +659,7 @@ if __name__ == "__main__":
     checks = {"sigint": lambda: check_interrupt(signal.SIGINT), "sigterm": lambda: check_interrupt(signal.SIGTERM),
               "resume": check_resume, "dryrun": check_dry_run, "estimate": check_estimate, "names": check_names, "folders": check_folders, "range": check_range, "volume": check_volume,
               "video": check_video, "adaptive": check_adaptive,
-              "failsafe": check_failsafe, "lock": check_lock, "fps": check_fps}
+              "failsafe": check_failsafe, "lock": check_lock, "fps": check_fps, "replace": check_replace,
+              "refusals": check_refusals, "lock_write": check_lock_write, "resume_elsewhere": check_resume_elsewhere}
     checks[ARGS.check]()
     print("ok")

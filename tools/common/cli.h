@@ -67,6 +67,13 @@ inline CLI::Validator integer_range(std::int64_t lo, std::int64_t hi) {
       "INTEGER in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]", "INTEGER_RANGE");
 }
 
+// A check for a flag naming a file or folder: an empty value ("--video ''", "--video=") is refused
+// by name, "--video: needs a file name", instead of being taken for the flag not given.
+inline CLI::Validator non_empty(const std::string& what) {
+  return CLI::Validator([what](std::string& text) -> std::string { return text.empty() ? "needs " + what : ""; },
+                        "NON_EMPTY", "NON_EMPTY");
+}
+
 // The most of one error message a tool prints: a message that echoes a huge argument back is cut.
 inline constexpr size_t k_max_error_bytes = 4096;
 

@@ -134,12 +134,26 @@ std::string read_record(const fs::path& path) {
   return text;
 }
 
-// Before --video, the checks that need no device: ffmpeg installed, the file free, its folder there.
+// A path as the file system will resolve it, for comparing two: absolute, links resolved as far as
+// they exist, no trailing separator.
+fs::path resolved(const fs::path& path) {
+  std::error_code error;
+  fs::path p = fs::weakly_canonical(fs::absolute(path), error);
+  if (error) p = fs::absolute(path).lexically_normal();
+  return p.has_filename() ? p : p.parent_path();
+}
+
+// Before --video, the checks that need no device: ffmpeg installed, the file free and not the
+// output folder, its folder there (or the output folder, which the run creates).
 void check_video(const RunSettings& s, bool overwrite) {
   if (s.video.empty()) return;
   const fs::path path(s.video);
+  const fs::path out = resolved(s.folder);
+  if (resolved(path) == out)
+    throw capture::UsageError("--video " + s.video + ": is the output folder; name a file (e.g. " +
+                              (out / "liquid.mp4").string() + ")");
   const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
-  if (!fs::is_directory(folder) || !engine::io::folder_is_writable(folder))
+  if (resolved(folder) != out && (!fs::is_directory(folder) || !engine::io::folder_is_writable(folder)))
     throw std::runtime_error("--video " + s.video + ": " + folder.string() + " is not a writable folder");
   if (fs::is_directory(path)) throw std::runtime_error("--video " + s.video + ": is a folder, not a video file");
   if (fs::exists(path) && !overwrite) throw std::runtime_error(s.video + ": exists; --overwrite replaces it");
@@ -176,6 +190,9 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
     throw std::runtime_error("--export-volume: this build has no OpenVDB (install libopenvdb-dev and "
                              "libboost-iostreams-dev, then configure again)");
   check_video(settings, options.overwrite || resuming);
+  // A video already there (a replaced run's, or the one a resumed run made) is replaced only by a
+  // run that ends well: a failed one removes its own instead.
+  const bool video_existed = !settings.video.empty() && fs::exists(settings.video);
   using Mode = capture::RunFolder::Mode;
   capture::RunFolder folder(settings, options.dry_run ? Mode::DryRun
                                       : resuming      ? Mode::Resume
@@ -242,6 +259,10 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
     stats.finish();
     std::string video_status = video ? "finished" : "";
     try {
+      if (video && status.rfind("failed", 0) == 0 && video_existed) {
+        video.reset();  // stops ffmpeg and removes its partial file
+        video_status = "not written: the run failed, and " + settings.video + " is kept";
+      }
       if (video) video->finish();
     } catch (const std::exception& error) {  // the frames, table and summary still stand
       video_status = std::string("failed: ") + error.what();
@@ -256,7 +277,7 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
                         {"frame_seconds", plan.frame_seconds()},
                         {"resumed_after_frame", resuming ? json(checkpoint.frame) : json(nullptr)},
                         {"run_wall_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()}};
-    if (video) facts["video"] = video_status;
+    if (!video_status.empty()) facts["video"] = video_status;
     engine::io::write_file_atomically(settings.folder / capture::k_summary_name, capture::summary_json(stats.text(), facts));
     if (video_status.rfind("failed", 0) == 0) throw std::runtime_error("--video: " + video_status);
   };
@@ -291,14 +312,20 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
   } catch (const std::exception& error) {
     progress.interrupt();  // the error message starts on its own line
     try {
-      if (last_done >= plan.start) conclude(std::string("failed: ") + error.what());
+      // With a replaced run to put back, the new run's files are removed: no summary to write.
+      if (last_done >= plan.start && !folder.puts_back_on_failure()) conclude(std::string("failed: ") + error.what());
     } catch (...) {
     }
     throw;
   }
   if (g_stop_signal) {
     progress.interrupt();
-    if (last_done >= plan.start || resuming) conclude("interrupted");
+    // The user chose to stop here: what was written is the run, as if it had ended there, and
+    // replaces the run set aside. Stopped before writing anything, the run is given up like a failed one.
+    if (last_done >= plan.start || resuming) {
+      conclude("interrupted");
+      folder.ended_well();
+    }
     const char* name = g_stop_signal == SIGTERM ? "SIGTERM" : "SIGINT";
     std::fprintf(stderr, "liquid_capture: interrupted (%s) after frame %d; %s\n", name, last_done,
                  last_done >= plan.start ? ("files, stats.csv and summary.json cover frames " + std::to_string(plan.start) +
@@ -307,8 +334,9 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
     return k_interrupted_exit;
   }
   conclude("finished");
-  std::printf("liquid_capture: wrote frames %d to %d to %s\n", plan.start, plan.end, settings.folder.string().c_str());
   tools::fail_on_validation_messages(context.validation_message_count());
+  folder.ended_well();
+  std::printf("liquid_capture: wrote frames %d to %d to %s\n", plan.start, plan.end, settings.folder.string().c_str());
   return 0;
 }
 

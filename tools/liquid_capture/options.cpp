@@ -24,8 +24,11 @@ using nlohmann::json;
 void add_options(CLI::App& app, CaptureOptions& o) {
   using tools::finite_range;
   using tools::integer_range;
+  using tools::non_empty;
   app.add_option("scene", o.scene, "scene JSON file, or the name of one in assets/scenes/ (dam_break_2d)");
-  app.add_option("-o,--out", o.out, "output folder, or a frame name pattern in it (out/liquid_####.png)")->take_last();
+  app.add_option("-o,--out", o.out, "output folder, or a frame name pattern in it (out/liquid_####.png)")
+      ->take_last()
+      ->check(non_empty("a folder or a frame name pattern"));
   app.add_option("-s,--start", o.start, "first frame written (0: the initial state)")->check(integer_range(0, k_max_frame));
   app.add_option("-e,--end", o.end, "last frame written")->check(integer_range(0, k_max_frame));
   app.add_option("-n,--frames", o.frames, "frames written (default 60): sets --end to start + N - 1")
@@ -51,15 +54,19 @@ void add_options(CLI::App& app, CaptureOptions& o) {
   app.add_flag("--export-particles", o.export_particles,
                "write each frame's particles as binary PLY (x y z vx vy vz id density)");
   app.add_option("--particles-name", o.particles_name, "PLY name pattern (default particles_#####.ply); "
-                                                       "implies --export-particles");
+                                                       "implies --export-particles")
+      ->check(non_empty("a name pattern"));
   app.add_flag("--export-volume", o.export_volume, "write each frame's density and velocity grids as OpenVDB");
-  app.add_option("--volume-name", o.volume_name, "VDB name pattern (default volume_#####.vdb); implies --export-volume");
+  app.add_option("--volume-name", o.volume_name, "VDB name pattern (default volume_#####.vdb); implies --export-volume")
+      ->check(non_empty("a name pattern"));
   app.add_option("--set", o.set, "override a scene field: key=value, dotted paths (fluid_blocks.0.max=[0.1,0.2,0.2])")
       ->take_all();
   app.add_option("--checkpoint-every", o.checkpoint_every, "save a checkpoint every N frames (for --resume)")
       ->check(integer_range(1, k_max_frame));
-  app.add_option("--resume", o.resume, "continue the run in FOLDER from its last checkpoint");
-  app.add_option("--video", o.video, "also encode the frames with ffmpeg (.mp4, .mkv or .mov)");
+  app.add_option("--resume", o.resume, "continue the run in FOLDER from its last checkpoint")
+      ->check(non_empty("a capture folder"));
+  app.add_option("--video", o.video, "also encode the frames with ffmpeg (.mp4, .mkv or .mov)")
+      ->check(non_empty("a file name"));
   app.add_flag("--overwrite", o.overwrite, "replace another capture's files in the output folder");
   app.add_flag("--dry-run", o.dry_run, "print the resolved scene, the frame plan and a time estimate; write nothing");
   app.add_flag("--validation", o.validation, "enable the Vulkan validation layer; any message fails the run");
@@ -123,7 +130,9 @@ RunSettings settle(const CaptureOptions& o, int max_steps_per_frame) {
       throw UsageError(e.what());
     }
   }
-  r.scene_source = scene_path.string();
+  // Recorded absolute, so a --resume from another directory finds the scene, and the files it names
+  // relative to its folder (a mesh obstacle's "file").
+  r.scene_source = fs::absolute(scene_path).lexically_normal().string();
   r.scene_document = liquid::scene_document(scene_path, overrides);
   r.overrides = o.set;
   const liquid::Scene scene = liquid::parse_scene(r.scene_document, r.scene_label());

@@ -7,6 +7,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -43,17 +46,12 @@ std::vector<NamePattern> recorded_patterns(const fs::path& folder) {
   return patterns;
 }
 
-}  // namespace
-
-std::vector<fs::path> run_files(const RunSettings& settings) {
+// The files in `folder` with a fixed name or one of `patterns`, and their .partial temporaries.
+std::vector<fs::path> files_named(const fs::path& folder, const std::vector<NamePattern>& patterns) {
   std::vector<fs::path> files;
   std::error_code error;
-  if (!fs::is_directory(settings.folder, error)) return files;
-  std::vector<NamePattern> patterns = recorded_patterns(settings.folder);
-  patterns.push_back(settings.frames);
-  if (settings.particles) patterns.push_back(*settings.particles);
-  if (settings.volumes) patterns.push_back(*settings.volumes);
-  for (const auto& entry : fs::directory_iterator(settings.folder, error)) {
+  if (!fs::is_directory(folder, error)) return files;
+  for (const auto& entry : fs::directory_iterator(folder, error)) {
     if (!entry.is_regular_file(error)) continue;
     const std::string name = entry.path().filename().string();
     if (is_fixed_name(name) ||
@@ -64,18 +62,25 @@ std::vector<fs::path> run_files(const RunSettings& settings) {
   return files;
 }
 
-RunFolder::RunFolder(const RunSettings& settings, Mode mode)
-    : folder_(settings.folder), mode_(mode), kept_(mode == Mode::Resume) {
-  const bool dry_run = mode == Mode::DryRun;
-  const std::vector<fs::path> existing = run_files(settings);
-  if (!existing.empty() && mode == Mode::New) {
-    std::string names = existing.front().filename().string();
-    if (existing.size() > 1) names += " and " + std::to_string(existing.size() - 1) + " more";
-    throw std::runtime_error(folder_.string() + ": holds another capture's files (" + names +
-                             "); --overwrite replaces them, or choose another folder");
-  }
-  if (mode == Mode::Overwrite) old_files_ = existing;
+// The run's own name patterns.
+std::vector<NamePattern> own_patterns(const RunSettings& settings) {
+  std::vector<NamePattern> patterns{settings.frames};
+  if (settings.particles) patterns.push_back(*settings.particles);
+  if (settings.volumes) patterns.push_back(*settings.volumes);
+  return patterns;
+}
 
+}  // namespace
+
+std::vector<fs::path> run_files(const RunSettings& settings) {
+  std::vector<NamePattern> patterns = recorded_patterns(settings.folder);
+  for (const NamePattern& p : own_patterns(settings)) patterns.push_back(p);
+  return files_named(settings.folder, patterns);
+}
+
+RunFolder::RunFolder(const RunSettings& settings, Mode mode)
+    : folder_(settings.folder), patterns_(own_patterns(settings)), mode_(mode), kept_(mode == Mode::Resume) {
+  const bool dry_run = mode == Mode::DryRun;
   // The folders that do not exist yet, outermost first: the ones this run creates.
   std::vector<fs::path> missing;
   std::error_code error;
@@ -83,20 +88,30 @@ RunFolder::RunFolder(const RunSettings& settings, Mode mode)
     missing.insert(missing.begin(), p);
     if (p == p.parent_path()) break;
   }
-  if (dry_run) {
-    const fs::path ancestor = missing.empty() ? fs::absolute(folder_, error) : missing.front().parent_path();
-    if (!fs::is_directory(ancestor, error))
-      throw std::runtime_error(folder_.string() + ": cannot create the output folder (" + ancestor.string() +
-                               " is not a folder)");
-    if (::access(ancestor.c_str(), W_OK | X_OK) != 0)
-      throw std::runtime_error(folder_.string() + ": the output folder is not writable");
-    return;
-  }
   try {
+    if (!dry_run && missing.empty()) recover_set_aside();
+    const std::vector<fs::path> existing = run_files(settings);
+    if (!existing.empty() && mode == Mode::New) {
+      std::string names = existing.front().filename().string();
+      if (existing.size() > 1) names += " and " + std::to_string(existing.size() - 1) + " more";
+      throw std::runtime_error(folder_.string() + ": holds another capture's files (" + names +
+                               "); --overwrite replaces them, or choose another folder");
+    }
+    if (mode == Mode::Overwrite) old_files_ = existing;
+    if (dry_run) {
+      const fs::path ancestor = missing.empty() ? fs::absolute(folder_, error) : missing.front().parent_path();
+      if (!fs::is_directory(ancestor, error))
+        throw std::runtime_error(folder_.string() + ": cannot create the output folder (" + ancestor.string() +
+                                 " is not a folder)");
+      if (::access(ancestor.c_str(), W_OK | X_OK) != 0)
+        throw std::runtime_error(folder_.string() + ": the output folder is not writable");
+      return;
+    }
     engine::io::ensure_writable_folder(folder_);
-    lock();
+    if (lock_fd_ < 0) lock();
   } catch (...) {
-    for (auto it = missing.rbegin(); it != missing.rend(); ++it) fs::remove(*it, error);
+    unlock();
+    for (auto it = missing.rbegin(); it != missing.rend(); ++it) fs::remove(*it, error);  // only if empty
     throw;
   }
   created_ = missing;
@@ -116,8 +131,56 @@ void RunFolder::lock() {
                              "); wait for it to end or stop it first");
   }
   const std::string pid = std::to_string(::getpid());
-  if (::ftruncate(lock_fd_, 0) != 0 || ::pwrite(lock_fd_, pid.data(), pid.size(), 0) != ssize_t(pid.size()))
-    throw std::runtime_error(path.string() + ": cannot write the folder's lock");
+  if (::ftruncate(lock_fd_, 0) != 0 || ::pwrite(lock_fd_, pid.data(), pid.size(), 0) != ssize_t(pid.size())) {
+    const std::string reason = std::strerror(errno);
+    unlock();  // the lock file goes too, so a folder this run created can be removed
+    throw std::runtime_error(path.string() + ": cannot write the folder's lock (" + reason + ")");
+  }
+}
+
+void RunFolder::unlock() {
+  if (lock_fd_ < 0) return;
+  std::error_code error;
+  fs::remove(folder_ / k_lock_name, error);  // removed while still held, so no other run locks a stale file
+  ::close(lock_fd_);
+  lock_fd_ = -1;
+}
+
+void RunFolder::recover_set_aside() {
+  std::vector<fs::path> found;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(folder_, error))
+    if (entry.is_directory(error) && entry.path().filename().string().rfind(k_set_aside_prefix, 0) == 0)
+      found.push_back(entry.path());
+  if (found.empty()) return;
+  lock();  // a run still writing here holds it: then that run's set-aside is refused with the lock's line
+  if (found.size() > 1)
+    throw std::runtime_error(folder_.string() + ": holds " + std::to_string(found.size()) + " set-aside runs (" +
+                             found[0].filename().string() + ", " + found[1].filename().string() +
+                             "); keep the one to put back, move its files into the folder, and delete the others");
+  set_aside_ = found.front();
+  const std::string name = set_aside_.filename().string();
+  if (mode_ == Mode::Resume) {
+    std::printf("liquid_capture: %s: %s/ holds the run that the run being resumed replaced; it is deleted when the "
+                "resume ends well\n", folder_.c_str(), name.c_str());
+    return;
+  }
+  // The killed run failed: its own files go (those named by its record), and the run it replaced comes back.
+  put_back(recorded_patterns(folder_));
+  if (!set_aside_.empty())
+    throw std::runtime_error(folder_.string() + ": cannot put back the files in " + name +
+                             "/ (a run that was killed set them aside); move them into the folder by hand");
+  std::printf("liquid_capture: %s: put back the run that a killed --overwrite run had set aside in %s/, and removed "
+              "that run's files\n", folder_.c_str(), name.c_str());
+  std::fflush(stdout);
+}
+
+void RunFolder::put_back(const std::vector<NamePattern>& new_run) {
+  std::error_code error;
+  for (const fs::path& file : files_named(folder_, new_run)) fs::remove(file, error);
+  for (const auto& entry : fs::directory_iterator(set_aside_, error))
+    fs::rename(entry.path(), folder_ / entry.path().filename(), error);
+  if (fs::remove(set_aside_, error)) set_aside_.clear();  // only if every file went back
 }
 
 void RunFolder::set_old_files_aside() {
@@ -128,8 +191,10 @@ void RunFolder::set_old_files_aside() {
   for (const fs::path& file : old_files_) fs::rename(file, set_aside_ / file.filename());
 }
 
-void RunFolder::wrote_output() {
-  kept_ = true;
+void RunFolder::wrote_output() { kept_ = true; }
+
+void RunFolder::ended_well() {
+  ended_well_ = kept_ = true;
   if (set_aside_.empty()) return;
   std::error_code error;
   fs::remove_all(set_aside_, error);
@@ -138,18 +203,13 @@ void RunFolder::wrote_output() {
 
 RunFolder::~RunFolder() {
   std::error_code error;
-  if (!kept_ && mode_ != Mode::DryRun) {
+  if (!ended_well_ && puts_back_on_failure()) {
+    put_back(patterns_);
+  } else if (!kept_ && mode_ != Mode::DryRun) {
     for (const char* name : {k_record_name, k_stats_name, k_summary_name})
       for (const std::string suffix : {"", ".partial"}) fs::remove(folder_ / (std::string(name) + suffix), error);
-    if (!set_aside_.empty()) {
-      for (const fs::path& file : old_files_) fs::rename(set_aside_ / file.filename(), file, error);
-      fs::remove(set_aside_, error);  // only if every file went back
-    }
   }
-  if (lock_fd_ >= 0) {  // removed while still held, so no other run takes a lock on a stale file
-    fs::remove(folder_ / k_lock_name, error);
-    ::close(lock_fd_);
-  }
+  unlock();
   if (!kept_ && mode_ != Mode::DryRun)
     for (auto it = created_.rbegin(); it != created_.rend(); ++it) fs::remove(*it, error);  // only if empty
 }

@@ -3,7 +3,8 @@
 // checkpoint.bin. A folder holding another run's files is refused unless --overwrite, and a run
 // that stops before its first output removes what it created and leaves the folder as it found it:
 // a resumed run's record is never removed, and the files --overwrite replaces are set aside, not
-// deleted, until the new run has written its first output.
+// deleted, until the new run ends well (finished, or stopped by the user); a new run that fails
+// removes its own files and puts them back.
 #pragma once
 
 #include "tools/liquid_capture/options.h"
@@ -27,7 +28,8 @@ inline const char* k_summary_name = "summary.json";
 inline constexpr std::uintmax_t k_max_record_bytes = 4 * liquid::k_max_scene_bytes;
 inline constexpr int k_max_record_nesting = liquid::k_max_scene_nesting + 2;
 inline const char* k_checkpoint_name = "checkpoint.bin";
-// The folder --overwrite moves the replaced run into until the new run has written an output.
+// The folder --overwrite moves the replaced run into until the new run ends well. One left by a run
+// that was killed is put back by the next run into the folder, or deleted by a resume that ends well.
 inline const char* k_set_aside_prefix = ".replaced-run-";
 // The advisory lock a run holds on its folder (flock), holding the holder's process id.
 inline const char* k_lock_name = ".liquid_capture.lock";
@@ -49,17 +51,25 @@ class RunFolder {
   // Checks the folder before the run: throws std::runtime_error with one line when it holds
   // another run's files (Mode::New), is in use by another run or resume (its lock, naming the
   // holder's process id), or cannot be written; creates it (and its missing parents) unless a dry
-  // run, remembering what it created, and locks it for the run's length.
+  // run, remembering what it created, and locks it for the run's length. A set-aside folder left by
+  // a killed --overwrite run is put back first (that run's own files removed, and a line printed),
+  // unless resuming: a resume continues that run, so the set-aside waits for the resume's end.
   RunFolder(const RunSettings& settings, Mode mode);
   // With Mode::Overwrite: moves the old run's files into a folder of their own inside this one
   // (k_set_aside_prefix + the process id), so the new run's files cannot mix with them; called once
-  // nothing else can refuse the run. They are deleted at the first output, put back otherwise.
+  // nothing else can refuse the run. They are deleted when the run ends well, put back otherwise.
   void set_old_files_aside();
-  // Marks the run as having written an output: from then on the folder stays, and the files set
-  // aside are deleted.
+  // Marks the run as having written an output: from then on the folder stays.
   void wrote_output();
-  // Before the first output, a failed or interrupted run takes back what it made and puts the old
-  // run's files back. A resumed run's folder is never taken back. Releases the lock.
+  // The run ended well: it finished, or the user stopped it (Ctrl-C, SIGTERM) after writing
+  // something. The replaced run's files set aside are deleted.
+  void ended_well();
+  // Whether the run's end, unless it ends well, puts a replaced run back (removing the new run's
+  // files), so a failed run need not write its summary.
+  bool puts_back_on_failure() const { return mode_ == Mode::Overwrite && !set_aside_.empty(); }
+  // Unless the run ended well: with files set aside, removes the new run's files and puts the old
+  // ones back; otherwise, before the first output, takes back what the run made. A resumed run's
+  // folder is never taken back. Releases the lock.
   ~RunFolder();
   RunFolder(const RunFolder&) = delete;
   RunFolder& operator=(const RunFolder&) = delete;
@@ -68,12 +78,19 @@ class RunFolder {
 
  private:
   void lock();
+  void unlock();
+  // A set-aside folder a killed run left: put back, or with Mode::Resume kept for the resume's end.
+  void recover_set_aside();
+  // Removes the files of the run being given up (fixed names, and `new_run`'s patterns), then moves
+  // the set-aside files back and removes their folder.
+  void put_back(const std::vector<NamePattern>& new_run);
   std::filesystem::path folder_;
+  std::vector<NamePattern> patterns_;  // the new run's names, to remove its files when putting back
   std::vector<std::filesystem::path> created_, old_files_;
-  std::filesystem::path set_aside_;  // where set_old_files_aside() put them, while they are there
+  std::filesystem::path set_aside_;  // where the old run's files are, while they are there
   int lock_fd_ = -1;                 // k_lock_name, locked for the run's length
   Mode mode_;
-  bool kept_ = false;
+  bool kept_ = false, ended_well_ = false;
 };
 
 // stats.csv: rows are appended to stats.csv.partial, flushed after each frame so a long run can be
