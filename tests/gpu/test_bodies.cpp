@@ -408,6 +408,7 @@ TEST_CASE("a host reads the bodies one frame late without waiting, or now with a
   // (the copy frame k - 1 made), read_bodies() frame k's, at the cost of its own submission.
   Pool pool = deep_pool();
   pool.cells = 24;
+  pool.domain.y = 0.36f;  // room for the box dropped from 2 cm above the water
   liquid::LiquidOptions options;
   options.frames_in_flight = 1;
   liquid::LiquidNode node(test::gpu(), pool_scene(pool, 500.0f, pool.depth + 0.02f), options);

@@ -1,6 +1,9 @@
 # Runs a command-line tool as a user would and checks what it leaves behind. Used by ctest:
 #   cmake -DTOOL=... -DARGS="a;b" [-DENV="K=V;..."] -DEXPECT=success|failure [-DEXPECT_CODE=N] [-DSTDERR_REGEX=...]
-#         [-DSTDOUT_REGEX=...] [-DOUT_DIR=... -DEXPECT_FILES="f1;f2"] [-DEXPECT_NO_DIR=...] -P run_tool.cmake
+#         [-DSTDOUT_REGEX=...] [-DOUT_DIR=... -DEXPECT_FILES="f1;f2"] [-DEXPECT_NO_DIR=...]
+#         [-DEMPTY_DIR=...] [-DTIME_LIMIT=seconds] -P run_tool.cmake
+# EMPTY_DIR is removed before the run (a cache the tool must start without); past TIME_LIMIT the
+# tool is stopped and the test fails.
 # A failure must print exactly one line on stderr, matching STDERR_REGEX, and must leave no
 # partial file; a success must produce every expected file and no *.partial file.
 if(OUT_DIR)
@@ -9,11 +12,17 @@ endif()
 if(EXPECT_NO_DIR)
   file(REMOVE_RECURSE "${EXPECT_NO_DIR}")
 endif()
+if(EMPTY_DIR)
+  file(REMOVE_RECURSE "${EMPTY_DIR}")
+endif()
+if(NOT TIME_LIMIT)
+  set(TIME_LIMIT 600)
+endif()
 set(command ${TOOL} ${ARGS})
 if(ENV)
   set(command ${CMAKE_COMMAND} -E env ${ENV} ${command})
 endif()
-execute_process(COMMAND ${command} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 600)
+execute_process(COMMAND ${command} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT ${TIME_LIMIT})
 message(STATUS "exit ${code}\nstdout:\n${out}\nstderr:\n${err}")
 
 if(EXPECT STREQUAL "success")

@@ -141,7 +141,17 @@ float trace_obstacles(vec3 origin, vec3 dir, out int hit_index) {
 }
 
 vec3 shade_obstacle(int index, vec3 p, vec3 view_dir) {
-  vec3 n = obstacle_normal(index, p);
+  // The normal with the obstacle's index the unrolled loop's, as in trace_obstacles(): its kind is
+  // then a constant and only its shape's code is compiled. With the run-time index every shape's
+  // code, the metaballs' loop included, was inlined into each of the six distances of the central
+  // differences, which LLVM 15 took many minutes to compile for two bodies. Written as a loop, not
+  // with literal indices (FOR_EACH_OBSTACLE), with which lavapipe's memory grew by 3 MiB a frame
+  // (tests/gpu/test_liquid_resources.cpp), as it did when the bisection's count was a uniform: a
+  // loop bounded by a uniform it can read at a constant index (the metaballs' count) seems to be
+  // compiled again whenever the uniform buffer is rebound.
+  vec3 n = vec3(0.0, 1.0, 0.0);
+  [[unroll]] for (int i = 0; i < obstacle_count(); ++i)
+    if (i == index) n = obstacle_normal(i, p);
   vec3 l = r.sun_direction;
   float diffuse = max(dot(n, l), 0.0);
   float spec = pow(max(dot(n, normalize(l - view_dir)), 0.0), 48.0);
