@@ -75,7 +75,7 @@ class ObjReader {
     if (!i || *i == 0) refuse(quote(token) + " is not a " + what + " index (a nonzero integer)");
     const std::int64_t zero_based = *i > 0 ? *i - 1 : std::int64_t(count) + *i;
     if (zero_based < 0 || zero_based >= std::int64_t(count))
-      refuse(std::string(what) + " index " + to_string(*i) + " is out of range: " + to_string(count) + " so far");
+      refuse(std::string(what) + " index " + to_string(*i) + " is out of range (the file has " + to_string(count) + " so far)");
     return std::uint32_t(zero_based);
   }
 
