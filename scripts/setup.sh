@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   cmake ninja-build g++ pkg-config
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
-  libglm-dev libstb-dev catch2 nlohmann-json3-dev libcli11-dev libassimp-dev
+  libglm-dev libstb-dev catch2 nlohmann-json3-dev libcli11-dev
   python3 python3-matplotlib  # matplotlib: the plot scripts (tools/*/plot_*.py) draw their SVGs with it
   libglfw3-dev libimgui-dev xvfb
   # The capture tool: OpenVDB volumes (Boost.Iostreams for OpenVDB's CMake module, the Python
