@@ -61,31 +61,118 @@ PlacedMesh::PlacedMesh(const TriangleMesh& mesh, glm::vec3 center, glm::quat rot
     lo_ = glm::min(lo_, corners_.back());
     hi_ = glm::max(hi_, corners_.back());
   }
+  build_columns();
   lo_ -= reach;
   hi_ += reach;
-  const glm::vec3 extent = hi_ - lo_;
-  buckets_ = glm::clamp(glm::ivec3(extent / std::max(reach, 1e-6f)), glm::ivec3(1), glm::ivec3(64));
-  bucket_size_ = extent / glm::vec3(buckets_);
-  bucket_triangles_.resize(size_t(buckets_.x) * buckets_.y * buckets_.z);
-  column_triangles_.resize(size_t(buckets_.x) * buckets_.y);
-  for (size_t t = 0; t < corners_.size() / 3; ++t) {
-    glm::vec3 a = corners_[3 * t], b = corners_[3 * t + 1], c = corners_[3 * t + 2];
-    const glm::ivec3 from = bucket_of(glm::min(a, glm::min(b, c)) - reach);
-    const glm::ivec3 to = bucket_of(glm::max(a, glm::max(b, c)) + reach);
-    for (int z = from.z; z <= to.z; ++z)
-      for (int y = from.y; y <= to.y; ++y)
-        for (int x = from.x; x <= to.x; ++x)
-          bucket_triangles_[size_t(x) + size_t(buckets_.x) * (size_t(y) + size_t(buckets_.y) * z)].push_back(int(t));
-    const glm::ivec3 col_from = bucket_of(glm::min(a, glm::min(b, c)));
-    const glm::ivec3 col_to = bucket_of(glm::max(a, glm::max(b, c)));
-    for (int y = col_from.y; y <= col_to.y; ++y)
-      for (int x = col_from.x; x <= col_to.x; ++x) column_triangles_[size_t(x) + size_t(buckets_.x) * y].push_back(int(t));
+  build_hierarchy();
+}
+
+// Square columns, about sqrt(n) of them for n triangles (at most 512 a side), each listing the
+// triangles whose xy box overlaps it: counted first, then filled, in two flat arrays.
+void PlacedMesh::build_columns() {
+  const size_t triangles = corners_.size() / 3;
+  column_origin_ = glm::vec2(lo_);
+  const glm::vec2 extent = glm::max(glm::vec2(hi_ - lo_), glm::vec2(1e-6f));
+  const float side = std::sqrt(extent.x * extent.y / float(std::max<size_t>(triangles, 1)));
+  columns_ = glm::clamp(glm::ivec2(glm::ceil(extent / side)), glm::ivec2(1), glm::ivec2(512));
+  column_size_ = extent / glm::vec2(columns_);
+  const auto for_each_column = [&](size_t t, auto&& visit) {
+    const glm::vec3 a = corners_[3 * t], b = corners_[3 * t + 1], c = corners_[3 * t + 2];
+    const glm::ivec2 from = column_of(glm::vec2(glm::min(a, glm::min(b, c))));
+    const glm::ivec2 to = column_of(glm::vec2(glm::max(a, glm::max(b, c))));
+    for (int y = from.y; y <= to.y; ++y)
+      for (int x = from.x; x <= to.x; ++x) visit(size_t(x) + size_t(columns_.x) * size_t(y));
+  };
+  column_start_.assign(size_t(columns_.x) * columns_.y + 1, 0);
+  for (size_t t = 0; t < triangles; ++t) for_each_column(t, [&](size_t c) { ++column_start_[c + 1]; });
+  for (size_t c = 1; c < column_start_.size(); ++c) column_start_[c] += column_start_[c - 1];
+  column_triangles_.resize(column_start_.back());
+  std::vector<uint32_t> filled(column_start_.begin(), column_start_.end() - 1);
+  for (size_t t = 0; t < triangles; ++t) for_each_column(t, [&](size_t c) { column_triangles_[filled[c]++] = uint32_t(t); });
+}
+
+glm::ivec2 PlacedMesh::column_of(glm::vec2 p) const {
+  return glm::clamp(glm::ivec2(glm::floor((p - column_origin_) / column_size_)), glm::ivec2(0), columns_ - 1);
+}
+
+// Top-down, split at the median centroid along the box's longest axis, leaves of a few triangles:
+// n log n to build, balanced whatever the mesh.
+void PlacedMesh::build_hierarchy() {
+  constexpr uint32_t k_leaf_triangles = 4;
+  const uint32_t triangles = uint32_t(corners_.size() / 3);
+  order_.resize(triangles);
+  std::vector<glm::vec3> centroid(triangles);
+  for (uint32_t t = 0; t < triangles; ++t) {
+    order_[t] = t;
+    centroid[t] = (corners_[3 * t] + corners_[3 * t + 1] + corners_[3 * t + 2]) / 3.0f;
+  }
+  nodes_.clear();
+  nodes_.reserve(2 * size_t(triangles / k_leaf_triangles + 1));
+  struct Range {
+    uint32_t node, begin, end;
+  };
+  std::vector<Range> pending;
+  nodes_.push_back({});
+  pending.push_back({0, 0, triangles});
+  while (!pending.empty()) {
+    const Range r = pending.back();
+    pending.pop_back();
+    Node node{glm::vec3(INFINITY), glm::vec3(-INFINITY), 0, 0};
+    for (uint32_t i = r.begin; i < r.end; ++i)
+      for (int k = 0; k < 3; ++k) {
+        node.lo = glm::min(node.lo, corners_[3 * order_[i] + k]);
+        node.hi = glm::max(node.hi, corners_[3 * order_[i] + k]);
+      }
+    if (r.end - r.begin <= k_leaf_triangles) {
+      node.first = r.begin;
+      node.count = r.end - r.begin;
+      nodes_[r.node] = node;
+      continue;
+    }
+    const glm::vec3 extent = node.hi - node.lo;
+    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+    const uint32_t middle = r.begin + (r.end - r.begin) / 2;
+    std::nth_element(order_.begin() + r.begin, order_.begin() + middle, order_.begin() + r.end,
+                     [&](uint32_t a, uint32_t b) { return centroid[a][axis] < centroid[b][axis]; });
+    node.first = uint32_t(nodes_.size());
+    nodes_[r.node] = node;
+    nodes_.push_back({});
+    nodes_.push_back({});
+    pending.push_back({node.first, r.begin, middle});
+    pending.push_back({node.first + 1, middle, r.end});
   }
 }
 
-glm::ivec3 PlacedMesh::bucket_of(glm::vec3 p) const {
-  return glm::clamp(glm::ivec3(glm::floor((p - lo_) / bucket_size_)), glm::ivec3(0), buckets_ - 1);
+// The distance to the nearest triangle if it is under `within`, else `within`: boxes farther than
+// the nearest so far are skipped, the nearer child visited first.
+float PlacedMesh::nearest_surface(glm::vec3 p, float within) const {
+  if (nodes_.empty()) return within;
+  const auto box_distance_squared = [&](const Node& n) {
+    const glm::vec3 outside = glm::max(glm::max(n.lo - p, p - n.hi), glm::vec3(0.0f));
+    return glm::dot(outside, outside);
+  };
+  float best = within;
+  uint32_t stack[64];
+  int depth = 0;
+  stack[depth++] = 0;
+  while (depth > 0) {
+    const Node& n = nodes_[stack[--depth]];
+    if (box_distance_squared(n) >= best * best) continue;
+    if (n.count > 0) {
+      for (uint32_t i = n.first; i < n.first + n.count; ++i) {
+        const uint32_t t = order_[i];
+        best = std::min(best, triangle_distance(p, corners_[3 * t], corners_[3 * t + 1], corners_[3 * t + 2]));
+      }
+      continue;
+    }
+    const bool left_first = box_distance_squared(nodes_[n.first]) <= box_distance_squared(nodes_[n.first + 1]);
+    // A balanced tree of at most 2^25 triangles is about 24 deep: the stack never holds 64.
+    stack[depth++] = left_first ? n.first + 1 : n.first;
+    stack[depth++] = left_first ? n.first : n.first + 1;
+  }
+  return best;
 }
+
 
 bool PlacedMesh::inside(glm::vec3 p) const {
   if (glm::any(glm::lessThan(p, lo_)) || glm::any(glm::greaterThan(p, hi_))) return false;
@@ -95,9 +182,11 @@ bool PlacedMesh::inside(glm::vec3 p) const {
   // vertex (a lattice point on the mesh's axis) meets each surface once, not twice or never.
   const glm::vec3 extent = hi_ - lo_;
   p += glm::vec3(0.7316f, 0.4157f, 0.0f) * (1e-6f * std::max(extent.x, extent.y));
-  const glm::ivec3 b = bucket_of(p);
+  const glm::ivec2 column = column_of(glm::vec2(p));
+  const size_t c = size_t(column.x) + size_t(columns_.x) * size_t(column.y);
   int winding = 0;
-  for (int t : column_triangles_[size_t(b.x) + size_t(buckets_.x) * b.y]) {
+  for (uint32_t i = column_start_[c]; i < column_start_[c + 1]; ++i) {
+    const uint32_t t = column_triangles_[i];
     const glm::vec3 a = corners_[3 * t], c1 = corners_[3 * t + 1], c2 = corners_[3 * t + 2];
     const float area = (c1.x - a.x) * (c2.y - a.y) - (c2.x - a.x) * (c1.y - a.y);
     if (area == 0.0f) continue;
@@ -112,14 +201,8 @@ bool PlacedMesh::inside(glm::vec3 p) const {
 }
 
 float PlacedMesh::distance(glm::vec3 p) const {
-  const bool in = inside(p);
-  float nearest = reach_;
-  if (!(glm::any(glm::lessThan(p, lo_)) || glm::any(glm::greaterThan(p, hi_)))) {
-    const glm::ivec3 b = bucket_of(p);
-    for (int t : bucket_triangles_[size_t(b.x) + size_t(buckets_.x) * (size_t(b.y) + size_t(buckets_.y) * b.z)])
-      nearest = std::min(nearest, triangle_distance(p, corners_[3 * t], corners_[3 * t + 1], corners_[3 * t + 2]));
-  }
-  return in ? -nearest : nearest;
+  const float nearest = nearest_surface(p, reach_);
+  return inside(p) ? -nearest : nearest;
 }
 
 }  // namespace liquid

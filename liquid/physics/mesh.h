@@ -24,7 +24,10 @@ float longest_edge(const TriangleMesh& mesh);
 
 // A mesh at one pose: signed distance (m, negative inside) within `reach` of the surface, clamped to
 // +-reach beyond it, like the GPU's field. Inside by the winding along +z (the rasterizer's test),
-// distances from the triangles in buckets of about `reach`.
+// over the triangles of the point's column (about as many columns as the square root of the
+// triangles' count); the distance from a bounding-volume hierarchy of the triangles. Either query
+// costs about the log of the triangles' count plus the few near it, so a mesh of millions of
+// triangles is carved around in seconds.
 class PlacedMesh {
  public:
   PlacedMesh(const TriangleMesh& mesh, glm::vec3 center, float reach);
@@ -33,14 +36,27 @@ class PlacedMesh {
   bool inside(glm::vec3 p) const;
 
  private:
+  // A box of the hierarchy: its children are nodes_[first] and nodes_[first + 1], or, for a leaf
+  // (count > 0), the triangles order_[first .. first + count).
+  struct Node {
+    glm::vec3 lo, hi;
+    uint32_t first = 0, count = 0;
+  };
+  void build_hierarchy();
+  float nearest_surface(glm::vec3 p, float within) const;
+
   std::vector<glm::vec3> corners_;  // 3 per triangle, world
   glm::vec3 lo_{0.0f}, hi_{0.0f};
   float reach_ = 0.0f;
-  glm::ivec3 buckets_{1};
-  glm::vec3 bucket_size_{1.0f};
-  std::vector<std::vector<int>> bucket_triangles_;   // by (x, y, z)
-  std::vector<std::vector<int>> column_triangles_;   // by (x, y): the triangles over a column
-  glm::ivec3 bucket_of(glm::vec3 p) const;
+  // Columns along z over the triangles' xy box: column c's triangles are
+  // column_triangles_[column_start_[c] .. column_start_[c + 1]).
+  glm::ivec2 columns_{1};
+  glm::vec2 column_origin_{0.0f}, column_size_{1.0f};
+  std::vector<uint32_t> column_start_, column_triangles_;
+  std::vector<Node> nodes_;
+  std::vector<uint32_t> order_;  // triangles in leaf order
+  void build_columns();
+  glm::ivec2 column_of(glm::vec2 p) const;
 };
 
 }  // namespace liquid

@@ -34,6 +34,34 @@ constexpr double k_pi = 3.14159265358979323846;
   throw SceneError((scene.source.empty() ? scene.name : scene.source) + ": " + field + ": " + reason);
 }
 
+// A rigid body must start wholly inside the domain: the wall contact keeps its box there
+// (body_wall_half_extent), so one placed across a wall, or wider than the domain, would be moved
+// at its first step without a word.
+void check_body_inside_domain(const Scene& scene, size_t index, glm::vec3 mesh_half_extent) {
+  const Obstacle& o = scene.obstacles[index];
+  const glm::vec3 e = body_wall_half_extent(o, mesh_half_extent);
+  // A mesh's box is its principal box about its centre of mass, larger than its bounding box when
+  // the two centres differ: say which box, or the figure would not match the file's.
+  const char* shape = o.shape == ObstacleShape::Sphere ? "sphere"
+                      : o.shape == ObstacleShape::Box  ? "box"
+                                                       : "mesh's box about its centre of mass (what the walls hold in)";
+  const std::string field = "obstacles[" + std::to_string(index) + "]";
+  for (int a = 0; a < scene.dimension; ++a) {
+    const char axis = "xyz"[a];
+    // A hair of slack for a body resting on a wall, its numbers written with rounded decimals.
+    const float slack = 1e-5f * scene.domain[a];
+    if (2.0f * e[a] > scene.domain[a] + slack)
+      fail(scene, field, std::string("the dynamic ") + shape + " is " + format_number(2.0f * e[a]) + " m across along " +
+                             axis + ", wider than the domain's " + format_number(scene.domain[a]) +
+                             " m; a body must fit inside the domain");
+    const float lo = o.center[a] - e[a], hi = o.center[a] + e[a];
+    if (lo < -slack || hi > scene.domain[a] + slack)
+      fail(scene, field, std::string("the dynamic ") + shape + " reaches " + axis + " = " +
+                             format_number(lo < -slack ? lo : hi) + " m, outside the domain's [0, " +
+                             format_number(scene.domain[a]) + "] m; a body must start wholly inside the domain");
+  }
+}
+
 // Particles per axis of a block's lattice (z = 1 in 2D).
 glm::ivec3 lattice_counts(const FluidBlock& block, int dimension, double spacing) {
   glm::ivec3 counts(1);
@@ -310,7 +338,7 @@ SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
     fail(scene, "dimension", "must be 2 or 3, got " + std::to_string(scene.dimension));
   // Again for a scene built in code; a file's was checked when read.
   check_list_limits(scene);
-  check_obstacle_placement(scene);
+  check_mesh_winding(scene);
   SimulationSetup setup;
   setup.dimension = scene.dimension;
   setup.shallow_water = scene.mode == SimulationMode::ShallowWater;
@@ -390,6 +418,8 @@ SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
     b.shape_half_size = body_shape_half_size(o, setup.kernel_radius_cells, setup.cell_size);
     for (const glm::vec3& v : o.mesh.vertices) b.shape_half_extent = glm::max(b.shape_half_extent, glm::abs(v) * o.mesh.scale);
   }
+  for (size_t i = 0; i < scene.obstacles.size(); ++i)
+    if (scene.obstacles[i].dynamic) check_body_inside_domain(scene, i, setup.bodies[i].shape_half_extent);
   check_time_step(scene, setup);
   return setup;
 }

@@ -2,6 +2,7 @@
 // inertia from its shape, and a rotated box's signed distance.
 #include "liquid/physics/body.h"
 #include "liquid/physics/obstacles.h"
+#include "liquid/physics/setup.h"
 #include "liquid/scene.h"
 #include "liquid/scene/limits.h"
 #include "liquid/scene/obstacle_checks.h"
@@ -257,11 +258,12 @@ TEST_CASE("a dynamic mesh is refused in 2D, from a scene file or built in code",
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("a body outside the domain, or wider than it, and an inside-out mesh are refused by name",
+TEST_CASE("a body outside the domain or wider than it and an inside-out mesh are refused by name",
           "[scene][bodies][mesh]") {
+  // The setup checks the bodies, with the box the wall contact keeps inside the domain.
   const auto refused = [](const Json& keys, const std::string& message, int dimension = 2) {
     INFO(keys.dump());
-    REQUIRE_THROWS_WITH(parse(pool_with(keys, dimension)), Contains(message));
+    REQUIRE_THROWS_WITH(liquid::make_setup(parse(pool_with(keys, dimension)), {}), Contains(message));
   };
   refused({{"dynamic", true}, {"density", 500}, {"center", {5.0, 5.0, 5.0}}},
           "pool.json: obstacles[0]: the dynamic box reaches x = 5.1 m, outside the domain's [0, 1] m", 3);
@@ -269,24 +271,35 @@ TEST_CASE("a body outside the domain, or wider than it, and an inside-out mesh a
           "obstacles[0]: the dynamic box reaches y = -0.03 m, outside the domain's [0, 0.6] m");
   refused({{"dynamic", true}, {"density", 500}, {"half_extent", {0.7, 0.01, 0.1}}},
           "obstacles[0]: the dynamic box is 1.4 m across along x, wider than the domain's 1 m", 3);
-  // Turned 45 degrees, a box 0.2 m wide spans 0.2 sqrt(2) diagonally: one at the wall crosses it.
-  refused({{"dynamic", true}, {"density", 500}, {"center", {0.11, 0.3}}, {"rotation", {{"degrees", 45}}}},
-          "reaches x = -0.0");
-  refused({{"shape", "sphere"}, {"radius", 0.1}, {"dynamic", true}, {"density", 500}, {"center", {0.5, 0.55}}},
-          "the dynamic sphere reaches y = 0.65 m");
+  // Turned 45 degrees, the 0.2 x 0.1 m box reaches (0.1 + 0.05) / sqrt(2) = 0.106 m from its centre.
+  refused({{"dynamic", true}, {"density", 500}, {"center", {0.1, 0.3}}, {"rotation", {{"degrees", 45}}}},
+          "reaches x = -0.006");
+  CHECK_NOTHROW(liquid::make_setup(
+      parse(pool_with({{"dynamic", true}, {"density", 500}, {"center", {0.11, 0.3}}, {"rotation", {{"degrees", 45}}}})), {}));
+  Json sphere = pool_with(Json::object());
+  sphere["obstacles"][0] = {{"shape", "sphere"}, {"radius", 0.1}, {"dynamic", true}, {"density", 500}, {"center", {0.5, 0.55}}};
+  REQUIRE_THROWS_WITH(liquid::make_setup(parse(sphere), {}), Contains("the dynamic sphere reaches y = 0.65 m"));
   // Resting on the floor, and static obstacles anywhere, are fine.
-  CHECK_NOTHROW(parse(pool_with({{"dynamic", true}, {"density", 500}, {"center", {0.5, 0.05}}})));
-  CHECK_NOTHROW(parse(pool_with({{"center", {5.0, 5.0}}})));
+  CHECK_NOTHROW(liquid::make_setup(parse(pool_with({{"dynamic", true}, {"density", 500}, {"center", {0.5, 0.05}}})), {}));
+  CHECK_NOTHROW(liquid::make_setup(parse(pool_with({{"center", {5.0, 5.0}}})), {}));
+
+  // A dynamic mesh: its principal box turned, as the wall contact sees it.
+  liquid::Scene host = parse(pool_with(Json::object(), 3));
+  liquid::Obstacle& mesh = host.obstacles[0];
+  mesh.shape = liquid::ObstacleShape::Mesh;
+  mesh.mesh = test::box_mesh({0.1f, 0.05f, 0.1f});
+  mesh.dynamic = true;
+  mesh.density = 500.0f;
+  mesh.center = {0.5f, 0.56f, 0.25f};
+  REQUIRE_THROWS_WITH(liquid::make_setup(host, {}), Contains("the dynamic mesh's box about its centre of mass (what the walls hold in) reaches y = 0.61 m"));
+  mesh.center.y = 0.3f;
+  CHECK_NOTHROW(liquid::make_setup(host, {}));
 
   // A host's mesh wound inward, static or dynamic.
-  liquid::Scene host = parse(pool_with(Json::object(), 3));
-  host.obstacles[0].shape = liquid::ObstacleShape::Mesh;
-  host.obstacles[0].mesh = test::box_mesh(glm::vec3(0.05f));
-  CHECK_NOTHROW(liquid::check_obstacle_placement(host));
-  std::vector<uint32_t>& indices = host.obstacles[0].mesh.indices;
+  CHECK_NOTHROW(liquid::check_mesh_winding(host));
+  std::vector<uint32_t>& indices = mesh.mesh.indices;
   for (size_t t = 0; t < indices.size(); t += 3) std::swap(indices[t + 1], indices[t + 2]);
-  REQUIRE_THROWS_WITH(liquid::check_obstacle_placement(host), Contains("obstacles[0]: the host's mesh: is inside out"));
-  host.obstacles[0].dynamic = true;
-  host.obstacles[0].density = 500.0f;
-  REQUIRE_THROWS_WITH(liquid::check_obstacle_placement(host), Contains("is inside out"));
+  REQUIRE_THROWS_WITH(liquid::check_mesh_winding(host), Contains("obstacles[0]: the host's mesh: is inside out"));
+  mesh.dynamic = false;
+  REQUIRE_THROWS_WITH(liquid::make_setup(host, {}), Contains("is inside out"));
 }

@@ -636,6 +636,38 @@ def check_video():
         fail(f"capture.json records the video as {recorded!r}, not the absolute {os.path.abspath(lead)!r}")
 
 
+def check_setup_stages():
+    """On a terminal the set-up's long stages (reading meshes, carving, compiling pipelines) say what
+    is running, so a long wait never looks like a hang; piped, the output has no such line."""
+    import pty
+    out = os.path.join(ARGS.work, "stages")
+    shutil.rmtree(out, ignore_errors=True)
+    leader, follower = pty.openpty()
+    process = subprocess.Popen([ARGS.tool, ARGS.scene, "--frames", "1", "-o", out] + SMALL,
+                               stdout=follower, stderr=follower, stdin=subprocess.DEVNULL)
+    os.close(follower)
+    seen = b""
+    while True:
+        try:
+            chunk = os.read(leader, 4096)
+        except OSError:  # the terminal closes when the run ends
+            break
+        if not chunk:
+            break
+        seen += chunk
+    os.close(leader)
+    if process.wait(timeout=600) != 0:
+        fail(f"the run on a terminal failed: {seen.decode(errors='replace')}")
+    text = seen.decode(errors="replace")
+    for stage in ["reading the scene and its meshes...", "setting up the simulation"]:
+        if stage not in text:
+            fail(f"on a terminal, no '{stage}' line in: {text!r}")
+    shutil.rmtree(out)
+    piped = run([ARGS.scene, "--frames", "1", "-o", out] + SMALL)
+    if "setting up" in piped.stdout or "reading the scene" in piped.stdout:
+        fail(f"piped output shows the set-up stages: {piped.stdout!r}")
+
+
 def doc_reader(path):
     """The first python block of docs/caches.md that defines read_liquid_ply."""
     text = open(path).read()
@@ -660,6 +692,7 @@ if __name__ == "__main__":
               "resume": check_resume, "dryrun": check_dry_run, "estimate": check_estimate, "names": check_names, "folders": check_folders, "range": check_range, "volume": check_volume,
               "video": check_video, "adaptive": check_adaptive,
               "failsafe": check_failsafe, "lock": check_lock, "fps": check_fps, "replace": check_replace,
-              "refusals": check_refusals, "lock_write": check_lock_write, "resume_elsewhere": check_resume_elsewhere}
+              "refusals": check_refusals, "lock_write": check_lock_write, "resume_elsewhere": check_resume_elsewhere,
+              "setup_stages": check_setup_stages}
     checks[ARGS.check]()
     print("ok")

@@ -50,4 +50,26 @@ class Progress {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
+// A set-up stage that may take a while (reading large meshes, carving the particles around them,
+// compiling pipelines): on a terminal, "tool: what..." while it runs, replaced by what comes next,
+// so a long wait never looks like a hang; elsewhere (logs, pipes) nothing.
+class SetupStage {
+ public:
+  SetupStage(const char* tool, const char* what) : terminal_(isatty(fileno(stdout)) == 1) {
+    if (!terminal_) return;
+    std::printf("\r\033[K%s: %s...", tool, what);
+    std::fflush(stdout);
+  }
+  ~SetupStage() {
+    if (!terminal_) return;
+    std::printf("\r\033[K");  // the stage's line cleared, for the next line or an error
+    std::fflush(stdout);
+  }
+  SetupStage(const SetupStage&) = delete;
+  SetupStage& operator=(const SetupStage&) = delete;
+
+ private:
+  bool terminal_;
+};
+
 }  // namespace tools

@@ -32,6 +32,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 namespace {
@@ -182,10 +183,14 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
                                (folder / capture::k_record_name).string());
     capture::check_against_plan(checkpoint, settings.plan, (folder / capture::k_checkpoint_name).string());
   } else {
+    const tools::SetupStage stage("liquid_capture", "reading the scene and its meshes");
     settings = capture::settle(options, k_max_steps_per_frame);
     record_text = capture::to_json(settings).dump(2) + "\n";
   }
-  const liquid::Scene scene = liquid::parse_scene(settings.scene_document, settings.scene_label());
+  const liquid::Scene scene = [&] {
+    const tools::SetupStage stage("liquid_capture", "reading the scene and its meshes");
+    return liquid::parse_scene(settings.scene_document, settings.scene_label());
+  }();
   if (settings.volumes && !capture::volume_export_available())
     throw std::runtime_error("--export-volume: this build has no OpenVDB (install libopenvdb-dev and "
                              "libboost-iostreams-dev, then configure again)");
@@ -199,6 +204,8 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
                                       : options.overwrite ? Mode::Overwrite
                                                           : Mode::New);
 
+  std::optional<tools::SetupStage> stage(std::in_place, "liquid_capture",
+                                        "setting up the simulation (particles, obstacles, pipelines)");
   engine::vk::Context context(engine::vk::ContextOptions{.validation = options.validation});
   const capture::FramePlan& plan = settings.plan;
   liquid::LiquidNode node(context, scene,
@@ -211,6 +218,7 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
       liquid::RenderSettings{.width = settings.width, .height = settings.height, .fxaa = settings.fxaa,
                              .draw_particles = settings.draw_particles});
   const liquid::CameraView camera = camera_from(settings, node);
+  stage.reset();
   // --fps: the step shortened so a whole number of them makes exactly one frame (a checkpoint being
   // resumed carries it too). Adaptive steps fit each frame themselves (steps_for_frame).
   if (!scene.adaptive_time_step && plan.time_step < node.time_step()) node.set_time_step(plan.time_step);
