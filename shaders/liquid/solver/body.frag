@@ -70,6 +70,7 @@ void main() {
 
   // Walls.
   const vec3 e = world_half_extent(i, q);
+  const vec3 v_free = v;
   [[unroll]] for (int axis = 0; axis < DIM; ++axis) {
     const float lo = e[axis], hi = u.domain[axis] - e[axis];
     if (x[axis] < lo) {
@@ -80,6 +81,11 @@ void main() {
       v[axis] = min(v[axis], 0.0);
     }
   }
+  // The acceleration the added-mass term carries into the next step is the forces' (a), not the
+  // wall's: along an axis where the wall took velocity away it is 0 (held, as at rest on the floor).
+  // Stored as (v - v0) / dt it held the contact's stop, -v0 / dt, and the term gave it back over
+  // the next steps as a push off the wall, m_a / m times the speed it arrived with (5 for the boat).
+  const vec3 a_kept = mix(a, vec3(0.0), notEqual(v, v_free));
 
   vec4 state[LIQUID_BODY_TEXELS];
   state[LIQUID_BODY_POSITION] = vec4(x, 1.0);
@@ -88,7 +94,7 @@ void main() {
   state[LIQUID_BODY_ANGULAR_VELOCITY] = vec4(w, 0.0);
   state[LIQUID_BODY_FORCE] = vec4(force, 0.0);
   state[LIQUID_BODY_TORQUE] = vec4(torque, 0.0);
-  state[LIQUID_BODY_ACCELERATION] = vec4((v - v0) / dt, 0.0);  // after the walls: at rest on the floor, 0
+  state[LIQUID_BODY_ACCELERATION] = vec4(a_kept, 0.0);
   state[LIQUID_BODY_ANGULAR_ACCELERATION] = vec4(alpha, 0.0);
   out_state = state[texel.x];
 }
