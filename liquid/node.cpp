@@ -3,6 +3,7 @@
 #include "liquid/node.h"
 
 #include "liquid/physics/mesh.h"
+#include "liquid/physics/time_step.h"
 #include "liquid/solver/simulation.h"
 #include "liquid/solver/state.h"
 
@@ -58,6 +59,9 @@ void LiquidNode::set_brushes(std::vector<ForceBrush> brushes, Frame frame) {
 int LiquidNode::max_force_brushes() { return gpu::k_max_brushes; }  // shaders/liquid/shared.h
 RuntimeParameters LiquidNode::runtime_parameters() const { return simulation_->runtime_parameters(); }
 void LiquidNode::set_runtime_parameters(const RuntimeParameters& p) { simulation_->set_runtime_parameters(p); }
+RuntimeParameterRange LiquidNode::runtime_parameter_range(const RuntimeParameters& at) const {
+  return liquid::runtime_parameter_range(simulation_->setup(), time_step(), at.stiffness, at.gravity);
+}
 void LiquidNode::set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity, Frame frame) {
   if (frame == Frame::World) {
     center = placement_.point_to_liquid(center);

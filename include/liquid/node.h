@@ -96,6 +96,9 @@ class LiquidNode {
   using RuntimeParameters = liquid::RuntimeParameters;
   RuntimeParameters runtime_parameters() const;
   void set_runtime_parameters(const RuntimeParameters& parameters);
+  // The ranges a host's sliders can offer at the present step, every value in them stable: gravity
+  // up to max_gravity at `at`'s stiffness, stiffness within its range at `at`'s gravity.
+  RuntimeParameterRange runtime_parameter_range(const RuntimeParameters& at) const;
   // Places obstacle `index` (a host-driven obstacle): from now on it moves at `velocity` from
   // `center`, replacing the scene's scripted motion. The set of obstacles and their shapes are
   // fixed when the node is created (the shaders are specialized for them).

@@ -136,6 +136,15 @@ struct RuntimeParameters {
   float stiffness = 0.0f;   // k
 };
 
+// The live parameters a host's sliders can offer while the node keeps its present step, every one
+// of them stable (LiquidNode::runtime_parameter_range): each range is what the step and the
+// hydrostatic bound allow at the other parameters' present values (docs/integration.md).
+struct RuntimeParameterRange {
+  float max_gravity = 0.0f;                          // m/s^2, of |g|, at the stiffness given
+  float min_stiffness = 0.0f, max_stiffness = 0.0f;  // at the gravity given
+  float min_pic_ratio = 0.0f, max_pic_ratio = 1.0f;
+};
+
 // The whole simulation state between steps: restoring it into a node created from the same scene
 // continues the run as if it had never stopped (bit for bit on the same driver), since every
 // step rebuilds the grids from the particles. Force brushes are the host's input, not state.

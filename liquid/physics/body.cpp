@@ -180,9 +180,15 @@ double body_added_inertia_ratio(const Obstacle& o, int dimension, double added_m
   return added_mass * radius * radius / double(std::min(inertia.x, std::min(inertia.y, inertia.z)));
 }
 
-glm::vec3 body_wall_half_extent(const Obstacle& o, glm::vec3 mesh_half_extent) {
+glm::vec3 mesh_half_extent(const TriangleMesh& mesh) {
+  glm::vec3 e(0.0f);
+  for (const glm::vec3& v : mesh.vertices) e = glm::max(e, glm::abs(v) * mesh.scale);
+  return e;
+}
+
+glm::vec3 body_wall_half_extent(const Obstacle& o) {
   if (o.shape == ObstacleShape::Sphere) return glm::vec3(o.radius);
-  const glm::vec3 e = o.shape == ObstacleShape::Mesh ? mesh_half_extent : o.half_extent;
+  const glm::vec3 e = o.shape == ObstacleShape::Mesh ? mesh_half_extent(o.mesh) : o.half_extent;
   const glm::mat3 turn = glm::mat3_cast(o.rotation);
   return glm::abs(turn[0]) * e.x + glm::abs(turn[1]) * e.y + glm::abs(turn[2]) * e.z;
 }

@@ -63,10 +63,13 @@ float body_shape_half_size(const Obstacle& obstacle, float kernel_radius_cells, 
 // the body's circumradius (the shell the no-inflow condition turns with it lies there).
 double body_added_inertia_ratio(const Obstacle& obstacle, int dimension, double added_mass);
 
+// A mesh's half extents about its own origin (a dynamic mesh's: its centre of mass, along its
+// principal axes): its vertices' farthest reach along each axis, scaled.
+glm::vec3 mesh_half_extent(const TriangleMesh& mesh);
+
 // Half the body's extent along each world axis at its orientation: the box the wall contact keeps
 // inside the domain (world_half_extent() in shaders/liquid/solver/body.frag). A sphere's radius, a
-// box's half extents turned, a dynamic mesh's `mesh_half_extent` (its vertices' farthest reach
-// along each principal axis, BodyConstants::shape_half_extent) turned.
-glm::vec3 body_wall_half_extent(const Obstacle& obstacle, glm::vec3 mesh_half_extent);
+// box's half extents turned, a dynamic mesh's mesh_half_extent() turned.
+glm::vec3 body_wall_half_extent(const Obstacle& obstacle);
 
 }  // namespace liquid

@@ -61,38 +61,13 @@ PlacedMesh::PlacedMesh(const TriangleMesh& mesh, glm::vec3 center, glm::quat rot
     lo_ = glm::min(lo_, corners_.back());
     hi_ = glm::max(hi_, corners_.back());
   }
-  build_columns();
+  // inside()'s ray moved off the point by a sliver at an odd angle, so one passing exactly through
+  // an edge or a vertex (a lattice point on the mesh's axis) meets each surface once, not twice or
+  // never: a sliver of the triangles' own extent, whatever the reach.
+  ray_offset_ = glm::vec3(0.7316f, 0.4157f, 0.0f) * (1e-6f * std::max(hi_.x - lo_.x, hi_.y - lo_.y));
   lo_ -= reach;
   hi_ += reach;
   build_hierarchy();
-}
-
-// Square columns, about sqrt(n) of them for n triangles (at most 512 a side), each listing the
-// triangles whose xy box overlaps it: counted first, then filled, in two flat arrays.
-void PlacedMesh::build_columns() {
-  const size_t triangles = corners_.size() / 3;
-  column_origin_ = glm::vec2(lo_);
-  const glm::vec2 extent = glm::max(glm::vec2(hi_ - lo_), glm::vec2(1e-6f));
-  const float side = std::sqrt(extent.x * extent.y / float(std::max<size_t>(triangles, 1)));
-  columns_ = glm::clamp(glm::ivec2(glm::ceil(extent / side)), glm::ivec2(1), glm::ivec2(512));
-  column_size_ = extent / glm::vec2(columns_);
-  const auto for_each_column = [&](size_t t, auto&& visit) {
-    const glm::vec3 a = corners_[3 * t], b = corners_[3 * t + 1], c = corners_[3 * t + 2];
-    const glm::ivec2 from = column_of(glm::vec2(glm::min(a, glm::min(b, c))));
-    const glm::ivec2 to = column_of(glm::vec2(glm::max(a, glm::max(b, c))));
-    for (int y = from.y; y <= to.y; ++y)
-      for (int x = from.x; x <= to.x; ++x) visit(size_t(x) + size_t(columns_.x) * size_t(y));
-  };
-  column_start_.assign(size_t(columns_.x) * columns_.y + 1, 0);
-  for (size_t t = 0; t < triangles; ++t) for_each_column(t, [&](size_t c) { ++column_start_[c + 1]; });
-  for (size_t c = 1; c < column_start_.size(); ++c) column_start_[c] += column_start_[c - 1];
-  column_triangles_.resize(column_start_.back());
-  std::vector<uint32_t> filled(column_start_.begin(), column_start_.end() - 1);
-  for (size_t t = 0; t < triangles; ++t) for_each_column(t, [&](size_t c) { column_triangles_[filled[c]++] = uint32_t(t); });
-}
-
-glm::ivec2 PlacedMesh::column_of(glm::vec2 p) const {
-  return glm::clamp(glm::ivec2(glm::floor((p - column_origin_) / column_size_)), glm::ivec2(0), columns_ - 1);
 }
 
 // Top-down, split at the median centroid along the box's longest axis, leaves of a few triangles:
@@ -107,7 +82,7 @@ void PlacedMesh::build_hierarchy() {
     centroid[t] = (corners_[3 * t] + corners_[3 * t + 1] + corners_[3 * t + 2]) / 3.0f;
   }
   nodes_.clear();
-  nodes_.reserve(2 * size_t(triangles / k_leaf_triangles + 1));
+  nodes_.reserve(2 * size_t(triangles) + 1);  // a binary tree of at most one leaf per triangle
   struct Range {
     uint32_t node, begin, end;
   };
@@ -174,30 +149,42 @@ float PlacedMesh::nearest_surface(glm::vec3 p, float within) const {
 }
 
 
+// The winding number along the ray from p toward +z: each triangle above p whose projection covers
+// p adds the sign of its normal's z (+1 leaving the solid, -1 entering). Only the boxes the ray
+// passes through are opened.
+int PlacedMesh::winding_above(glm::vec3 p) const {
+  if (nodes_.empty()) return 0;
+  int winding = 0;
+  uint32_t stack[64];  // one pending sibling per level: a balanced tree is about 24 deep
+  int depth = 0;
+  stack[depth++] = 0;
+  while (depth > 0) {
+    const Node& n = nodes_[stack[--depth]];
+    if (p.x < n.lo.x || p.x > n.hi.x || p.y < n.lo.y || p.y > n.hi.y || p.z >= n.hi.z) continue;
+    if (n.count == 0) {
+      stack[depth++] = n.first;
+      stack[depth++] = n.first + 1;
+      continue;
+    }
+    for (uint32_t i = n.first; i < n.first + n.count; ++i) {
+      const uint32_t t = order_[i];
+      const glm::vec3 a = corners_[3 * t], c1 = corners_[3 * t + 1], c2 = corners_[3 * t + 2];
+      const float area = (c1.x - a.x) * (c2.y - a.y) - (c2.x - a.x) * (c1.y - a.y);
+      if (area == 0.0f) continue;
+      const float w1 = ((c2.x - p.x) * (a.y - p.y) - (a.x - p.x) * (c2.y - p.y)) / area;
+      const float w2 = ((a.x - p.x) * (c1.y - p.y) - (c1.x - p.x) * (a.y - p.y)) / area;
+      const float w0 = 1.0f - w1 - w2;
+      if (w0 < 0.0f || w1 < 0.0f || w2 < 0.0f) continue;
+      if (w0 * a.z + w1 * c1.z + w2 * c2.z <= p.z) continue;
+      winding += area > 0.0f ? 1 : -1;
+    }
+  }
+  return winding;
+}
+
 bool PlacedMesh::inside(glm::vec3 p) const {
   if (glm::any(glm::lessThan(p, lo_)) || glm::any(glm::greaterThan(p, hi_))) return false;
-  // The winding number along the ray from p toward +z: each triangle above p whose projection
-  // covers p adds the sign of its normal's z (+1 leaving the solid, -1 entering).
-  // The ray is moved off p by a sliver at an odd angle, so one passing exactly through an edge or a
-  // vertex (a lattice point on the mesh's axis) meets each surface once, not twice or never.
-  const glm::vec3 extent = hi_ - lo_;
-  p += glm::vec3(0.7316f, 0.4157f, 0.0f) * (1e-6f * std::max(extent.x, extent.y));
-  const glm::ivec2 column = column_of(glm::vec2(p));
-  const size_t c = size_t(column.x) + size_t(columns_.x) * size_t(column.y);
-  int winding = 0;
-  for (uint32_t i = column_start_[c]; i < column_start_[c + 1]; ++i) {
-    const uint32_t t = column_triangles_[i];
-    const glm::vec3 a = corners_[3 * t], c1 = corners_[3 * t + 1], c2 = corners_[3 * t + 2];
-    const float area = (c1.x - a.x) * (c2.y - a.y) - (c2.x - a.x) * (c1.y - a.y);
-    if (area == 0.0f) continue;
-    const float w1 = ((c2.x - p.x) * (a.y - p.y) - (a.x - p.x) * (c2.y - p.y)) / area;
-    const float w2 = ((a.x - p.x) * (c1.y - p.y) - (c1.x - p.x) * (a.y - p.y)) / area;
-    const float w0 = 1.0f - w1 - w2;
-    if (w0 < 0.0f || w1 < 0.0f || w2 < 0.0f) continue;
-    if (w0 * a.z + w1 * c1.z + w2 * c2.z <= p.z) continue;
-    winding += area > 0.0f ? 1 : -1;
-  }
-  return winding != 0;
+  return winding_above(p + ray_offset_) != 0;
 }
 
 float PlacedMesh::distance(glm::vec3 p) const {

@@ -24,10 +24,9 @@ float longest_edge(const TriangleMesh& mesh);
 
 // A mesh at one pose: signed distance (m, negative inside) within `reach` of the surface, clamped to
 // +-reach beyond it, like the GPU's field. Inside by the winding along +z (the rasterizer's test),
-// over the triangles of the point's column (about as many columns as the square root of the
-// triangles' count); the distance from a bounding-volume hierarchy of the triangles. Either query
-// costs about the log of the triangles' count plus the few near it, so a mesh of millions of
-// triangles is carved around in seconds.
+// the distance to the nearest triangle, both over a bounding-volume hierarchy of the triangles, so
+// a query visits the boxes along its ray or near its point rather than every triangle (a mesh of
+// millions of triangles is carved around in seconds).
 class PlacedMesh {
  public:
   PlacedMesh(const TriangleMesh& mesh, glm::vec3 center, float reach);
@@ -44,19 +43,15 @@ class PlacedMesh {
   };
   void build_hierarchy();
   float nearest_surface(glm::vec3 p, float within) const;
+  int winding_above(glm::vec3 p) const;
 
   std::vector<glm::vec3> corners_;  // 3 per triangle, world
   glm::vec3 lo_{0.0f}, hi_{0.0f};
   float reach_ = 0.0f;
-  // Columns along z over the triangles' xy box: column c's triangles are
-  // column_triangles_[column_start_[c] .. column_start_[c + 1]).
-  glm::ivec2 columns_{1};
-  glm::vec2 column_origin_{0.0f}, column_size_{1.0f};
-  std::vector<uint32_t> column_start_, column_triangles_;
   std::vector<Node> nodes_;
   std::vector<uint32_t> order_;  // triangles in leaf order
-  void build_columns();
-  glm::ivec2 column_of(glm::vec2 p) const;
+  // How far inside() moves its ray off the point: a sliver of the triangles' own extent.
+  glm::vec3 ray_offset_{0.0f};
 };
 
 }  // namespace liquid

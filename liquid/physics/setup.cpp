@@ -37,9 +37,9 @@ constexpr double k_pi = 3.14159265358979323846;
 // A rigid body must start wholly inside the domain: the wall contact keeps its box there
 // (body_wall_half_extent), so one placed across a wall, or wider than the domain, would be moved
 // at its first step without a word.
-void check_body_inside_domain(const Scene& scene, size_t index, glm::vec3 mesh_half_extent) {
+void check_body_inside_domain(const Scene& scene, size_t index) {
   const Obstacle& o = scene.obstacles[index];
-  const glm::vec3 e = body_wall_half_extent(o, mesh_half_extent);
+  const glm::vec3 e = body_wall_half_extent(o);
   // A mesh's box is its principal box about its centre of mass, larger than its bounding box when
   // the two centres differ: say which box, or the figure would not match the file's.
   const char* shape = o.shape == ObstacleShape::Sphere ? "sphere"
@@ -339,6 +339,8 @@ SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
   // Again for a scene built in code; a file's was checked when read.
   check_list_limits(scene);
   check_mesh_winding(scene);
+  for (size_t i = 0; i < scene.obstacles.size(); ++i)
+    if (scene.obstacles[i].dynamic) check_body_inside_domain(scene, i);
   SimulationSetup setup;
   setup.dimension = scene.dimension;
   setup.shallow_water = scene.mode == SimulationMode::ShallowWater;
@@ -416,10 +418,8 @@ SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
     b.added_inertia_ratio = float(body_added_inertia_ratio(o, setup.dimension, b.added_mass));
     if (o.shape != ObstacleShape::Mesh) continue;
     b.shape_half_size = body_shape_half_size(o, setup.kernel_radius_cells, setup.cell_size);
-    for (const glm::vec3& v : o.mesh.vertices) b.shape_half_extent = glm::max(b.shape_half_extent, glm::abs(v) * o.mesh.scale);
+    b.shape_half_extent = mesh_half_extent(o.mesh);
   }
-  for (size_t i = 0; i < scene.obstacles.size(); ++i)
-    if (scene.obstacles[i].dynamic) check_body_inside_domain(scene, i, setup.bodies[i].shape_half_extent);
   check_time_step(scene, setup);
   return setup;
 }

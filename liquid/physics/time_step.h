@@ -54,11 +54,6 @@ double largest_stable_time_step(const SimulationSetup& setup);
 // (dam_break_3d); 0.7 admits each scene's gravity at its stiffness (dam_break_2d: up to
 // 15.4 m/s^2 at its k = 22.05, half the old slider's end of 30 m/s^2).
 inline constexpr double k_max_hydrostatic_ratio = 0.7;
-struct RuntimeParameterRange {
-  float max_gravity = 0.0f;  // m/s^2, of |g|, at the stiffness passed in
-  float min_stiffness = 0.0f, max_stiffness = 0.0f;  // at the gravity passed in
-  float min_pic_ratio = 0.0f, max_pic_ratio = 1.0f;
-};
 RuntimeParameterRange runtime_parameter_range(const SimulationSetup& setup, double time_step, float stiffness,
                                               glm::vec3 gravity);
 

@@ -51,15 +51,18 @@ std::string coordinate_problem(double x) {
 
 std::string quote(std::string_view token) { return "`" + printable(token, 40) + "`"; }
 
-void split(std::string_view line, std::vector<std::string_view>& tokens) {
+bool split(std::string_view line, std::vector<std::string_view>& tokens) {
   tokens.clear();
   size_t at = 0;
   while (at < line.size()) {
     while (at < line.size() && (line[at] == ' ' || line[at] == '\t')) ++at;
     const size_t start = at;
     while (at < line.size() && line[at] != ' ' && line[at] != '\t') ++at;
-    if (at > start) tokens.push_back(line.substr(start, at - start));
+    if (at == start) continue;
+    if (tokens.size() == k_max_line_fields) return false;
+    tokens.push_back(line.substr(start, at - start));
   }
+  return true;
 }
 
 bool LineReader::next(std::string_view& line) {

@@ -37,8 +37,13 @@ std::string coordinate_problem(double x);
 // A token as a message quotes it: `abc`, control characters escaped, a long one cut.
 std::string quote(std::string_view token);
 
-// Splits `line` at spaces and tabs into `tokens` (cleared first; views into `line`).
-void split(std::string_view line, std::vector<std::string_view>& tokens);
+// The most fields one line may hold (a polygon's corners): a single line of a 1 GiB file would
+// otherwise become hundreds of millions of tokens before any count is checked.
+constexpr std::size_t k_max_line_fields = std::size_t(1) << 20;
+
+// Splits `line` at spaces and tabs into `tokens` (cleared first; views into `line`); false, with
+// the first k_max_line_fields tokens, when the line holds more.
+[[nodiscard]] bool split(std::string_view line, std::vector<std::string_view>& tokens);
 
 // The lines of a text one at a time, without their "\n" or "\r\n", numbered from 1. Linear in the
 // text: a line without its newline at the end of the text is the last one.

@@ -21,7 +21,8 @@ class ObjReader {
     std::string_view line;
     while (lines_.next(line)) {
       line = line.substr(0, line.find('#'));
-      mesh_parse::split(line, tokens_);
+      if (!mesh_parse::split(line, tokens_))
+        refuse("more than " + std::to_string(mesh_parse::k_max_line_fields) + " fields on one line");
       if (tokens_.empty()) continue;
       const std::string_view keyword = tokens_[0];
       if (keyword == "v") vertex();

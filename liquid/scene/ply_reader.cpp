@@ -126,7 +126,7 @@ Header read_header(std::string_view bytes, const std::string& name) {
     if (!lines.next(line) || !lines.ended_by_newline())
       fail(name, bytes.size() > k_max_header_bytes ? "no end_header line in the first 64 KiB: not a PLY header"
                                                    : "the file ends inside the PLY header (no end_header line)");
-    mesh_parse::split(line, t);
+    (void)mesh_parse::split(line, t);  // a header line is within the header's 64 KiB
     if (t.empty() || t[0] == "comment" || t[0] == "obj_info") continue;
     if (t[0] == "end_header") {
       if (t.size() != 1) refuse("nothing may follow end_header on its line");
@@ -314,7 +314,8 @@ class AsciiIn {
     do {
       if (!lines_.next(line))
         fail(name_, "the file ends before " + e.name + " " + to_string(index) + " of " + to_string(e.count) + " (truncated)");
-      mesh_parse::split(line, tokens_);
+      if (!mesh_parse::split(line, tokens_))
+        refuse("more than " + std::to_string(mesh_parse::k_max_line_fields) + " values on one line");
     } while (tokens_.empty());
     next_ = 0;
   }
@@ -350,8 +351,7 @@ class AsciiIn {
     std::string_view line;
     std::vector<std::string_view> tokens;
     while (lines_.next(line)) {
-      mesh_parse::split(line, tokens);
-      if (!tokens.empty()) refuse("data after the last element (" + quote(tokens[0]) + ")");
+      if (!mesh_parse::split(line, tokens) || !tokens.empty()) refuse("data after the last element (" + quote(tokens[0]) + ")");
     }
   }
   [[noreturn]] void refuse(const std::string& what) const {

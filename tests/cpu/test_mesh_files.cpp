@@ -303,3 +303,17 @@ TEST_CASE("mesh files: a mesh file over 1 GiB is refused before it is read", "[m
   fs::resize_file(dir / "large.obj", (std::uintmax_t(1) << 30) + 1);  // sparse: no disk used
   check_refused(dir / "large.obj", "larger than the 1 GiB a mesh file may be");
 }
+
+TEST_CASE("mesh files: a line of more fields than a polygon may have is refused before it is split whole",
+          "[mesh][mesh_file]") {
+  // 2^20 + 1 corners on one face line (8 MB): the split stops at the limit instead of making a
+  // token of every field of a line that could be the whole 1 GiB file.
+  const fs::path dir = scratch("long_line");
+  std::string face = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf";
+  for (size_t i = 0; i <= (size_t(1) << 20); ++i) face += " 1";
+  check_refused(write(dir / "long.obj", face + "\n"), "more than 1048576 fields on one line");
+  std::string values = "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+                       "property float z\nend_header\n0";
+  for (size_t i = 0; i <= (size_t(1) << 20); ++i) values += " 0";
+  check_refused(write(dir / "long.ply", values + "\n"), "more than 1048576 values on one line");
+}

@@ -105,13 +105,15 @@ TEST_CASE("meshes that cannot be obstacles are refused in one line naming the fi
   write(dir / "empty.obj", "v 0 0 0\nv 1 0 0\n");
   // Degenerate: two triangles back to back, closed but flat.
   write(dir / "flat.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 2\n");
-  write(dir / "garbage.ply", "ply\nformat ascii 1.0\nelement vertex 2\nend_header\nnot numbers\n");
+  write(dir / "garbage.ply",
+        "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\n"
+        "element face 0\nproperty list uchar int vertex_indices\nend_header\nnot numbers\n");
   const struct {
     const char* file;
     const char* fault;
   } cases[] = {{"open.obj", "not closed"},        {"flipped.obj", "not closed"},
                {"empty.obj", "has no triangle faces"},  {"flat.obj", "degenerate extent"},
-               {"missing.obj", "no such mesh file"}, {"garbage.ply", ""}};
+               {"missing.obj", "no such mesh file"}, {"garbage.ply", "`not`"}};
   for (const auto& c : cases) {
     const std::string message = refusal(dir, c.file);
     INFO(c.file << ": " << message);
@@ -168,4 +170,10 @@ TEST_CASE("a placed mesh sphere's signed distance matches the sphere's", "[mesh]
   INFO("worst distance error " << worst << " m");
   CHECK(inside_mismatch == 0);
   CHECK(worst < 0.01f * radius + 1e-3f);
+  // Whatever the reach (the views ask with an unbounded one), the inside is the sphere's: the ray's
+  // sliver off the point is a sliver of the mesh, not of the reach.
+  const liquid::PlacedMesh unbounded(mesh, center, 1e30f);
+  CHECK(unbounded.inside(center));
+  CHECK(unbounded.distance(center) == Approx(-radius).margin(0.02f * radius));
+  CHECK_FALSE(unbounded.inside(center + glm::vec3(0.0f, 2.0f * radius, 0.0f)));
 }

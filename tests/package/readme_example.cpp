@@ -37,3 +37,14 @@ int main() {
   }
 }
 // END README
+
+// docs/integration.md's live parameters, verbatim.
+#include <algorithm>
+
+// A slider's stiffness, held to what the node's present step keeps stable.
+void set_stiffness(liquid::LiquidNode& node, float slider_stiffness) {
+  liquid::RuntimeParameters p = node.runtime_parameters();
+  const liquid::RuntimeParameterRange range = node.runtime_parameter_range(p);
+  p.stiffness = std::clamp(slider_stiffness, range.min_stiffness, range.max_stiffness);
+  node.set_runtime_parameters(p);
+}

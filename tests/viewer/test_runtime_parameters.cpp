@@ -50,15 +50,14 @@ TEST_CASE("runtime parameters change a running node's next steps and refuse bad 
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
-// The panel's slider ranges (liquid::runtime_parameter_range) at their ends, on dam_break_2d with
+// The panel's slider ranges (LiquidNode::runtime_parameter_range) at their ends, on dam_break_2d with
 // the liquid moving (the column collapsed for 0.45 s first): every end runs on stable, and the old
 // gravity slider's end, 30 m/s^2, is outside the range.
 TEST_CASE("every end of the viewer's slider ranges runs stable at dam_break_2d's step", "[gpu][liquid][viewer]") {
   liquid::LiquidNode node(test::gpu(), test::shipped_scene("dam_break_2d"));
   const liquid::LiquidNode::RuntimeParameters start = node.runtime_parameters();
   const liquid::SimulationSetup& setup = node.simulation().setup();
-  const liquid::RuntimeParameterRange range =
-      liquid::runtime_parameter_range(setup, node.time_step(), start.stiffness, start.gravity);
+  const liquid::RuntimeParameterRange range = node.runtime_parameter_range(start);
   INFO("|g| <= " << range.max_gravity << " m/s^2, k in [" << range.min_stiffness << ", " << range.max_stiffness << "]");
   CHECK(range.max_gravity < 30.0f);  // the old slider's end
   CHECK(range.max_gravity > glm::length(start.gravity));
@@ -67,7 +66,11 @@ TEST_CASE("every end of the viewer's slider ranges runs stable at dam_break_2d's
 
   test::run_steps(node, 500);
   const liquid::LiquidNode::Checkpoint moving = node.save_checkpoint();
-  const auto at_stiffness = [&](float k) { return liquid::runtime_parameter_range(setup, node.time_step(), k, start.gravity); };
+  const auto at_stiffness = [&](float k) {
+    liquid::LiquidNode::RuntimeParameters at = start;
+    at.stiffness = k;
+    return node.runtime_parameter_range(at);
+  };
   const float middle = 0.5f * (start.stiffness + range.max_stiffness);
   struct End {
     const char* name;

@@ -15,11 +15,9 @@ namespace {
 
 void live_parameters(liquid::LiquidNode& node) {
   liquid::LiquidNode::RuntimeParameters p = node.runtime_parameters();
-  const liquid::SimulationSetup& setup = node.simulation().setup();
-  // Every value the sliders offer runs stable at the present step (liquid/physics/time_step.h);
-  // AlwaysClamp holds Ctrl+click typing to the range too.
-  const liquid::RuntimeParameterRange range =
-      liquid::runtime_parameter_range(setup, node.time_step(), p.stiffness, p.gravity);
+  // Every value the sliders offer runs stable at the present step; AlwaysClamp holds Ctrl+click
+  // typing to the range too.
+  const liquid::RuntimeParameterRange range = node.runtime_parameter_range(p);
   const ImGuiSliderFlags clamp = ImGuiSliderFlags_AlwaysClamp;
   const float gmax = range.max_gravity;
   bool changed = false;
@@ -32,7 +30,7 @@ void live_parameters(liquid::LiquidNode& node) {
   }
   // The range bounds |g|, not each component: a diagonal past it is shortened to it.
   if (const float length = glm::length(p.gravity); length > gmax) p.gravity *= gmax / length;
-  const bool per_second = setup.pic_ratio_reference_step > 0.0f;
+  const bool per_second = node.simulation().setup().pic_ratio_reference_step > 0.0f;
   changed |= ImGui::SliderFloat(per_second ? "PIC ratio (per reference step)" : "PIC ratio", &p.pic_ratio,
                                 range.min_pic_ratio, range.max_pic_ratio, "%.3f", clamp);
   changed |= ImGui::SliderFloat("stiffness k", &p.stiffness, range.min_stiffness, range.max_stiffness, "%.1f",
