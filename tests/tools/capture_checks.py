@@ -644,6 +644,18 @@ def check_video():
         expect=1)
     if open(video, "rb").read() != encoded or os.path.exists(video + ".partial"):
         fail("a failed --overwrite run replaced the video already there")
+    # A run that fails only on validation messages (the layer's best-practice warnings, turned on
+    # through the environment) fails like any other: the replaced frames and the video stay.
+    before = contents(out)
+    env = dict(os.environ, VK_LAYER_ENABLES="VK_VALIDATION_FEATURE_ENABLE_BEST_PRACTICES_EXT")
+    result = subprocess.run([ARGS.tool, ARGS.scene, "-e", "3", "-o", out, "--video", video, "--overwrite"] + SMALL,
+                            capture_output=True, text=True, timeout=600, env=env)
+    if result.returncode == 0:
+        print("the validation layer ignores VK_LAYER_ENABLES: no run with validation messages checked")
+    elif "validation message" not in result.stderr:
+        fail(f"the run with best-practice warnings should fail on them: exit {result.returncode}, {result.stderr!r}")
+    elif open(video, "rb").read() != encoded or os.path.exists(video + ".partial") or contents(out) != before:
+        fail(f"a run failed by validation messages replaced the video or the frames: {files(out)}")
     # A relative name that ffmpeg would read as an option ("-lead.mp4"), given from another
     # directory: encoded where it was asked for, and recorded absolute for a resume from elsewhere.
     lead, out2 = os.path.join(ARGS.work, "-lead.mp4"), os.path.join(ARGS.work, "video_lead")
@@ -681,6 +693,14 @@ def check_video():
     summary = json.load(open(os.path.join(broken, "summary.json")))
     if "video" not in json.dumps(summary):
         fail(f"summary.json does not say the video failed: {summary}")
+    # Replacing a run, a failed video fails the run: its files go and the replaced run comes back.
+    before = contents(broken)
+    result = subprocess.run([ARGS.tool, ARGS.scene, "-e", "3", "-o", broken, "--video",
+                             os.path.join(ARGS.work, "broken.mp4"), "--overwrite"] + SMALL,
+                            capture_output=True, text=True, timeout=600, env=env)
+    if result.returncode == 0 or "--video" not in result.stderr or contents(broken) != before:
+        fail(f"an --overwrite run whose ffmpeg died should put the replaced run back: exit {result.returncode}, "
+             f"{files(broken)}, {result.stderr!r}")
     recorded = json.load(open(os.path.join(out2, "capture.json")))["video"]
     if recorded != os.path.abspath(lead):
         fail(f"capture.json records the video as {recorded!r}, not the absolute {os.path.abspath(lead)!r}")
