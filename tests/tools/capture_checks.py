@@ -7,6 +7,7 @@ Each check raises (exit 1, naming what is wrong) or prints 'ok'."""
 import argparse
 import json
 import os
+import select
 import shutil
 import signal
 import struct
@@ -717,7 +718,14 @@ def check_setup_stages():
                                stdout=follower, stderr=follower, stdin=subprocess.DEVNULL)
     os.close(follower)
     seen = b""
+    deadline = time.monotonic() + 300
     while True:
+        left = deadline - time.monotonic()
+        if left <= 0 or not select.select([leader], [], [], left)[0]:
+            process.kill()
+            process.wait()
+            os.close(leader)
+            fail(f"the run on a terminal did not end within 300 s: {seen.decode(errors='replace')!r}")
         try:
             chunk = os.read(leader, 4096)
         except OSError:  # the terminal closes when the run ends
