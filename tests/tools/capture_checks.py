@@ -7,6 +7,7 @@ Each check raises (exit 1, naming what is wrong) or prints 'ok'."""
 import argparse
 import json
 import os
+import select
 import shutil
 import signal
 import struct
@@ -318,6 +319,56 @@ def check_replace():
     print(f"a failed and a killed --overwrite run left {len(old)} files as they were; a stopped one replaced them")
 
 
+def check_leftovers():
+    """A set-aside folder that a killed run left is read by the state its name says: one ending in
+    .incomplete (killed while the replaced run's files were moving in or out) has its files moved
+    back and nothing deleted; a .discarded-run- one (killed while deleting the replaced run, after
+    ending well) is deleted and the finished run kept; only a whole .replaced-run- one has the
+    killed run's files removed and the replaced run put back."""
+    out = os.path.join(ARGS.work, "leftovers")
+    shutil.rmtree(out, ignore_errors=True)
+    run([ARGS.scene, "-e", "2", "--export-particles", "-o", out] + SMALL)
+    old = contents(out)
+
+    def next_run(expected, says, state):
+        refused = run([ARGS.scene, "-e", "1", "-o", out] + SMALL, expect=1)
+        if says not in refused.stdout or refused.stderr.count("\n") != 1 or \
+                "holds another capture's files" not in refused.stderr:
+            fail(f"{state}: the next run should say {says!r}, then refuse the folder: "
+                 f"{refused.stdout!r} {refused.stderr!r}")
+        if files(out) != sorted(expected) or contents(out) != expected:
+            fail(f"{state}: the next run left {files(out)}, expected {sorted(expected)}")
+
+    # Killed while setting the old run aside: part of it moved, nothing of the new run written.
+    aside = os.path.join(out, ".replaced-run-99999.incomplete")
+    os.mkdir(aside)
+    for name in ("capture.json", "frame_00001.png", "particles_00002.ply"):
+        os.rename(os.path.join(out, name), os.path.join(aside, name))
+    next_run(old, "put back the files of a run that a killed --overwrite run was moving", "a half-filled set-aside")
+    # Killed while putting the old run back: the new run's files gone, part of the old one back.
+    aside = os.path.join(out, ".replaced-run-99999.incomplete")
+    os.mkdir(aside)
+    for name in ("frame_00002.png", "stats.csv", "summary.json"):
+        os.rename(os.path.join(out, name), os.path.join(aside, name))
+    next_run(old, "put back the files of a run that a killed --overwrite run was moving", "a half-emptied set-aside")
+    # Killed after ending well, while the replaced run was deleted: the finished run stays.
+    run([ARGS.scene, "-e", "3", "-o", out, "--overwrite"] + SMALL)
+    new = contents(out)
+    discarded = os.path.join(out, ".discarded-run-99999")
+    os.mkdir(discarded)
+    for name in ("frame_00001.png", "stats.csv", "summary.json"):
+        open(os.path.join(discarded, name), "wb").write(old[name])
+    next_run(new, "deleted .discarded-run-99999/, a replaced run whose deletion was cut short",
+             "a half-deleted replaced run")
+    # Killed after setting the old run aside whole and writing its own files: they go, the old run comes back.
+    aside = os.path.join(out, ".replaced-run-99999")
+    os.mkdir(aside)
+    for name, data in old.items():
+        open(os.path.join(aside, name), "wb").write(data)
+    next_run(old, "put back the run that a killed --overwrite run had set aside", "a whole set-aside")
+    print("a half-filled, a half-emptied, a half-deleted and a whole set-aside folder were each recovered")
+
+
 def check_refusals():
     """Bad path flags are refused by name before the run, in one line with exit status 2, nothing
     written: an empty --video or --resume, a --video that is the output folder, a --set path that
@@ -594,6 +645,18 @@ def check_video():
         expect=1)
     if open(video, "rb").read() != encoded or os.path.exists(video + ".partial"):
         fail("a failed --overwrite run replaced the video already there")
+    # A run that fails only on validation messages (the layer's best-practice warnings, turned on
+    # through the environment) fails like any other: the replaced frames and the video stay.
+    before = contents(out)
+    env = dict(os.environ, VK_LAYER_ENABLES="VK_VALIDATION_FEATURE_ENABLE_BEST_PRACTICES_EXT")
+    result = subprocess.run([ARGS.tool, ARGS.scene, "-e", "3", "-o", out, "--video", video, "--overwrite"] + SMALL,
+                            capture_output=True, text=True, timeout=600, env=env)
+    if result.returncode == 0:
+        print("the validation layer ignores VK_LAYER_ENABLES: no run with validation messages checked")
+    elif "validation message" not in result.stderr:
+        fail(f"the run with best-practice warnings should fail on them: exit {result.returncode}, {result.stderr!r}")
+    elif open(video, "rb").read() != encoded or os.path.exists(video + ".partial") or contents(out) != before:
+        fail(f"a run failed by validation messages replaced the video or the frames: {files(out)}")
     # A relative name that ffmpeg would read as an option ("-lead.mp4"), given from another
     # directory: encoded where it was asked for, and recorded absolute for a resume from elsewhere.
     lead, out2 = os.path.join(ARGS.work, "-lead.mp4"), os.path.join(ARGS.work, "video_lead")
@@ -631,6 +694,14 @@ def check_video():
     summary = json.load(open(os.path.join(broken, "summary.json")))
     if "video" not in json.dumps(summary):
         fail(f"summary.json does not say the video failed: {summary}")
+    # Replacing a run, a failed video fails the run: its files go and the replaced run comes back.
+    before = contents(broken)
+    result = subprocess.run([ARGS.tool, ARGS.scene, "-e", "3", "-o", broken, "--video",
+                             os.path.join(ARGS.work, "broken.mp4"), "--overwrite"] + SMALL,
+                            capture_output=True, text=True, timeout=600, env=env)
+    if result.returncode == 0 or "--video" not in result.stderr or contents(broken) != before:
+        fail(f"an --overwrite run whose ffmpeg died should put the replaced run back: exit {result.returncode}, "
+             f"{files(broken)}, {result.stderr!r}")
     recorded = json.load(open(os.path.join(out2, "capture.json")))["video"]
     if recorded != os.path.abspath(lead):
         fail(f"capture.json records the video as {recorded!r}, not the absolute {os.path.abspath(lead)!r}")
@@ -647,7 +718,14 @@ def check_setup_stages():
                                stdout=follower, stderr=follower, stdin=subprocess.DEVNULL)
     os.close(follower)
     seen = b""
+    deadline = time.monotonic() + 300
     while True:
+        left = deadline - time.monotonic()
+        if left <= 0 or not select.select([leader], [], [], left)[0]:
+            process.kill()
+            process.wait()
+            os.close(leader)
+            fail(f"the run on a terminal did not end within 300 s: {seen.decode(errors='replace')!r}")
         try:
             chunk = os.read(leader, 4096)
         except OSError:  # the terminal closes when the run ends
@@ -692,6 +770,7 @@ if __name__ == "__main__":
               "resume": check_resume, "dryrun": check_dry_run, "estimate": check_estimate, "names": check_names, "folders": check_folders, "range": check_range, "volume": check_volume,
               "video": check_video, "adaptive": check_adaptive,
               "failsafe": check_failsafe, "lock": check_lock, "fps": check_fps, "replace": check_replace,
+              "leftovers": check_leftovers,
               "refusals": check_refusals, "lock_write": check_lock_write, "resume_elsewhere": check_resume_elsewhere,
               "setup_stages": check_setup_stages}
     checks[ARGS.check]()

@@ -272,7 +272,9 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
         video_status = "not written: the run failed, and " + settings.video + " is kept";
       }
       if (video) video->finish();
-    } catch (const std::exception& error) {  // the frames, table and summary still stand
+    } catch (const std::exception& error) {
+      // The summary says so, then the run fails: with no replaced run set aside its frames, table
+      // and summary stand; with one, they are removed and the replaced run (and its video) come back.
       video_status = std::string("failed: ") + error.what();
     }
     json facts = {{"status", status},
@@ -308,7 +310,9 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
         stats.append(header, stats_row(row, header));
         folder.wrote_output();
       }
-      last_done = frame;  // the frame's files and row are complete: a video failure below keeps them
+      // The frame's files and row are complete: a video failure below keeps them, unless a replaced
+      // run is put back.
+      last_done = frame;
       if (written && video) video->add(*result.image);
       if (settings.checkpoint_every > 0 && frame > 0 && frame % settings.checkpoint_every == 0) {
         capture::save_checkpoint(settings.folder / capture::k_checkpoint_name,
@@ -317,6 +321,9 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
       }
       progress.update(frame - first_frame + 1, steps / std::max(row.wall_ms * 1e-3, 1e-9), "steps");
     }
+    // Before the run concludes as finished (which renames its video over an existing one): a run
+    // with validation messages fails like any other, keeping the replaced run and its video.
+    if (!g_stop_signal) tools::fail_on_validation_messages(context.validation_message_count());
   } catch (const std::exception& error) {
     progress.interrupt();  // the error message starts on its own line
     try {
@@ -342,7 +349,6 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
     return k_interrupted_exit;
   }
   conclude("finished");
-  tools::fail_on_validation_messages(context.validation_message_count());
   folder.ended_well();
   std::printf("liquid_capture: wrote frames %d to %d to %s\n", plan.start, plan.end, settings.folder.string().c_str());
   return 0;

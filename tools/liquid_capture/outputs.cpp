@@ -147,19 +147,49 @@ void RunFolder::unlock() {
 }
 
 void RunFolder::recover_set_aside() {
-  std::vector<fs::path> found;
+  // By their names' states: .replaced-run-PID/ holds a whole replaced run (the run that set it
+  // aside may have written its own files since), .replaced-run-PID.incomplete/ part of one (the
+  // rest is still in the folder, and nothing of a new run is), .discarded-run-PID/ a replaced run
+  // whose deletion was cut short.
+  std::vector<fs::path> found, discarded;
   std::error_code error;
-  for (const auto& entry : fs::directory_iterator(folder_, error))
-    if (entry.is_directory(error) && entry.path().filename().string().rfind(k_set_aside_prefix, 0) == 0)
-      found.push_back(entry.path());
-  if (found.empty()) return;
+  for (const auto& entry : fs::directory_iterator(folder_, error)) {
+    if (!entry.is_directory(error)) continue;
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(k_set_aside_prefix, 0) == 0) found.push_back(entry.path());
+    if (name.rfind(k_discarded_prefix, 0) == 0) discarded.push_back(entry.path());
+  }
+  if (found.empty() && discarded.empty()) return;
   lock();  // a run still writing here holds it: then that run's set-aside is refused with the lock's line
+  for (const fs::path& old : discarded) {
+    fs::remove_all(old, error);
+    std::printf("liquid_capture: %s: deleted %s/, a replaced run whose deletion was cut short\n", folder_.c_str(),
+                old.filename().c_str());
+    std::fflush(stdout);
+  }
+  if (found.empty()) return;
+  std::sort(found.begin(), found.end());
   if (found.size() > 1)
     throw std::runtime_error(folder_.string() + ": holds " + std::to_string(found.size()) + " set-aside runs (" +
                              found[0].filename().string() + ", " + found[1].filename().string() +
                              "); keep the one to put back, move its files into the folder, and delete the others");
-  set_aside_ = found.front();
-  const std::string name = set_aside_.filename().string();
+  const fs::path set_aside = found.front();
+  const std::string name = set_aside.filename().string();
+  const bool incomplete = name.size() > std::strlen(k_incomplete_suffix) &&
+                          name.compare(name.size() - std::strlen(k_incomplete_suffix), std::string::npos,
+                                       k_incomplete_suffix) == 0;
+  if (incomplete) {
+    // Cut short while setting a run aside, or while putting it back: the files go back, and
+    // nothing in the folder is deleted.
+    if (!move_back(set_aside))
+      throw std::runtime_error(folder_.string() + ": cannot put back the files in " + name +
+                               "/ (a run that was stopped while moving them); move them into the folder by hand");
+    std::printf("liquid_capture: %s: put back the files of a run that a killed --overwrite run was moving in %s/\n",
+                folder_.c_str(), name.c_str());
+    std::fflush(stdout);
+    return;
+  }
+  set_aside_ = set_aside;
   if (mode_ == Mode::Resume) {
     std::printf("liquid_capture: %s: %s/ holds the run that the run being resumed replaced; it is deleted when the "
                 "resume ends well\n", folder_.c_str(), name.c_str());
@@ -168,27 +198,74 @@ void RunFolder::recover_set_aside() {
   // The killed run failed: its own files go (those named by its record), and the run it replaced comes back.
   put_back(recorded_patterns(folder_));
   if (!set_aside_.empty())
-    throw std::runtime_error(folder_.string() + ": cannot put back the files in " + name +
+    throw std::runtime_error(folder_.string() + ": cannot put back the files in " + set_aside_.filename().string() +
                              "/ (a run that was killed set them aside); move them into the folder by hand");
   std::printf("liquid_capture: %s: put back the run that a killed --overwrite run had set aside in %s/, and removed "
               "that run's files\n", folder_.c_str(), name.c_str());
   std::fflush(stdout);
 }
 
+bool RunFolder::move_back(const fs::path& from) {
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(from, error))
+    fs::rename(entry.path(), folder_ / entry.path().filename(), error);
+  return fs::remove(from, error);  // only if every file went back
+}
+
 void RunFolder::put_back(const std::vector<NamePattern>& new_run) {
   std::error_code error;
-  for (const fs::path& file : files_named(folder_, new_run)) fs::remove(file, error);
-  for (const auto& entry : fs::directory_iterator(set_aside_, error))
-    fs::rename(entry.path(), folder_ / entry.path().filename(), error);
-  if (fs::remove(set_aside_, error)) set_aside_.clear();  // only if every file went back
+  // The record goes last, so a run killed meanwhile still names the files left to remove.
+  std::vector<fs::path> files = files_named(folder_, new_run);
+  std::stable_partition(files.begin(), files.end(), [](const fs::path& f) { return f.filename() != k_record_name; });
+  for (const fs::path& file : files) fs::remove(file, error);
+  // From here the folder holds none of the new run's files: a run killed while the old ones move
+  // back leaves .incomplete, whose files the next run moves back, deleting nothing.
+  const fs::path moving = set_aside_.string() + k_incomplete_suffix;
+  fs::rename(set_aside_, moving, error);
+  if (error) return;
+  set_aside_ = moving;
+  if (move_back(moving)) set_aside_.clear();
 }
 
 void RunFolder::set_old_files_aside() {
   if (old_files_.empty()) return;
-  set_aside_ = folder_ / (k_set_aside_prefix + std::to_string(::getpid()));
-  fs::create_directory(set_aside_);
-  // Renames within one folder: nothing is copied, and a crash leaves the old run whole in set_aside_.
-  for (const fs::path& file : old_files_) fs::rename(file, set_aside_ / file.filename());
+  // Moved into .incomplete first, renamed to the final name once every file is there: a run killed
+  // meanwhile leaves a folder that the next run knows holds only part of the old run.
+  const fs::path done = folder_ / (k_set_aside_prefix + std::to_string(::getpid()));
+  const fs::path moving = done.string() + k_incomplete_suffix;
+  std::error_code error;
+  std::vector<fs::path> moved;
+  std::string failed = moving.filename().string() + "/";
+  if (fs::create_directory(moving, error)) {
+    // Renames within one folder: nothing is copied.
+    for (const fs::path& file : old_files_) {
+      fs::rename(file, moving / file.filename(), error);
+      if (error) {
+        failed = file.filename().string();
+        break;
+      }
+      moved.push_back(file);
+    }
+    if (!error) fs::rename(moving, done, error);
+    if (!error) {
+      set_aside_ = done;
+      return;
+    }
+  } else if (!error) {
+    error = std::make_error_code(std::errc::file_exists);
+  }
+  // Nothing of the new run is written yet: the files moved go back where they were.
+  std::error_code ignored;
+  bool all_back = true;
+  for (const fs::path& file : moved) {
+    fs::rename(moving / file.filename(), file, ignored);
+    if (ignored) all_back = false;
+  }
+  if (all_back && fs::is_directory(moving, ignored)) fs::remove(moving, ignored);  // only if empty
+  const std::string left = all_back ? "they are left as they were"
+                                    : "some are in " + moving.filename().string() + "/, and the next run puts them back";
+  throw std::runtime_error(folder_.string() + ": cannot set the replaced run's files aside (" + failed + ": " +
+                           error.message() + "); " + left);
 }
 
 void RunFolder::wrote_output() { kept_ = true; }
@@ -196,8 +273,12 @@ void RunFolder::wrote_output() { kept_ = true; }
 void RunFolder::ended_well() {
   ended_well_ = kept_ = true;
   if (set_aside_.empty()) return;
+  // One rename first, so a run killed while the files are deleted leaves a folder that the next run
+  // knows to delete, not one it would take for a whole run to put back.
+  const fs::path discarded = folder_ / (k_discarded_prefix + std::to_string(::getpid()));
   std::error_code error;
-  fs::remove_all(set_aside_, error);
+  fs::rename(set_aside_, discarded, error);
+  fs::remove_all(error ? set_aside_ : discarded, error);
   set_aside_.clear();
 }
 
@@ -205,7 +286,8 @@ RunFolder::~RunFolder() {
   std::error_code error;
   if (!ended_well_ && puts_back_on_failure()) {
     put_back(patterns_);
-  } else if (!kept_ && mode_ != Mode::DryRun) {
+  } else if (!kept_ && mode_ != Mode::DryRun && (mode_ != Mode::Overwrite || old_files_.empty())) {
+    // (with a replaced run not set aside, the record, table and summary here are that run's)
     for (const char* name : {k_record_name, k_stats_name, k_summary_name})
       for (const std::string suffix : {"", ".partial"}) fs::remove(folder_ / (std::string(name) + suffix), error);
   }

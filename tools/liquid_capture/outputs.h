@@ -31,6 +31,13 @@ inline const char* k_checkpoint_name = "checkpoint.bin";
 // The folder --overwrite moves the replaced run into until the new run ends well. One left by a run
 // that was killed is put back by the next run into the folder, or deleted by a resume that ends well.
 inline const char* k_set_aside_prefix = ".replaced-run-";
+// Added to the set-aside folder's name while files move into or out of it: such a folder holds part
+// of the replaced run and the folder the rest, with nothing of a new run; the next run moves its
+// files back and deletes nothing.
+inline const char* k_incomplete_suffix = ".incomplete";
+// What a set-aside folder is renamed to before a run that ended well deletes it: one left by a run
+// killed meanwhile is deleted by the next run into the folder.
+inline const char* k_discarded_prefix = ".discarded-run-";
 // The advisory lock a run holds on its folder (flock), holding the holder's process id.
 inline const char* k_lock_name = ".liquid_capture.lock";
 
@@ -56,13 +63,16 @@ class RunFolder {
   // unless resuming: a resume continues that run, so the set-aside waits for the resume's end.
   RunFolder(const RunSettings& settings, Mode mode);
   // With Mode::Overwrite: moves the old run's files into a folder of their own inside this one
-  // (k_set_aside_prefix + the process id), so the new run's files cannot mix with them; called once
-  // nothing else can refuse the run. They are deleted when the run ends well, put back otherwise.
+  // (k_set_aside_prefix + the process id, named so only once every file is in it), so the new run's
+  // files cannot mix with them; called once nothing else can refuse the run. They are deleted when
+  // the run ends well, put back otherwise. Throws std::runtime_error with one line when a file
+  // cannot be moved, after moving back those already moved.
   void set_old_files_aside();
   // Marks the run as having written an output: from then on the folder stays.
   void wrote_output();
   // The run ended well: it finished, or the user stopped it (Ctrl-C, SIGTERM) after writing
-  // something. The replaced run's files set aside are deleted.
+  // something. The replaced run's files set aside are deleted (their folder renamed
+  // k_discarded_prefix + the process id first).
   void ended_well();
   // Whether the run's end, unless it ends well, puts a replaced run back (removing the new run's
   // files), so a failed run need not write its summary.
@@ -79,11 +89,14 @@ class RunFolder {
  private:
   void lock();
   void unlock();
-  // A set-aside folder a killed run left: put back, or with Mode::Resume kept for the resume's end.
+  // Set-aside folders a killed run left, by their state (k_incomplete_suffix, k_discarded_prefix):
+  // put back, deleted, or a whole one with Mode::Resume kept for the resume's end.
   void recover_set_aside();
   // Removes the files of the run being given up (fixed names, and `new_run`'s patterns), then moves
   // the set-aside files back and removes their folder.
   void put_back(const std::vector<NamePattern>& new_run);
+  // Moves every file in `from` back into the folder, then removes `from`; false if any stays.
+  bool move_back(const std::filesystem::path& from);
   std::filesystem::path folder_;
   std::vector<NamePattern> patterns_;  // the new run's names, to remove its files when putting back
   std::vector<std::filesystem::path> created_, old_files_;
