@@ -4,6 +4,7 @@
 #include "liquid/node.h"
 #include "liquid/physics/mesh.h"
 #include "liquid/physics/obstacles.h"
+#include "liquid/physics/setup.h"
 #include "liquid/scene.h"
 #include "tests/support/meshes.h"
 
@@ -176,4 +177,26 @@ TEST_CASE("a placed mesh sphere's signed distance matches the sphere's", "[mesh]
   CHECK(unbounded.inside(center));
   CHECK(unbounded.distance(center) == Approx(-radius).margin(0.02f * radius));
   CHECK_FALSE(unbounded.inside(center + glm::vec3(0.0f, 2.0f * radius, 0.0f)));
+}
+
+TEST_CASE("a mesh enclosing the whole domain with the liquid inside it is refused", "[scene][mesh]") {
+  // A cube 20 m wide about a pool 1 m wide: the liquid would start inside the obstacle. Wound
+  // inward (a room's walls seen from inside) it is refused as inside out when read; wound outward,
+  // when the set-up finds every particle inside it.
+  const fs::path dir = scratch("enclosing");
+  liquid::TriangleMesh cube = test::box_mesh(glm::vec3(10.0f));
+  std::string obj;
+  for (const glm::vec3& v : cube.vertices)
+    obj += "v " + std::to_string(v.x) + " " + std::to_string(v.y) + " " + std::to_string(v.z) + "\n";
+  std::string outward = obj, inward = obj;
+  for (size_t t = 0; t < cube.indices.size(); t += 3) {
+    const uint32_t a = cube.indices[t] + 1, b = cube.indices[t + 1] + 1, c = cube.indices[t + 2] + 1;
+    outward += "f " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) + "\n";
+    inward += "f " + std::to_string(a) + " " + std::to_string(c) + " " + std::to_string(b) + "\n";
+  }
+  write(dir / "outward.obj", outward);
+  write(dir / "inward.obj", inward);
+  REQUIRE_THROWS_WITH(load(dir, "inward.obj"), Catch::Contains("inward.obj: is inside out"));
+  const liquid::Scene scene = load(dir, "outward.obj");
+  REQUIRE_THROWS_WITH(liquid::make_setup(scene, {}), Catch::Contains("obstacles: cover every particle of the fluid blocks"));
 }
