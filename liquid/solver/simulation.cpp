@@ -65,7 +65,9 @@ Scene solver_scene(Scene scene) {
 template <class T>
 std::vector<T> as_vector(const std::vector<std::byte>& bytes, size_t count) {
   std::vector<T> out(count);
-  std::memcpy(out.data(), bytes.data(), std::min(bytes.size(), count * sizeof(T)));
+  // No particles yet (an emitter's first steps): both vectors may be empty, their data() null,
+  // which memcpy must not be given even for no bytes.
+  if (const size_t size = std::min(bytes.size(), count * sizeof(T)); size > 0) std::memcpy(out.data(), bytes.data(), size);
   return out;
 }
 
