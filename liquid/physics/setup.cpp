@@ -2,7 +2,6 @@
 
 #include "liquid/scene/format.h"
 #include "liquid/scene/limits.h"
-#include "liquid/scene/obstacle_checks.h"
 
 #include "liquid/physics/body.h"
 #include "liquid/physics/kernel.h"
@@ -338,7 +337,6 @@ SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
     fail(scene, "dimension", "must be 2 or 3, got " + std::to_string(scene.dimension));
   // Again for a scene built in code; a file's was checked when read.
   check_list_limits(scene);
-  check_mesh_winding(scene);
   for (size_t i = 0; i < scene.obstacles.size(); ++i)
     if (scene.obstacles[i].dynamic) check_body_inside_domain(scene, i);
   SimulationSetup setup;

@@ -3,7 +3,6 @@
 // scene.h, all reported by path.
 #include "liquid/scene.h"
 #include "liquid/scene/limits.h"
-#include "liquid/scene/obstacle_checks.h"
 #include "liquid/scene/reader.h"
 
 #include <cerrno>
@@ -155,7 +154,6 @@ Scene parse_scene(const std::string& json_text, const std::string& source_name) 
   Scene scene = scene_reader::read_scene(doc, source_name);
   scene.source = source_name;
   check_list_limits(scene);
-  check_mesh_winding(scene);
   return scene;
 }
 

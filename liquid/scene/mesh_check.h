@@ -13,7 +13,8 @@ namespace liquid {
 void weld_positions(TriangleMesh& mesh);
 
 // What makes `mesh` unusable as an obstacle, or "" when it is closed: no triangles, an index out of
-// range, a degenerate extent, or edges not shared by exactly two triangles of opposite orientation.
+// range, a degenerate extent, edges not shared by exactly two triangles of opposite orientation, or
+// triangles that wind inward (a negative volume).
 std::string mesh_problem(const TriangleMesh& mesh);
 
 }  // namespace liquid

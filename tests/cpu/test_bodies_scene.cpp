@@ -5,7 +5,6 @@
 #include "liquid/physics/setup.h"
 #include "liquid/scene.h"
 #include "liquid/scene/limits.h"
-#include "liquid/scene/obstacle_checks.h"
 #include "tests/support/meshes.h"
 
 #include <catch2/catch.hpp>
@@ -296,10 +295,10 @@ TEST_CASE("a body outside the domain or wider than it and an inside-out mesh are
   CHECK_NOTHROW(liquid::make_setup(host, {}));
 
   // A host's mesh wound inward, static or dynamic.
-  CHECK_NOTHROW(liquid::check_mesh_winding(host));
+  CHECK_NOTHROW(liquid::check_list_limits(host));
   std::vector<uint32_t>& indices = mesh.mesh.indices;
   for (size_t t = 0; t < indices.size(); t += 3) std::swap(indices[t + 1], indices[t + 2]);
-  REQUIRE_THROWS_WITH(liquid::check_mesh_winding(host), Contains("obstacles[0]: the host's mesh: is inside out"));
+  REQUIRE_THROWS_WITH(liquid::check_list_limits(host), Contains("obstacles[0]: the host's mesh: is inside out"));
   mesh.dynamic = false;
   REQUIRE_THROWS_WITH(liquid::make_setup(host, {}), Contains("is inside out"));
 }
