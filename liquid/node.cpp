@@ -4,6 +4,7 @@
 
 #include "liquid/physics/mesh.h"
 #include "liquid/physics/time_step.h"
+#include "liquid/solver/node_view.h"
 #include "liquid/solver/simulation.h"
 #include "liquid/solver/state.h"
 
@@ -16,6 +17,14 @@ namespace liquid {
 LiquidNode::LiquidNode(engine::vk::Context& context, const Scene& scene, const LiquidOptions& options)
     : simulation_(std::make_unique<Simulation>(context, scene, options)) {}
 LiquidNode::~LiquidNode() = default;
+
+Simulation& simulation_of(LiquidNode& node) { return *node.simulation_; }
+const Simulation& simulation_of(const LiquidNode& node) { return *node.simulation_; }
+
+const SimulationSetup& node_setup(const LiquidNode& node) { return simulation_of(node).setup(); }
+const GridLayout& node_grid_layout(const LiquidNode& node) { return simulation_of(node).grid_layout(); }
+gpu::SolverUniforms node_uniforms(const LiquidNode& node) { return simulation_of(node).current_uniforms(); }
+uint64_t node_frames_declared(const LiquidNode& node) { return simulation_of(node).frames_declared(); }
 
 const Scene& LiquidNode::scene() const { return simulation_->scene(); }
 int LiquidNode::dimension() const { return simulation_->dimension(); }

@@ -175,12 +175,12 @@ class LiquidNode {
   // the node's next graph starts from there. Sample it through sampled_view(); never write it.
   engine::vk::Image& density_image();
 
-  // The solver inside, for the library's own renderer, tools and tests: its header
-  // (liquid/solver/simulation.h) is internal and not installed, so a host cannot use it.
-  Simulation& simulation() { return *simulation_; }
-  const Simulation& simulation() const { return *simulation_; }
 
  private:
+  // The solver inside, for the library's own renderer, tools and tests (simulation_of() in the
+  // internal, uninstalled liquid/solver/simulation.h).
+  friend Simulation& simulation_of(LiquidNode& node);
+  friend const Simulation& simulation_of(const LiquidNode& node);
   std::unique_ptr<Simulation> simulation_;
   Placement placement_;
 };

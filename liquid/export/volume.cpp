@@ -2,7 +2,7 @@
 
 #include "engine/graph/transfer.h"
 #include "liquid/node.h"
-#include "liquid/solver/simulation.h"
+#include "liquid/solver/node_view.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,7 @@ namespace liquid {
 
 // The node reads through its own context (the parameter stays for hosts that call this).
 VolumeFrame read_volume(engine::vk::Context& /*context*/, LiquidNode& node) {
-  const SimulationSetup& s = node.simulation().setup();
+  const SimulationSetup& s = node_setup(node);
   VolumeFrame v;
   v.cells = s.grid_cells;
   v.cell_size = s.cell_size;

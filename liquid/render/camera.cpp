@@ -3,7 +3,7 @@
 #include "liquid/node.h"
 #include "liquid/physics/setup.h"
 #include "liquid/render/height_field.h"
-#include "liquid/solver/simulation.h"
+#include "liquid/solver/node_view.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -13,7 +13,7 @@ namespace liquid {
 
 CameraView default_camera(const LiquidNode& node) {
   const Scene& scene = node.scene();
-  const SimulationSetup& setup = node.simulation().setup();
+  const SimulationSetup& setup = node_setup(node);
   if (setup.shallow_water) return default_height_field_camera(scene, setup);
   if (scene.camera) {
     const Camera& c = *scene.camera;

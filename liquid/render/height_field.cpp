@@ -2,10 +2,10 @@
 
 #include "engine/passes/bindings.h"
 #include "liquid/solver/images.h"
-#include "liquid/solver/simulation.h"
+#include "liquid/solver/node_view.h"
 #include "liquid/solver/specialization.h"
 #include "liquid/solver/uniforms.h"
-#include "liquid_shaders.h"
+#include "liquid_shader_families.h"
 #include "shaders/liquid/render/view_blocks.h"
 
 #include <glm/gtc/constants.hpp>
@@ -32,7 +32,7 @@ constexpr glm::vec4 k_sky{0.70f, 0.79f, 0.89f, 1.0f};
 
 
 const LiquidNode& require_shallow_water(const LiquidNode& node) {
-  if (node.dimension() != 2 || !node.simulation().setup().shallow_water)
+  if (node.dimension() != 2 || !node_setup(node).shallow_water)
     throw std::invalid_argument("liquid: the height-field view needs a 2D shallow-water scene");
   return node;
 }
@@ -59,8 +59,8 @@ HeightFieldPass::HeightFieldPass(engine::vk::Context& context, const LiquidNode&
       pipeline_(context,
                 engine::vk::GraphicsPipelineDesc{
                     .name = "liquid.height_field",
-                    .vertex = liquid_shaders::height_field_vert,
-                    .fragment = liquid_shaders::height_field_frag,
+                    .vertex = shader_variant(shaders::height_field_vert),
+                    .fragment = shader_variant(shaders::height_field_frag),
                     .color_formats = {k_color_format},
                     // The ground writes alpha 1, so one blended pipeline draws both layers.
                     .blend = {engine::vk::BlendMode::Alpha},
@@ -72,11 +72,11 @@ HeightFieldPass::HeightFieldPass(engine::vk::Context& context, const LiquidNode&
                                   VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
                                  {LIQUID_BINDING_HEIGHT_FIELD_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
                     .push_constant_size = sizeof(gpu::HeightFieldPush),
-                    .specialization = scene_specialization(node.scene(), node.simulation().setup())}),
+                    .specialization = scene_specialization(node.scene(), node_setup(node))}),
       linear_(context, VK_FILTER_LINEAR),
       uniforms_(context, node, sizeof(gpu::HeightFieldUniforms)) {
   // Vertex g = (x, y) of the (cells + 2)^2 grid (cells plus the edge ring) has index y (n.x + 2) + x.
-  const glm::ivec2 n(node.simulation().setup().grid_cells.x, node.simulation().setup().grid_cells.y);
+  const glm::ivec2 n(node_setup(node).grid_cells.x, node_setup(node).grid_cells.y);
   const uint32_t row = uint32_t(n.x + 2);
   static constexpr glm::uvec2 k_corners[6] = {{0, 0}, {1, 0}, {0, 1}, {1, 0}, {1, 1}, {0, 1}};
   std::vector<uint32_t> indices;
@@ -93,7 +93,7 @@ HeightFieldPass::HeightFieldPass(engine::vk::Context& context, const LiquidNode&
 
 ImageHandle HeightFieldPass::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
                                     const RenderSettings& settings, const CameraView& camera) {
-  const SimulationSetup& setup = node_.simulation().setup();
+  const SimulationSetup& setup = node_setup(node_);
   const engine::vk::UniformSlice solver = uniforms_.begin_frame();
 
   const float rest_depth = setup.rest_depth;

@@ -5,8 +5,7 @@
 #include "liquid/solver/gpu_types.h"
 #include "liquid/solver/images.h"
 #include "liquid/solver/mesh_field.h"
-#include "liquid/solver/simulation.h"
-#include "liquid_shaders.h"
+#include "liquid_shader_families.h"
 
 namespace liquid {
 
@@ -22,8 +21,8 @@ MeshDrawPass::MeshDrawPass(engine::vk::Context& context, const LiquidNode& node,
   pipeline_ = engine::vk::GraphicsPipeline(
       context, engine::vk::GraphicsPipelineDesc{
                    .name = "liquid.mesh_draw",
-                   .vertex = liquid_shaders::mesh_draw_vert,
-                   .fragment = liquid_shaders::mesh_draw_frag,
+                   .vertex = shader_variant(shaders::mesh_draw_vert),
+                   .fragment = shader_variant(shaders::mesh_draw_frag),
                    .color_formats = {color_format},
                    .depth_format = depth_format,
                    .depth_test = true,

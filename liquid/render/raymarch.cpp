@@ -4,10 +4,10 @@
 #include "engine/passes/fullscreen.h"
 #include "engine/vk/context.h"
 #include "liquid/solver/images.h"
-#include "liquid/solver/simulation.h"
+#include "liquid/solver/node_view.h"
 #include "liquid/solver/specialization.h"
 #include "liquid/solver/uniforms.h"
-#include "liquid_shaders.h"
+#include "liquid_shader_families.h"
 #include "shaders/liquid/render/view_blocks.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -25,7 +25,7 @@ std::vector<int32_t> raymarch_specialization(const LiquidNode& node, bool compos
   static_assert(LIQUID_RAYMARCH_COMPOSITE_ID == specialization_id::count, "the raymarch's constants follow the scene's");
   static_assert(LIQUID_RAYMARCH_BACKGROUND_ONLY_ID == LIQUID_RAYMARCH_COMPOSITE_ID + 1);
   static_assert(LIQUID_RAYMARCH_OUTPUT_ID == LIQUID_RAYMARCH_BACKGROUND_ONLY_ID + 1);
-  std::vector<int32_t> constants = scene_specialization(node.scene(), node.simulation().setup());
+  std::vector<int32_t> constants = scene_specialization(node.scene(), node_setup(node));
   constants.push_back(composite ? 1 : 0);
   constants.push_back(background_only ? 1 : 0);
   constants.push_back(output);
@@ -39,9 +39,8 @@ engine::vk::GraphicsPipelineDesc raymarch_pipeline_desc(const LiquidNode& node, 
   // Composited: blended over the host's colour (the shader writes the liquid's coverage in alpha),
   // filtering it per channel where the device has dual-source blending.
   const bool transmit = composite && node.context().supports_dual_source_blend();
-  const auto fragment = transmit ? (bricks.atlas() ? liquid_shaders::raymarch_frag_atlas_transmit
-                                                   : liquid_shaders::raymarch_frag_transmit)
-                                 : (bricks.atlas() ? liquid_shaders::raymarch_frag_atlas : liquid_shaders::raymarch_frag);
+  const auto fragment = shader_variant(shaders::raymarch_frag, (bricks.atlas() ? shader_feature::ATLAS : 0u) |
+                                                                    (transmit ? shader_feature::TRANSMIT : 0u));
   return engine::vk::GraphicsPipelineDesc{
       .name = background_only ? "liquid.raymarch.background" : "liquid.raymarch",
       .vertex = engine::passes::fullscreen_vertex_shader(),
@@ -128,29 +127,29 @@ glm::mat4 raymarch_view_projection(const SimulationSetup& setup, const CameraVie
   return view_projection(camera, aspect, 0.01f, far_plane);
 }
 
-RaymarchPass::RaymarchPass(engine::vk::Context& context, const LiquidNode& node, bool composite)
+RaymarchPass::RaymarchPass(engine::vk::Context& context, const LiquidNode& node, ViewOutput output)
     : node_(node),
-      bricks_(3, (node.simulation().setup().grid_cells + k_brick_cells - 1) / k_brick_cells, node.simulation().grid_layout().path),
+      bricks_(3, (node_setup(node).grid_cells + k_brick_cells - 1) / k_brick_cells, node_grid_layout(node).path),
       occupancy_(context, engine::vk::GraphicsPipelineDesc{
                               .name = "liquid.occupancy",
                               .vertex = grid_pass_shaders(bricks_).vertex,
                               .geometry = grid_pass_shaders(bricks_).geometry,
-                              .fragment = bricks_.atlas() ? liquid_shaders::occupancy_frag_atlas
-                                                          : liquid_shaders::occupancy_frag,
+                              .fragment = shader_variant(shaders::occupancy_frag, bricks_.atlas() ? shader_feature::ATLAS : 0u),
                               .color_formats = {VK_FORMAT_R16_SFLOAT},
                               .bindings = {{LIQUID_BINDING_OCCUPANCY_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
                               .push_constant_size = sizeof(gpu::OccupancyPush)}),
       // Compositing takes a pipeline per host format instead (composite_pipelines_).
-      raymarch_(composite ? engine::vk::GraphicsPipeline()
-                          : engine::vk::GraphicsPipeline(context, raymarch_pipeline_desc(node, bricks_, false, false))),
+      raymarch_(output == ViewOutput::HostTargets
+                    ? engine::vk::GraphicsPipeline()
+                    : engine::vk::GraphicsPipeline(context, raymarch_pipeline_desc(node, bricks_, false, false))),
       context_(context),
       linear_(context, VK_FILTER_LINEAR),
       nearest_(context, VK_FILTER_NEAREST),
       uniforms_(context, node, sizeof(gpu::RaymarchUniforms)),
-      composite_(composite) {
+      composite_(output == ViewOutput::HostTargets) {
   // Composited, pixels outside the box show the host's frame: nothing to draw there.
-  if (!composite) background_ = engine::vk::GraphicsPipeline(context, raymarch_pipeline_desc(node, bricks_, false, true));
-  if (!composite) {
+  if (!composite_) background_ = engine::vk::GraphicsPipeline(context, raymarch_pipeline_desc(node, bricks_, false, true));
+  if (!composite_) {
     meshes_ = std::make_unique<MeshDrawPass>(context, node, k_color_format, k_depth_format);
     if (meshes_->empty()) meshes_.reset();
   }
@@ -162,11 +161,11 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
   if (bool(targets) != composite_)
     throw std::logic_error(composite_ ? "liquid.raymarch: a compositing pass draws into host targets"
                                       : "liquid.raymarch: host targets need a compositing pass");
-  const SimulationSetup& setup = node_.simulation().setup();
+  const SimulationSetup& setup = node_setup(node_);
   const engine::vk::UniformSlice solver = uniforms_.begin_frame();
 
   const glm::ivec3 bricks = bricks_.cells;
-  const GridLayout& grid = node_.simulation().grid_layout();
+  const GridLayout& grid = node_grid_layout(node_);
   const glm::mat4& vp = view_input.view_projection;
   const VkRect2D viewport = view_input.viewport;
   if (viewport.extent.width == 0 || viewport.extent.height == 0 || viewport.offset.x < 0 || viewport.offset.y < 0 ||

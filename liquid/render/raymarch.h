@@ -42,8 +42,8 @@ struct RaymarchView {
 
 class RaymarchPass {
  public:
-  // `composite`: draw the liquid alone into host targets (see HostTargets) instead of a full frame.
-  RaymarchPass(engine::vk::Context& context, const LiquidNode& node, bool composite);
+  // HostTargets: draw the liquid alone into host targets (see HostTargets) instead of a full frame.
+  RaymarchPass(engine::vk::Context& context, const LiquidNode& node, ViewOutput output);
 
   struct Outputs {
     engine::graph::ImageHandle color;

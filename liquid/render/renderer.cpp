@@ -5,7 +5,7 @@
 #include "liquid/render/height_field.h"
 #include "liquid/render/raymarch.h"
 #include "liquid/render/view2d.h"
-#include "liquid/solver/simulation.h"
+#include "liquid/solver/node_view.h"
 #include "shaders/liquid/render/view_blocks.h"
 
 #include <stdexcept>
@@ -19,13 +19,14 @@ LiquidRenderer::LiquidRenderer(engine::vk::Context& context, const LiquidNode& n
   if (settings.width == 0 || settings.height == 0 || settings.width > limit || settings.height > limit)
     throw std::invalid_argument("frame size " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
                                 " is outside the device's limit of 1.." + std::to_string(limit) + " pixels per side");
-  const SimulationSetup& setup = node.simulation().setup();
+  const SimulationSetup& setup = node_setup(node);
+  const ViewOutput output = settings.composite ? ViewOutput::HostTargets : ViewOutput::OwnFrame;
   if (setup.shallow_water)
     height_field_ = std::make_unique<HeightFieldPass>(context, node);
   else if (setup.dimension == 3)
-    raymarch_ = std::make_unique<RaymarchPass>(context, node, settings.composite);
+    raymarch_ = std::make_unique<RaymarchPass>(context, node, output);
   else
-    view2d_ = std::make_unique<View2dPass>(context, node, settings.composite);
+    view2d_ = std::make_unique<View2dPass>(context, node, output);
   if (settings.composite && height_field_)
     throw std::invalid_argument("liquid: shallow water is not composited into host targets (3D and 2D liquids are)");
   if (settings.fxaa.value_or(!settings.composite))
@@ -33,7 +34,7 @@ LiquidRenderer::LiquidRenderer(engine::vk::Context& context, const LiquidNode& n
 }
 
 glm::mat4 LiquidRenderer::view_projection(const CameraView& camera) const {
-  return raymarch_view_projection(node_.simulation().setup(), camera, float(settings_.width) / float(settings_.height));
+  return raymarch_view_projection(node_setup(node_), camera, float(settings_.width) / float(settings_.height));
 }
 
 LiquidRenderer::~LiquidRenderer() = default;

@@ -4,10 +4,10 @@
 #include "engine/passes/fullscreen.h"
 #include "liquid/solver/images.h"
 #include "liquid/solver/mesh_field.h"
-#include "liquid/solver/simulation.h"
+#include "liquid/solver/node_view.h"
 #include "liquid/solver/specialization.h"
 #include "liquid/solver/uniforms.h"
-#include "liquid_shaders.h"
+#include "liquid_shader_families.h"
 #include "shaders/liquid/render/view_blocks.h"
 
 #include <algorithm>
@@ -31,7 +31,7 @@ static_assert(sizeof(View2dPush) == 32 && sizeof(Particles2dPush) == 32);
 // The scene's constants plus the view's own (LIQUID_VIEW2D_PANEL_ID).
 std::vector<int32_t> view2d_specialization(const LiquidNode& node, bool panel) {
   static_assert(LIQUID_VIEW2D_PANEL_ID == specialization_id::count, "the view's constant follows the scene's");
-  std::vector<int32_t> constants = scene_specialization(node.scene(), node.simulation().setup());
+  std::vector<int32_t> constants = scene_specialization(node.scene(), node_setup(node));
   constants.push_back(panel ? 1 : 0);
   return constants;
 }
@@ -75,8 +75,7 @@ engine::vk::GraphicsPipelineDesc view2d_pipeline_desc(const LiquidNode& node, bo
   return engine::vk::GraphicsPipelineDesc{
       .name = opaque_in_panel ? "liquid.view2d.opaque_panel" : "liquid.view2d",
       .vertex = engine::passes::fullscreen_vertex_shader(),
-      .fragment = mesh_variant(has_mesh_obstacles(node.scene()), liquid_shaders::view2d_frag,
-                               liquid_shaders::view2d_frag_mesh),
+      .fragment = shader_variant(shaders::view2d_frag, has_mesh_obstacles(node.scene()) ? shader_feature::MESH_FIELD : 0u),
       .color_formats = {k_color_format},
       .blend = {blended ? engine::vk::BlendMode::Alpha : engine::vk::BlendMode::None},
       .bindings = view2d_bindings(has_mesh_obstacles(node.scene())),
@@ -86,24 +85,25 @@ engine::vk::GraphicsPipelineDesc view2d_pipeline_desc(const LiquidNode& node, bo
 
 }  // namespace
 
-View2dPass::View2dPass(engine::vk::Context& context, const LiquidNode& node, bool panel)
+View2dPass::View2dPass(engine::vk::Context& context, const LiquidNode& node, ViewOutput output)
     : node_(require_2d(node)),
       depth_(context, engine::vk::GraphicsPipelineDesc{
                           .name = "liquid.view2d.depth",
                           .vertex = engine::passes::fullscreen_vertex_shader(),
-                          .fragment = liquid_shaders::view2d_depth_frag,
+                          .fragment = shader_variant(shaders::view2d_depth_frag),
                           .color_formats = {k_view2d_depth_format},
                           .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
                                        {LIQUID_BINDING_VIEW2D_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
                           .push_constant_size = sizeof(View2dPush),
-                          .specialization = scene_specialization(node.scene(), node.simulation().setup())}),
-      liquid_(context, view2d_pipeline_desc(node, panel)),
-      opaque_panel_(panel ? engine::vk::GraphicsPipeline(context, view2d_pipeline_desc(node, false, true))
+                          .specialization = scene_specialization(node.scene(), node_setup(node))}),
+      liquid_(context, view2d_pipeline_desc(node, output == ViewOutput::HostTargets)),
+      opaque_panel_(output == ViewOutput::HostTargets
+                        ? engine::vk::GraphicsPipeline(context, view2d_pipeline_desc(node, false, true))
                           : engine::vk::GraphicsPipeline()),
       particles_(context, engine::vk::GraphicsPipelineDesc{
                               .name = "liquid.view2d.particles",
-                              .vertex = liquid_shaders::particles2d_vert,
-                              .fragment = liquid_shaders::particles2d_frag,
+                              .vertex = shader_variant(shaders::particles2d_vert),
+                              .fragment = shader_variant(shaders::particles2d_frag),
                               .topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST,
                               .color_formats = {k_color_format},
                               .blend = {engine::vk::BlendMode::Alpha},
@@ -115,7 +115,7 @@ View2dPass::View2dPass(engine::vk::Context& context, const LiquidNode& node, boo
 
 ImageHandle View2dPass::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
                                const RenderSettings& settings, const HostPanel* panel) {
-  const SimulationSetup& setup = node_.simulation().setup();
+  const SimulationSetup& setup = node_setup(node_);
   const engine::vk::UniformSlice solver = uniforms_.begin_frame();
 
   // The domain fitted into the frame, or into the host's rectangle (then moved to its place).

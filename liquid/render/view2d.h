@@ -31,9 +31,9 @@ View2dLayout fit_view2d(glm::vec2 domain, uint32_t width, uint32_t height);
 // Draws a 2D LiquidNode's density grid as liquid (and its particles when asked) into a new image.
 class View2dPass {
  public:
-  // Throws std::invalid_argument when the node is not two-dimensional. `panel`: draw the liquid
-  // alone with alpha into a host's rectangle (HostPanel) instead of a frame of its own.
-  View2dPass(engine::vk::Context& context, const LiquidNode& node, bool panel = false);
+  // Throws std::invalid_argument when the node is not two-dimensional. HostTargets: draw the
+  // liquid alone with alpha into a host's rectangle (HostPanel) instead of a frame of its own.
+  View2dPass(engine::vk::Context& context, const LiquidNode& node, ViewOutput output = ViewOutput::OwnFrame);
 
   // Returns a new RGBA8_UNORM image of settings.width x settings.height; with `panel`, the host
   // target's new version, drawn into its rectangle.

@@ -1,5 +1,5 @@
 #include "liquid/render/view_uniforms.h"
-#include "liquid/solver/simulation.h"
+#include "liquid/solver/node_view.h"
 
 #include <stdexcept>
 #include <string>
@@ -14,7 +14,7 @@ ViewUniforms::ViewUniforms(engine::vk::Context& context, const LiquidNode& node,
              node.frames_in_flight() + 1) {}
 
 engine::vk::UniformSlice ViewUniforms::begin_frame() {
-  const uint64_t frame = node_.simulation().frames_declared();
+  const uint64_t frame = node_frames_declared(node_);
   if (frame != frame_) {
     arena_.begin_frame();
     frame_ = frame;
@@ -23,7 +23,7 @@ engine::vk::UniformSlice ViewUniforms::begin_frame() {
   if (++views_ > k_max_views_per_frame)
     throw std::length_error("liquid: more than " + std::to_string(k_max_views_per_frame) +
                             " views of one frame of the node from one renderer");
-  return arena_.push(node_.simulation().current_uniforms());
+  return arena_.push(node_uniforms(node_));
 }
 
 }  // namespace liquid

@@ -8,6 +8,10 @@
 
 namespace liquid {
 
+// Where a view draws: a frame of its own (a full image of RenderSettings' size), or the liquid alone
+// into the host's targets (RenderSettings::composite: HostTargets, a HostPanel).
+enum class ViewOutput { OwnFrame, HostTargets };
+
 // How many times one renderer may draw a frame of the node (one per view: split screen, a
 // reflection), each with its own uniforms.
 inline constexpr int k_max_views_per_frame = 4;

@@ -2,7 +2,8 @@
 
 #include "engine/passes/fullscreen.h"
 #include "liquid/solver/uniforms.h"
-#include "liquid_shaders.h"
+#include "liquid/solver/solver_pass.h"
+#include "liquid_shader_families.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -46,11 +47,9 @@ int active_region_margin_cells(const SimulationSetup& setup) {
 
 ActiveRegion::ActiveRegion(engine::vk::Context& context, const GridLayout& layout,
                            const std::vector<int32_t>& specialization)
-    : rows_(context, reduction_pipeline("liquid.active_rows",
-                                        layout.atlas() ? liquid_shaders::active_rows_frag_atlas
-                                                       : liquid_shaders::active_rows_frag,
+    : rows_(context, reduction_pipeline("liquid.active_rows", shader_variant(shaders::active_rows_frag, layout),
                                         LIQUID_BINDING_ACTIVE_MARKS, k_rows_format, specialization)),
-      slices_(context, reduction_pipeline("liquid.active_slices", liquid_shaders::active_slices_frag,
+      slices_(context, reduction_pipeline("liquid.active_slices", shader_variant(shaders::active_slices_frag, layout),
                                           LIQUID_BINDING_ACTIVE_ROWS, k_rectangle_format, specialization)),
       nearest_(context, VK_FILTER_NEAREST),
       rows_desc_(plain_image(uint32_t(layout.cells.y), uint32_t(layout.cells.z), k_rows_format)),
@@ -58,34 +57,23 @@ ActiveRegion::ActiveRegion(engine::vk::Context& context, const GridLayout& layou
 
 ImageHandle ActiveRegion::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
                                  ImageHandle marks) const {
-  struct Data {
-    engine::passes::PassBindings bindings;
-    ImageHandle out;
-  };
   auto reduce = [&](const engine::vk::GraphicsPipeline& pipeline, uint32_t binding, ImageHandle input,
                     const engine::vk::ImageDesc& desc) {
     const ImageHandle target = graph.create_image(pipeline.name(), desc);
-    return graph
-        .add_pass<Data>(
-            pipeline.name(),
-            [&](PassBuilder& b, Data& d) {
-              d.bindings = engine::passes::PassBindings(pipeline);
-              d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
-              d.bindings.bind_image(b, binding, input, nearest_.handle());
-              d.out = b.write(target, Access::ColorAttachmentWrite);
-            },
-            [](PassContext& ctx, const Data& d) {
-              d.bindings.bind_and_push(ctx);
-              engine::passes::draw_fullscreen(ctx.cmd);
-            })
-        .out;
+    return add_solver_pass<ImageHandle>(
+        graph, pipeline, uniforms,
+        [&](engine::passes::PassBindings& bindings, PassBuilder& b) {
+          bindings.bind_image(b, binding, input, nearest_.handle());
+          return b.write(target, Access::ColorAttachmentWrite);
+        },
+        [](const PassContext& ctx) { engine::passes::draw_fullscreen(ctx.cmd); });
   };
   const ImageHandle rows = reduce(rows_, LIQUID_BINDING_ACTIVE_MARKS, marks, rows_desc_);
   return reduce(slices_, LIQUID_BINDING_ACTIVE_ROWS, rows, slices_desc_);
 }
 
-void add_active_region_binding(bool active_region, std::vector<engine::vk::DescriptorBinding>& bindings) {
-  if (active_region)
+void add_active_region_binding(const SolverVariant& variant, std::vector<engine::vk::DescriptorBinding>& bindings) {
+  if (variant.active_region)
     bindings.push_back({LIQUID_BINDING_ACTIVE_REGION, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT});
 }
 

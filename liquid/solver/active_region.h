@@ -25,6 +25,7 @@
 #include "liquid/physics/setup.h"
 #include "liquid/solver/grid_layout.h"
 #include "liquid/solver/images.h"
+#include "liquid/solver/variant.h"
 
 #include <cstdint>
 #include <vector>
@@ -60,7 +61,7 @@ class ActiveRegion {
 };
 
 // For a grid pass's pipeline: its binding of the rectangles (nothing for the whole grid).
-void add_active_region_binding(bool active_region, std::vector<engine::vk::DescriptorBinding>& bindings);
+void add_active_region_binding(const SolverVariant& variant, std::vector<engine::vk::DescriptorBinding>& bindings);
 // In a grid pass's setup: binds `region` (valid exactly when the pass was made with an active region,
 // else std::logic_error) and returns how the pass's targets load: cleared to zero, since the
 // region's draws leave the rest untouched, or not at all (whole grid).

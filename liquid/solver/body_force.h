@@ -13,8 +13,9 @@
 #include "engine/vk/pipeline.h"
 #include "engine/vk/sampler.h"
 #include "engine/vk/uniform_arena.h"
-#include "liquid/solver/grid_layout.h"
+#include "liquid/physics/setup.h"
 #include "liquid/solver/images.h"
+#include "liquid/solver/variant.h"
 
 #include <cstdint>
 #include <vector>
@@ -28,22 +29,22 @@ struct BodyForceImages {
 
 class BodyForcePass {
  public:
-  BodyForcePass(engine::vk::Context& context, const GridLayout& layout, int obstacles, float particle_mass,
-                const std::vector<int32_t>& specialization);
+  // For the scene's dynamic obstacles.
+  BodyForcePass(engine::vk::Context& context, const SolverVariant& variant, const Scene& scene,
+                const SimulationSetup& setup, const std::vector<int32_t>& specialization);
 
-  // From the step's `splat` (the velocity arriving at the bodies), its cells' pressure
-  // `cell_pressure` (PressurePass), the particles' `positions` before their update (the first
-  // `active`) and the body state the grid pass read (with `body_shapes`), for the dynamic obstacles `dynamic_obstacles`
-  // (their indices).
-  BodyForceImages add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle splat,
-                         ImageHandle cell_pressure, ImageHandle positions, int active, ImageHandle bodies,
-                         ImageHandle body_shapes, const std::vector<int>& dynamic_obstacles) const;
+  // From the step's splat (the velocity arriving at the bodies), its cells' pressure P
+  // (PressurePass), the particles before their update (the first `active`) and the body state the
+  // grid pass read (with the body shapes).
+  BodyForceImages add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
+                         const StepImages& step, int active) const;
 
  private:
   engine::vk::GraphicsPipeline pressure_;  // a point per cell
   engine::vk::GraphicsPipeline exchange_;  // a point per particle
   engine::vk::Sampler nearest_;
   engine::vk::Sampler linear_;  // the body shapes'
+  std::vector<int> dynamic_obstacles_;  // their indices
   uint32_t obstacles_ = 0;
   uint32_t cells_ = 0;
   float particle_mass_ = 0.0f;

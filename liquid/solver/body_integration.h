@@ -8,6 +8,7 @@
 #include "engine/vk/uniform_arena.h"
 #include "liquid/solver/body_force.h"
 #include "liquid/solver/images.h"
+#include "liquid/solver/variant.h"
 
 #include <cstdint>
 #include <vector>
@@ -16,11 +17,13 @@ namespace liquid {
 
 class BodyIntegrationPass {
  public:
-  BodyIntegrationPass(engine::vk::Context& context, int dimension, const std::vector<int32_t>& specialization);
+  BodyIntegrationPass(engine::vk::Context& context, const SolverVariant& variant,
+                      const std::vector<int32_t>& specialization);
 
-  // From the state `current` and the step's `force` into `next` (the other of the pair).
-  ImageHandle add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle current,
-                     const BodyForceImages& force, ImageHandle next) const;
+  // From the state `step.bodies` and the step's `force` into `step.body_targets`, then swaps the
+  // two: `step.bodies` is the new state.
+  void add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, StepImages& step,
+              const BodyForceImages& force) const;
 
  private:
   engine::vk::GraphicsPipeline pipeline_;

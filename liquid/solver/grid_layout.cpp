@@ -1,7 +1,7 @@
 #include "liquid/solver/grid_layout.h"
 
 #include "engine/passes/fullscreen.h"
-#include "liquid_shaders.h"
+#include "liquid_shader_families.h"
 
 #include <iterator>
 #include <stdexcept>
@@ -89,10 +89,10 @@ size_t GridLayout::texel_index(int x, int y, int z) const {
 
 GridPassShaders grid_pass_shaders(const GridLayout& layout, bool active_region) {
   if (active_region) {
-    if (layout.atlas()) return {liquid_shaders::active_region_vert_atlas, {}};
-    if (layout.path == GridPath::GeometryShader)
-      return {liquid_shaders::active_region_vert_gs, engine::passes::fullscreen_layered_geometry_shader()};
-    return {liquid_shaders::active_region_vert_layer, {}};
+    const std::span<const uint32_t> vertex = shader_variant(liquid::shaders::active_region_vert, layout);
+    if (layout.path == GridPath::GeometryShader && layout.layered())
+      return {vertex, engine::passes::fullscreen_layered_geometry_shader()};
+    return {vertex, {}};
   }
   if (!layout.layered()) return {engine::passes::fullscreen_vertex_shader(), {}};
   if (layout.path == GridPath::GeometryShader)

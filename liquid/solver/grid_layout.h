@@ -69,12 +69,6 @@ struct GridLayout {
         for (int x = 0; x < cells.x; ++x) out[i++] = image[texel_index(x, y, z)];
     return out;
   }
-
-  // One of a pass's shader variants by the layout: 2D, 3D images (either layered path) or atlas.
-  std::span<const uint32_t> pick(std::span<const uint32_t> two_d, std::span<const uint32_t> three_d,
-                                 std::span<const uint32_t> atlas_variant) const {
-    return dimension == 2 ? two_d : atlas() ? atlas_variant : three_d;
-  }
 };
 
 // The vertex (and geometry) shaders of a full-screen pass over every cell of a grid: one triangle

@@ -3,8 +3,8 @@
 #include "engine/graph/transfer.h"
 #include "engine/passes/bindings.h"
 #include "liquid/physics/mesh.h"
-#include "liquid/solver/uniforms.h"
-#include "liquid_shaders.h"
+#include "liquid/solver/solver_pass.h"
+#include "liquid_shader_families.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,26 +27,16 @@ constexpr VkFormat k_inside_format = VK_FORMAT_R16G16B16A16_SFLOAT;
 // The seed pass's depth: a cell's distance to the closest triangle so far, over the band.
 constexpr VkFormat k_seed_depth_format = VK_FORMAT_D32_SFLOAT;
 
-// The inside and seed passes' vertex shader by the grid's layout (how a primitive reaches its slice).
-std::span<const uint32_t> raster_vertex(const GridLayout& layout, bool seed) {
-  using namespace liquid_shaders;
-  if (layout.dimension == 2) return seed ? mesh_seed_vert_2d : mesh_inside_vert_2d;
-  if (layout.atlas()) return seed ? mesh_seed_vert_3d_atlas : mesh_inside_vert_3d_atlas;
-  if (layout.path == GridPath::GeometryShader) return seed ? mesh_seed_vert_3d_gs : mesh_inside_vert_3d_gs;
-  return seed ? mesh_seed_vert_3d : mesh_inside_vert_3d;
-}
-
 engine::vk::GraphicsPipelineDesc raster_pipeline(const GridLayout& layout, bool seed,
                                                  const std::vector<int32_t>& specialization) {
-  using namespace liquid_shaders;
+  // The vertex shader by the grid's layout (how a primitive reaches its slice).
   const bool geometry = layout.layered() && layout.path == GridPath::GeometryShader;
   return engine::vk::GraphicsPipelineDesc{
       .name = seed ? "liquid.mesh_seed" : "liquid.mesh_inside",
-      .vertex = raster_vertex(layout, seed),
-      .geometry = geometry ? std::span<const uint32_t>(seed ? mesh_seed_geom : mesh_inside_geom)
+      .vertex = shader_variant(seed ? shaders::mesh_seed_vert : shaders::mesh_inside_vert, layout),
+      .geometry = geometry ? shader_variant(seed ? shaders::mesh_seed_geom : shaders::mesh_inside_geom)
                            : std::span<const uint32_t>{},
-      .fragment = seed ? layout.pick(mesh_seed_frag_2d, mesh_seed_frag_3d, mesh_seed_frag_3d_atlas)
-                       : layout.pick(mesh_inside_frag_2d, mesh_inside_frag_3d, mesh_inside_frag_3d_atlas),
+      .fragment = shader_variant(seed ? shaders::mesh_seed_frag : shaders::mesh_inside_frag, layout),
       .color_formats = {seed ? k_nearest_format : k_inside_format},
       .blend = {seed ? engine::vk::BlendMode::None : engine::vk::BlendMode::Additive},
       .depth_format = seed ? k_seed_depth_format : VK_FORMAT_UNDEFINED,
@@ -69,7 +59,6 @@ enum class BoxKind {
 
 engine::vk::GraphicsPipelineDesc box_pipeline(const GridLayout& layout, BoxKind kind,
                                               const std::vector<int32_t>& specialization) {
-  using namespace liquid_shaders;
   engine::vk::GraphicsPipelineDesc desc{
       .vertex = grid_pass_shaders(layout).vertex,
       .geometry = grid_pass_shaders(layout).geometry,
@@ -79,19 +68,16 @@ engine::vk::GraphicsPipelineDesc box_pipeline(const GridLayout& layout, BoxKind 
   const auto sampled = [&desc](uint32_t binding) {
     desc.bindings.push_back({binding, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
   };
-  const auto three_d = [&layout](std::span<const uint32_t> layered, std::span<const uint32_t> atlas) {
-    return layout.atlas() ? atlas : layered;
-  };
   switch (kind) {
     case BoxKind::Spread:
       desc.name = "liquid.mesh_spread";
-      desc.fragment = layout.pick(mesh_spread_frag_2d, mesh_spread_frag_3d, mesh_spread_frag_3d_atlas);
+      desc.fragment = shader_variant(shaders::mesh_spread_frag, layout);
       desc.color_formats = {k_nearest_format};
       sampled(LIQUID_BINDING_MESH_NEAREST);
       break;
     case BoxKind::Field:
       desc.name = "liquid.mesh_field";
-      desc.fragment = layout.pick(mesh_field_frag_2d, mesh_field_frag_3d, mesh_field_frag_3d_atlas);
+      desc.fragment = shader_variant(shaders::mesh_field_frag, layout);
       desc.color_formats = {k_mesh_field_format};
       desc.blend = {engine::vk::BlendMode::Min};
       sampled(LIQUID_BINDING_MESH_NEAREST);
@@ -99,14 +85,14 @@ engine::vk::GraphicsPipelineDesc box_pipeline(const GridLayout& layout, BoxKind 
       break;
     case BoxKind::Reference:
       desc.name = "liquid.mesh_reference";
-      desc.fragment = three_d(mesh_reference_frag_3d, mesh_reference_frag_3d_atlas);
+      desc.fragment = shader_variant(shaders::mesh_reference_frag, layout);
       desc.color_formats = {k_reference_format};
       sampled(LIQUID_BINDING_MESH_NEAREST);
       sampled(LIQUID_BINDING_MESH_INSIDE);
       break;
     case BoxKind::Resample:
       desc.name = "liquid.mesh_resample";
-      desc.fragment = three_d(mesh_resample_frag_3d, mesh_resample_frag_3d_atlas);
+      desc.fragment = shader_variant(shaders::mesh_resample_frag, layout);
       desc.color_formats = {k_mesh_field_format};
       desc.blend = {engine::vk::BlendMode::Min};
       desc.push_constant_size = sizeof(gpu::MeshResamplePush);
@@ -379,7 +365,7 @@ ImageHandle MeshField::update(engine::graph::RenderGraph& graph, const engine::v
     nearest = add_seed_pass(graph, uniforms, v.mesh, nearest, depth, v.push, v.seed_instances);
     for (int step : jump_flood_steps(v.push.band / cell_size_)) {
       v.push.step = step;
-      spread = add_box_pass(graph, uniforms, {"liquid.mesh_spread", &spread_, Access::ColorAttachmentWrite, {},
+      spread = add_box_pass(graph, uniforms, {&spread_, Access::ColorAttachmentWrite, {},
                                               {{LIQUID_BINDING_MESH_NEAREST, nearest}}, &nearest_},
                             spread, box_of(v.push), std::as_bytes(std::span(&v.push, 1)));
       std::swap(nearest, spread);
@@ -390,12 +376,12 @@ ImageHandle MeshField::update(engine::graph::RenderGraph& graph, const engine::v
     if (v.into_reference) {
       // The whole reference cleared to the band (it is redone only when the mesh's scale changes).
       Reference& reference = *meshes_[v.mesh].reference;
-      const BoxPass pass{"liquid.mesh_reference", &*reference_pipeline_, Access::ColorAttachmentWrite,
+      const BoxPass pass{&*reference_pipeline_, Access::ColorAttachmentWrite,
                          engine::graph::clear_to(reference_band(), 0.0f, 0.0f, 0.0f), inputs, &nearest_};
       reference.handle = add_box_pass(graph, uniforms, pass, graph.latest(reference.handle), box_of(v.push),
                                       std::as_bytes(std::span(&v.push, 1)));
     } else {
-      const BoxPass pass{"liquid.mesh_field", &field_pipeline_, Access::ColorAttachmentBlend,
+      const BoxPass pass{&field_pipeline_, Access::ColorAttachmentBlend,
                          {engine::graph::LoadOp::Load, {}}, inputs, &nearest_};
       field = add_box_pass(graph, uniforms, pass, field, box_of(v.push), std::as_bytes(std::span(&v.push, 1)),
                            reset_once());
@@ -410,7 +396,7 @@ ImageHandle MeshField::update(engine::graph::RenderGraph& graph, const engine::v
     push.reference_from_world = glm::mat4(glm::dmat4(reference.placement) * glm::inverse(glm::dmat4(placements[k])));
     push.slot = int(k);
     push.band = band_;
-    const BoxPass pass{"liquid.mesh_resample", &*resample_pipeline_, Access::ColorAttachmentBlend,
+    const BoxPass pass{&*resample_pipeline_, Access::ColorAttachmentBlend,
                        {engine::graph::LoadOp::Load, {}}, {{LIQUID_BINDING_MESH_REFERENCE, graph.latest(reference.handle)}},
                        &linear_};
     field = add_box_pass(graph, uniforms, pass, field, boxes[k], std::as_bytes(std::span(&push, 1)), reset_once());
@@ -452,67 +438,50 @@ ImageHandle MeshField::add_inside_pass(engine::graph::RenderGraph& graph, const 
 ImageHandle MeshField::add_seed_pass(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
                                      size_t mesh, ImageHandle nearest, ImageHandle& depth,
                                      const gpu::MeshRasterPush& push, uint32_t instances) const {
-  struct Data {
-    engine::passes::PassBindings bindings;
-    ImageHandle nearest;
-  };
-  return graph
-      .add_pass<Data>(
-          "liquid.mesh_seed",
-          [&](PassBuilder& b, Data& d) {
-            d.bindings = engine::passes::PassBindings(seed_);
-            d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
-            d.bindings.bind_image(b, LIQUID_BINDING_MESH_TRIANGLES, triangle_handles_[mesh], nearest_.handle());
-            d.nearest = b.write(nearest, Access::ColorAttachmentWrite);
-            depth = b.write(depth, Access::DepthAttachmentWrite);
-          },
-          [this, mesh, push, instances](PassContext& ctx, const Data& d) {
-            // The box starts with no closest point, at the greatest depth.
-            VkClearValue far{};
-            far.color = {{LIQUID_MESH_FAR, LIQUID_MESH_FAR, LIQUID_MESH_FAR, 0.0f}};
-            clear_box(ctx.cmd, box_of(push), far);
-            VkClearValue deepest{};
-            deepest.depthStencil = {1.0f, 0};
-            clear_box(ctx.cmd, box_of(push), deepest, VK_IMAGE_ASPECT_DEPTH_BIT);
-            d.bindings.bind_and_push(ctx);
-            seed_.push_constants(ctx.cmd, push);
-            // A triangle holding the cells within the seed band, per triangle and slice.
-            vkCmdDraw(ctx.cmd, 3 * meshes_[mesh].triangle_count, instances, 0, 0);
-          })
-      .nearest;
+  return add_solver_pass<ImageHandle>(
+      graph, seed_, uniforms,
+      [&](engine::passes::PassBindings& bindings, PassBuilder& b) {
+        bindings.bind_image(b, LIQUID_BINDING_MESH_TRIANGLES, triangle_handles_[mesh], nearest_.handle());
+        const ImageHandle out = b.write(nearest, Access::ColorAttachmentWrite);
+        depth = b.write(depth, Access::DepthAttachmentWrite);
+        return out;
+      },
+      [this, mesh, push, instances](const PassContext& ctx) {
+        // The box starts with no closest point, at the greatest depth.
+        VkClearValue far{};
+        far.color = {{LIQUID_MESH_FAR, LIQUID_MESH_FAR, LIQUID_MESH_FAR, 0.0f}};
+        clear_box(ctx.cmd, box_of(push), far);
+        VkClearValue deepest{};
+        deepest.depthStencil = {1.0f, 0};
+        clear_box(ctx.cmd, box_of(push), deepest, VK_IMAGE_ASPECT_DEPTH_BIT);
+        seed_.push_constants(ctx.cmd, push);
+        // A triangle holding the cells within the seed band, per triangle and slice.
+        vkCmdDraw(ctx.cmd, 3 * meshes_[mesh].triangle_count, instances, 0, 0);
+      });
 }
 
 ImageHandle MeshField::add_box_pass(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
                                     const BoxPass& pass, ImageHandle target, const MeshBox& box,
                                     std::span<const std::byte> push, const std::vector<MeshBox>& reset) const {
-  struct Data {
-    engine::passes::PassBindings bindings;
-    ImageHandle target;
-  };
-  return graph
-      .add_pass<Data>(
-          pass.name,
-          [&](PassBuilder& b, Data& d) {
-            d.bindings = engine::passes::PassBindings(*pass.pipeline);
-            d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
-            for (const auto& [binding, image] : pass.inputs) d.bindings.bind_image(b, binding, image, pass.sampler->handle());
-            d.target = b.write(target, pass.access, pass.target_options);
-          },
-          [this, pipeline = pass.pipeline, box, push = std::vector<std::byte>(push.begin(), push.end()),
-           reset](PassContext& ctx, const Data& d) {
-            VkClearValue band{};
-            band.color = {{band_, band_, band_, band_}};
-            for (const MeshBox& b : reset) clear_box(ctx.cmd, b, band);
-            d.bindings.bind_and_push(ctx);
-            pipeline->push_constants(ctx.cmd, push.data(), uint32_t(push.size()));
-            // The full-screen triangle, cut to the box by the scissor: once per slice of it on the
-            // layered paths (the instance is the slice), once per tile in the atlas.
-            for (const VkClearRect& rect : mesh_box_rects(layout_, box)) {
-              vkCmdSetScissor(ctx.cmd, 0, 1, &rect.rect);
-              vkCmdDraw(ctx.cmd, 3, rect.layerCount, 0, rect.baseArrayLayer);
-            }
-          })
-      .target;
+  return add_solver_pass<ImageHandle>(
+      graph, *pass.pipeline, uniforms,
+      [&](engine::passes::PassBindings& bindings, PassBuilder& b) {
+        for (const auto& [binding, image] : pass.inputs) bindings.bind_image(b, binding, image, pass.sampler->handle());
+        return b.write(target, pass.access, pass.target_options);
+      },
+      [this, pipeline = pass.pipeline, box, push = std::vector<std::byte>(push.begin(), push.end()),
+       reset](const PassContext& ctx) {
+        VkClearValue band{};
+        band.color = {{band_, band_, band_, band_}};
+        for (const MeshBox& b : reset) clear_box(ctx.cmd, b, band);
+        pipeline->push_constants(ctx.cmd, push.data(), uint32_t(push.size()));
+        // The full-screen triangle, cut to the box by the scissor: once per slice of it on the
+        // layered paths (the instance is the slice), once per tile in the atlas.
+        for (const VkClearRect& rect : mesh_box_rects(layout_, box)) {
+          vkCmdSetScissor(ctx.cmd, 0, 1, &rect.rect);
+          vkCmdDraw(ctx.cmd, 3, rect.layerCount, 0, rect.baseArrayLayer);
+        }
+      });
 }
 
 void MeshField::clear_box(VkCommandBuffer cmd, const MeshBox& box, VkClearValue value, VkImageAspectFlags aspect) const {

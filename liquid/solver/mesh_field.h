@@ -65,12 +65,9 @@ bool has_mesh_obstacles(const Scene& scene);
 // of triangle t, in the mesh's frame, at texels 3t, 3t + 1 and 3t + 2, row by row.
 engine::vk::Image mesh_triangle_texture(engine::vk::Context& context, const TriangleMesh& mesh, const std::string& name);
 
-// For the passes that sample the field (grid, pressure, particle): the shader variant, the
-// pipeline's binding, and the pass's read of `field` (nothing when it is invalid: no meshes).
-inline std::span<const uint32_t> mesh_variant(bool meshes, std::span<const uint32_t> plain,
-                                              std::span<const uint32_t> with_field) {
-  return meshes ? with_field : plain;
-}
+// For the passes that sample the field (grid, pressure, particle; the 2D view): the pipeline's
+// binding (`meshes`: the scene has some), and the pass's read of `field` (nothing when it is
+// invalid: no meshes).
 void add_mesh_field_binding(bool meshes, std::vector<engine::vk::DescriptorBinding>& bindings);
 void bind_mesh_field(engine::passes::PassBindings& bindings, PassBuilder& builder, ImageHandle field,
                      const engine::vk::Sampler& linear);
@@ -134,8 +131,7 @@ class MeshField {
   // A pass drawn over a mesh's box: a spread pass, the field pass (into the field or a reference)
   // or the resample pass.
   struct BoxPass {
-    const char* name;
-    const engine::vk::GraphicsPipeline* pipeline;
+    const engine::vk::GraphicsPipeline* pipeline;  // the pass is named after it
     Access access;  // of its target: written, or MIN-blended (the field)
     engine::graph::AttachmentOptions target_options;  // loaded where blended, cleared for a reference
     std::vector<std::pair<uint32_t, ImageHandle>> inputs;  // binding, image (sampled)

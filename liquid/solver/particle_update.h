@@ -7,9 +7,8 @@
 #include "engine/vk/pipeline.h"
 #include "engine/vk/sampler.h"
 #include "engine/vk/uniform_arena.h"
-#include "liquid/physics/setup.h"
-#include "liquid/solver/grid_layout.h"
 #include "liquid/solver/images.h"
+#include "liquid/solver/variant.h"
 
 #include <cstdint>
 #include <vector>
@@ -18,16 +17,15 @@ namespace liquid {
 
 class ParticleUpdatePass {
  public:
-  // `meshes`: the scene has mesh obstacles, whose field add_to() then reads.
-  ParticleUpdatePass(engine::vk::Context& context, const GridLayout& layout, const std::vector<int32_t>& specialization,
-                     bool meshes = false);
+  ParticleUpdatePass(engine::vk::Context& context, const SolverVariant& variant,
+                     const std::vector<int32_t>& specialization);
 
-  // From `current` into `next` (the other texture of the ping-pong pair), for the rows holding
-  // `active_after` particles; `bodies`: the dynamic obstacles' state at the end of the step, with
-  // `body_shapes` (liquid/solver/body_shapes.h).
-  ParticleImages add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                        const ParticleImages& current, ImageHandle splat, const GridImages& grids, ImageHandle bodies,
-                        ImageHandle body_shapes, const ParticleImages& next, int active_after, ImageHandle mesh_field = {}) const;
+  // From `step.particles` into `step.particle_targets` (the other textures of the ping-pong pair),
+  // for the rows holding `active_after` particles, then swaps the two: `step.particles` are the new
+  // ones. Reads the step's splat and grids, the body state at the end of the step with the body
+  // shapes, and the mesh field (with meshes).
+  void add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, StepImages& step,
+              int active_after) const;
 
  private:
   engine::vk::GraphicsPipeline pipeline_;

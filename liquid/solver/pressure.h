@@ -12,10 +12,9 @@
 #include "engine/vk/pipeline.h"
 #include "engine/vk/sampler.h"
 #include "engine/vk/uniform_arena.h"
-#include "liquid/physics/setup.h"
-#include "liquid/solver/grid_layout.h"
 #include "liquid/solver/images.h"
 #include "liquid/solver/separable_blur.h"
+#include "liquid/solver/variant.h"
 
 #include <cstdint>
 #include <optional>
@@ -28,22 +27,17 @@ constexpr VkFormat k_pressure_format = VK_FORMAT_R32_SFLOAT;
 
 class PressurePass {
  public:
-  // `active_region`: its passes compute the step's active region only (active_region.h).
-  PressurePass(engine::vk::Context& context, const GridLayout& layout, SplatMode splat,
-               const std::vector<int32_t>& specialization, bool meshes, bool active_region);
+  PressurePass(engine::vk::Context& context, const SolverVariant& variant, const std::vector<int32_t>& specialization);
 
-  // Grid-sized descriptions of the two intermediate images (the node creates them as transients).
-  engine::vk::ImageDesc image_desc() const { return desc_; }
+  // The step's grids for P and Phi, transients of `graph` (StepImages::pressure): with dynamic
+  // bodies under the separable splat a third, so that P is still there for the body force pass.
+  PressureImages create_images(engine::graph::RenderGraph& graph) const;
 
-  // Reads `splat` and the body state `bodies` with `body_shapes` (the dynamic bodies' kernel coverage), writes P into
-  // `pressure` and smooths it into Phi (the handles are advanced to their new versions); returns
-  // Phi, which is in `potential`, or in `pressure` for the separable splat's spread in 2D (its
-  // passes alternate between the two images). With a valid `scratch` (a third such image) the
-  // spread alternates between `potential` and it instead and P stays in `pressure`, for the body
-  // force pass. `region`: the step's active region (valid exactly when the pass was made for one).
-  ImageHandle add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle splat,
-                     ImageHandle bodies, ImageHandle body_shapes, ImageHandle& pressure, ImageHandle& potential, ImageHandle& scratch,
-                     ImageHandle mesh_field, ImageHandle region) const;
+  // Reads the step's splat, the body state with the body shapes, the mesh field and the active
+  // region; writes P into `step.pressure.pressure` and sets `step.pressure.phi` to the image that
+  // holds Phi (the potential's, or P's own in 2D under the separable splat, whose spread alternates
+  // between the two images, unless there is a scratch image).
+  void add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, StepImages& step) const;
 
  private:
   engine::vk::GraphicsPipeline pressure_;
@@ -51,9 +45,7 @@ class PressurePass {
   std::optional<SeparableBlur> spread_;                     // the separable splat's passes
   engine::vk::Sampler nearest_;  // also the mesh field's (P reads the obstacles' density at cell centres)
   engine::vk::Sampler linear_;   // the body shapes'
-  engine::vk::ImageDesc desc_;
-  GridLayout layout_;
-  bool active_region_ = false;
+  SolverVariant variant_;
 };
 
 }  // namespace liquid

@@ -6,8 +6,8 @@
 #include "engine/vk/pipeline.h"
 #include "engine/vk/sampler.h"
 #include "engine/vk/uniform_arena.h"
-#include "liquid/solver/grid_layout.h"
 #include "liquid/solver/images.h"
+#include "liquid/solver/variant.h"
 
 #include <cstdint>
 #include <vector>
@@ -20,35 +20,28 @@ class SeparableBlur {
     Splat,      // (sum w u, sum w) spread unnormalised along x and y (SeparableSplatPass runs z)
     Potential,  // Phi = W^T P along every axis: normalised, hydrostatic ghost cells beyond the walls
   };
-  // `active_region`: its passes compute the step's active region only (active_region.h).
-  SeparableBlur(engine::vk::Context& context, const GridLayout& layout, Kind kind, VkFormat format,
-                const std::vector<int32_t>& specialization, bool active_region);
+  // The images the passes write in turn (first, second, first ...), each pass reading the last one's
+  // output; add_to() advances both to their newest versions.
+  struct Targets {
+    ImageHandle first, second;
+  };
 
-  // Spreads `source` along x, then y (then z), each pass reading the other's output: source ->
-  // scratch -> source (-> scratch). Both handles are advanced to their newest versions; returns the
-  // one that holds the result: source after an even number of passes, scratch after an odd one.
-  // Both must be grid images of the blur's format. `region`: the step's active region's rectangles
-  // (valid exactly when the blur was made for one).
-  ImageHandle add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle& source,
-                     ImageHandle& scratch, ImageHandle region) const;
-  // The same, leaving `source` as it is: source -> first -> second (-> first). Returns the one that
-  // holds the result.
-  ImageHandle add_to_keeping(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                             ImageHandle source, ImageHandle& first, ImageHandle& second, ImageHandle region) const;
+  SeparableBlur(engine::vk::Context& context, const SolverVariant& variant, Kind kind, VkFormat format,
+                const std::vector<int32_t>& specialization);
+
+  // Spreads `input` along x, then y (then z) through `targets` (grid images of the blur's format,
+  // either of which may be `input` itself) and returns the one that holds the result. `region`: the
+  // step's active region (valid exactly when the variant has one).
+  ImageHandle add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle input,
+                     Targets& targets, ImageHandle region) const;
 
   // How many passes add_to declares: one per axis it spreads.
   int passes() const { return int(axes_.size()); }
 
  private:
-  // The passes from `input`, writing `first`, `second`, `first` ... in turn, each reading the last
-  // one's output.
-  ImageHandle chain(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, ImageHandle* input,
-                    ImageHandle* first, ImageHandle* second, ImageHandle region) const;
-
   std::vector<engine::vk::GraphicsPipeline> axes_;
   engine::vk::Sampler nearest_;
-  GridLayout layout_;
-  bool active_region_ = false;
+  SolverVariant variant_;
 };
 
 }  // namespace liquid

@@ -15,10 +15,11 @@
 #include "engine/vk/pipeline.h"
 #include "engine/vk/sampler.h"
 #include "engine/vk/uniform_arena.h"
-#include "liquid/physics/setup.h"
-#include "liquid/solver/grid_layout.h"
+#include "liquid/solver/active_region.h"
 #include "liquid/solver/images.h"
 #include "liquid/solver/separable_blur.h"
+#include "liquid/solver/splat_stage.h"
+#include "liquid/solver/variant.h"
 
 #include <cstdint>
 #include <optional>
@@ -26,32 +27,34 @@
 
 namespace liquid {
 
-class SeparableSplatPass {
+class SeparableSplatPass : public SplatStage {
  public:
-  // `active_region`: the spreads compute the step's active region only (active_region.h).
-  SeparableSplatPass(engine::vk::Context& context, const GridLayout& layout, VkFormat splat_format,
-                     const std::vector<int32_t>& specialization, bool active_region);
+  SeparableSplatPass(engine::vk::Context& context, const SolverVariant& variant, VkFormat splat_format,
+                     const std::vector<int32_t>& specialization);
 
-  // The first stage's grids: in 2D the deposit is in `splat` itself; in 3D in `lower` and `upper`,
+  // The deposit, the active region from its marks (the spreads are trimmed to it), then the spread.
+  void add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, StepImages& step,
+              int active) const override;
+
+ private:
+  // The first stage's grids: in 2D the deposit is in the splat itself; in 3D in `lower` and `upper`,
   // transient grids. `lower` marks every particle (the active region's marks).
   struct Deposit {
     ImageHandle lower, upper;
   };
-  // Deposits the first `active_particles` particles (`splat` is the 2D deposit's target).
-  Deposit deposit(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                  const ParticleImages& particles, ImageHandle splat, int active_particles) const;
-  // Spreads the deposit into `splat` (every texel; the region's, cleared elsewhere, with `region`).
-  ImageHandle spread(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                     const Deposit& deposit, ImageHandle splat, ImageHandle region) const;
+  Deposit deposit(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, const StepImages& step,
+                  int active) const;
+  // Spreads the deposit into the splat (every texel; the region's, cleared elsewhere, with one).
+  ImageHandle spread(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, const Deposit& deposit,
+                     const StepImages& step) const;
 
- private:
   engine::vk::GraphicsPipeline deposit_;
   std::optional<engine::vk::GraphicsPipeline> spread_z_;  // 3D: the z pass over the deposit's two grids
   SeparableBlur spread_xy_;                               // the x and y passes
   engine::vk::Sampler nearest_;
   engine::vk::ImageDesc scratch_desc_;
-  GridLayout layout_;
-  bool active_region_ = false;
+  SolverVariant variant_;
+  std::optional<ActiveRegion> active_region_;
 };
 
 }  // namespace liquid

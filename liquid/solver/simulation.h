@@ -1,7 +1,7 @@
 // Simulation: what a LiquidNode (include/liquid/node.h, the public API) is made of. It owns the
 // state textures, the solver's passes and the host-side clock, and adds one step's splat -> grid ->
 // particle update to a render graph; the node forwards its public calls here. The library's own
-// renderer, tools and tests reach it through LiquidNode::simulation() for what a host never sees:
+// renderer, tools and tests reach it through simulation_of(node) (below) for what a host never sees:
 // the derived setup, the grid layout, the state textures and the solver's uniform block.
 #pragma once
 
@@ -11,19 +11,20 @@
 #include "liquid/analysis/diagnostics.h"
 #include "liquid/physics/setup.h"
 #include "liquid/scene.h"
-#include "liquid/solver/active_region.h"
 #include "liquid/solver/body_force.h"
 #include "liquid/solver/body_integration.h"
 #include "liquid/solver/body_shapes.h"
 #include "liquid/solver/grid.h"
+#include "liquid/solver/host_inputs.h"
 #include "liquid/solver/mesh_field.h"
 #include "liquid/solver/particle_update.h"
 #include "liquid/solver/pressure.h"
-#include "liquid/solver/separable_splat.h"
-#include "liquid/solver/splat.h"
+#include "liquid/solver/splat_stage.h"
 #include "liquid/solver/state.h"
 #include "liquid/solver/uniforms.h"
+#include "liquid/solver/variant.h"
 #include "liquid/types.h"
+#include "liquid/node.h"
 
 #include <memory>
 #include <optional>
@@ -50,15 +51,19 @@ class Simulation {
   double time_step() const { return time_step_; }
   double adapt_time_step(const Diagnostics& d);  // by liquid/physics/time_step.h's CFL conditions
   void set_time_step(double dt);
-  void set_brushes(std::vector<ForceBrush> brushes) { brushes_ = std::move(brushes); }
-  const std::vector<ForceBrush>& brushes() const { return brushes_; }
+  void set_brushes(std::vector<ForceBrush> brushes) { host_.set_brushes(std::move(brushes)); }
+  const std::vector<ForceBrush>& brushes() const { return host_.brushes(); }
   RuntimeParameters runtime_parameters() const { return {setup_.gravity, setup_.pic_ratio, setup_.stiffness}; }
   void set_runtime_parameters(const RuntimeParameters& parameters);
-  void set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity);
+  void set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity) {
+    host_.set_obstacle_pose(index, center, velocity, time_);
+  }
   void set_mesh_transform(size_t index, glm::quat rotation, float scale,
-                          std::optional<glm::vec3> angular_velocity = std::nullopt);
-  std::vector<ObstaclePose> obstacle_poses(double time) const;
-  void set_body_force(size_t index, glm::vec3 force, glm::vec3 torque);
+                          std::optional<glm::vec3> angular_velocity = std::nullopt) {
+    host_.set_mesh_transform(index, rotation, scale, angular_velocity, time_);
+  }
+  std::vector<ObstaclePose> obstacle_poses(double time) const { return host_.obstacle_poses(time, bodies_); }
+  void set_body_force(size_t index, glm::vec3 force, glm::vec3 torque) { host_.set_body_force(index, force, torque); }
   std::vector<BodyState> read_bodies();
   std::vector<BodyState> latest_bodies();
   int active_particles() const { return active_; }
@@ -80,7 +85,9 @@ class Simulation {
   engine::vk::Image& body_shapes() { return body_shapes_; }
   const SimulationSetup& setup() const { return setup_; }
   // How the grids are stored (3D: images or atlases, liquid/solver/grid_layout.h) and the splat's format.
-  const GridLayout& grid_layout() const { return layout_; }
+  const GridLayout& grid_layout() const { return variant_.layout; }
+  // The solver's modes (liquid/solver/variant.h).
+  const SolverVariant& variant() const { return variant_; }
   VkFormat splat_format() const { return splat_format_; }
   // The solver's uniform block for the current state with no step in progress: what the views
   // read (obstacle poses at the node's time).
@@ -95,24 +102,8 @@ class Simulation {
  private:
   // Refuses a checkpoint whose values no run reaches (std::invalid_argument naming the value).
   void check_checkpoint_values(const Checkpoint& checkpoint) const;
-  // The splat-adjoint pressure's two grid images for one graph (invalid handles without it).
-  struct PressureImages {
-    ImageHandle pressure, potential;
-    ImageHandle scratch;  // with dynamic bodies: the separable spread's second image, so P is kept
-  };
-  PressureImages create_pressure_images(engine::graph::RenderGraph& graph) const;
-  // The scene's splat of the first `active` particles into `splat`, and the step's active region
-  // (active_region.h; invalid when the grid passes compute every cell).
-  struct Splat {
-    ImageHandle splat, region;
-  };
-  Splat add_splat(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
-                  const ParticleImages& particles, ImageHandle splat, int active) const;
-  // One step's grid pass, after the splat-adjoint pressure passes when the scene uses them.
-  GridImages add_grid(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice, const Splat& splat,
-                      ImageHandle bodies, ImageHandle body_shapes, const GridImages& grids, PressureImages& pressure, ImageHandle mesh_field) const;
-  // The index of a dynamic obstacle, or std::out_of_range / std::invalid_argument naming it.
-  size_t dynamic_obstacle(size_t index) const;
+  // The step's splat, pressure and grid passes (the splat-adjoint pressure's when the variant has it).
+  void add_grid_passes(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice, StepImages& step) const;
   // Keeps the newest per-frame read-back of the body state that has completed (latest_bodies()).
   void collect_body_readbacks();
   // The mesh field for obstacles at `poses` (voxelized again when a mesh moved); invalid without meshes.
@@ -120,18 +111,14 @@ class Simulation {
                                 const std::vector<ObstaclePose>& poses, ImageHandle field);
   // make_uniforms() with the grid layout's atlas tiles.
   gpu::SolverUniforms uniforms_for(const StepInputs& step) const;
-  // This step's emission ranges, advancing the emitters' counts.
-  std::vector<EmissionRange> emit(double end_time, int& next_index);
 
   engine::vk::Context& context_;
   Scene scene_;
   SimulationSetup setup_;
-  GridLayout layout_;
+  SolverVariant variant_;
   VkFormat splat_format_ = VK_FORMAT_UNDEFINED;
   uint32_t frames_in_flight_ = 2;
-  std::unique_ptr<SplatPass> splat_;                     // the scene's splat: the chapter's point sprites,
-  std::unique_ptr<SeparableSplatPass> separable_splat_;  // or the separable deposit and spread
-  std::unique_ptr<ActiveRegion> active_region_;  // 3D, unless LiquidOptions::active_region is off
+  std::unique_ptr<SplatStage> splat_;  // with the active region, unless LiquidOptions::active_region is off
   std::unique_ptr<GridPass> grid_;
   std::unique_ptr<PressurePass> pressure_;  // only with the splat-adjoint pressure
   std::unique_ptr<ParticleUpdatePass> particle_update_;
@@ -153,27 +140,7 @@ class Simulation {
   int step_ = 0;
   double time_ = 0.0;
   double time_step_ = 0.0;  // s, the next step's
-  std::vector<int> emitted_;  // per emitter
-  std::vector<ForceBrush> brushes_;
-  struct PoseOverride {
-    glm::vec3 center;
-    glm::vec3 velocity;
-    double since;
-  };
-  std::vector<std::optional<PoseOverride>> pose_overrides_;
-  // A host's turn of a mesh (set_mesh_transform): its rotation, and the angular velocity the liquid
-  // sees at its surface, measured from the rotation in effect at the last call made at an earlier
-  // time (`from`, at `from_time`) unless the host gave it, and held until `until` (s).
-  struct MeshTurn {
-    glm::quat rotation;
-    double set_at = 0.0;  // s, the latest call's time
-    glm::quat from;
-    double from_time = 0.0;
-    glm::vec3 angular_velocity{0.0f};
-    double until = 0.0;
-  };
-  std::vector<std::optional<MeshTurn>> mesh_turns_;
-  std::vector<BodyPush> body_pushes_;  // per obstacle
+  HostInputs host_;  // on scene_ and setup_
   // The dynamic obstacles' state as last known on the host (a blocking read, or the newest
   // completed per-frame read-back): what the views draw and obstacle_poses() reports for them.
   std::vector<BodyState> bodies_;
@@ -183,5 +150,10 @@ class Simulation {
   };
   std::vector<BodyReadback> body_readbacks_;  // one per frame slot
 };
+
+// A node's solver: LiquidNode keeps it private, and this header is neither installed nor reachable
+// from the public ones (node.cpp defines these).
+Simulation& simulation_of(LiquidNode& node);
+const Simulation& simulation_of(const LiquidNode& node);
 
 }  // namespace liquid

@@ -1,9 +1,8 @@
 #include "liquid/solver/splat.h"
 
-#include "engine/passes/bindings.h"
-#include "liquid/solver/images.h"
-#include "liquid/solver/uniforms.h"
-#include "liquid_shaders.h"
+#include "liquid/solver/separable_splat.h"
+#include "liquid/solver/solver_pass.h"
+#include "liquid_shader_families.h"
 
 #include <cmath>
 
@@ -18,13 +17,6 @@ uint32_t instances_per_particle(const SimulationSetup& setup) {
   return setup.dimension == 3 ? uint32_t(std::ceil(2.0f * setup.kernel_radius_cells)) : 1u;
 }
 
-// The vertex shader by the grid's layout (how a point reaches its slice).
-std::span<const uint32_t> splat_vertex_shader(const GridLayout& layout) {
-  if (layout.dimension == 2) return liquid_shaders::splat_vert_2d;
-  if (layout.atlas()) return liquid_shaders::splat_vert_3d_atlas;
-  return layout.path == GridPath::GeometryShader ? liquid_shaders::splat_vert_3d_gs : liquid_shaders::splat_vert_3d;
-}
-
 }  // namespace
 
 engine::vk::GraphicsPipelineDesc particle_points_pipeline(const char* name, const GridLayout& layout,
@@ -34,9 +26,8 @@ engine::vk::GraphicsPipelineDesc particle_points_pipeline(const char* name, cons
   return engine::vk::GraphicsPipelineDesc{
       .name = name,
       .vertex = vertex,
-      .geometry = layout.layered() && layout.path == GridPath::GeometryShader
-                      ? std::span<const uint32_t>(liquid_shaders::splat_geom)
-                      : std::span<const uint32_t>{},
+      .geometry = layout.layered() && layout.path == GridPath::GeometryShader ? shader_variant(shaders::splat_geom)
+                                                                              : std::span<const uint32_t>{},
       .fragment = fragment,
       .topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST,
       .color_formats = {format},
@@ -47,37 +38,41 @@ engine::vk::GraphicsPipelineDesc particle_points_pipeline(const char* name, cons
       .specialization = specialization};
 }
 
-SplatPass::SplatPass(engine::vk::Context& context, const SimulationSetup& setup, const GridLayout& layout,
-                     VkFormat splat_format, const std::vector<int32_t>& specialization)
-    : pipeline_(context, particle_points_pipeline(
-                             "liquid.splat", layout, splat_vertex_shader(layout),
-                             layout.atlas() ? liquid_shaders::splat_frag_atlas : liquid_shaders::splat_frag,
-                             splat_format, specialization)),
-      nearest_(context, VK_FILTER_NEAREST),
-      instances_(instances_per_particle(setup)) {}
+void bind_particle_points(engine::passes::PassBindings& bindings, PassBuilder& builder, const ParticleImages& particles,
+                          const engine::vk::Sampler& nearest) {
+  bindings.bind_image(builder, LIQUID_BINDING_SPLAT_POSITIONS, particles.positions, nearest.handle());
+  bindings.bind_image(builder, LIQUID_BINDING_SPLAT_VELOCITIES, particles.velocities, nearest.handle());
+}
 
-ImageHandle SplatPass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                              const ParticleImages& particles, ImageHandle splat, int active_particles) const {
-  struct Data {
-    engine::passes::PassBindings bindings;
-    ImageHandle splat;
-  };
-  return graph
-      .add_pass<Data>(
-          "liquid.splat",
-          [&](PassBuilder& b, Data& d) {
-            d.bindings = engine::passes::PassBindings(pipeline_);
-            d.bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, uniforms);
-            d.bindings.bind_image(b, LIQUID_BINDING_SPLAT_POSITIONS, particles.positions, nearest_.handle());
-            d.bindings.bind_image(b, LIQUID_BINDING_SPLAT_VELOCITIES, particles.velocities, nearest_.handle());
-            d.splat = b.write(splat, Access::ColorAttachmentBlend, engine::graph::clear_to(0, 0, 0, 0));
-          },
-          [this, active_particles](PassContext& ctx, const Data& d) {
-            if (active_particles == 0) return;
-            d.bindings.bind_and_push(ctx);
-            vkCmdDraw(ctx.cmd, uint32_t(active_particles), instances_, 0, 0);
-          })
-      .splat;
+SplatPass::SplatPass(engine::vk::Context& context, const SolverVariant& variant, const SimulationSetup& setup,
+                     VkFormat splat_format, const std::vector<int32_t>& specialization)
+    : pipeline_(context, particle_points_pipeline("liquid.splat", variant.layout, variant.shader(shaders::splat_vert),
+                                                  variant.shader(shaders::splat_frag), splat_format, specialization)),
+      nearest_(context, VK_FILTER_NEAREST),
+      instances_(instances_per_particle(setup)) {
+  if (variant.active_region) active_region_.emplace(context, variant.layout, specialization);
+}
+
+void SplatPass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, StepImages& step,
+                       int active) const {
+  step.splat = add_solver_pass<ImageHandle>(
+      graph, pipeline_, uniforms,
+      [&](engine::passes::PassBindings& bindings, PassBuilder& b) {
+        bind_particle_points(bindings, b, step.particles, nearest_);
+        return b.write(step.splat, Access::ColorAttachmentBlend, engine::graph::clear_to(0, 0, 0, 0));
+      },
+      [this, active](const PassContext& ctx) {
+        if (active > 0) vkCmdDraw(ctx.cmd, uint32_t(active), instances_, 0, 0);
+      });
+  step.region = active_region_ ? active_region_->add_to(graph, uniforms, step.splat) : ImageHandle{};
+}
+
+std::unique_ptr<SplatStage> make_splat_stage(engine::vk::Context& context, const SolverVariant& variant,
+                                             const SimulationSetup& setup, VkFormat splat_format,
+                                             const std::vector<int32_t>& specialization) {
+  if (variant.splat == SplatMode::Separable)
+    return std::make_unique<SeparableSplatPass>(context, variant, splat_format, specialization);
+  return std::make_unique<SplatPass>(context, variant, setup, splat_format, specialization);
 }
 
 }  // namespace liquid

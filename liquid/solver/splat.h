@@ -8,10 +8,13 @@
 #include "engine/vk/sampler.h"
 #include "engine/vk/uniform_arena.h"
 #include "liquid/physics/setup.h"
-#include "liquid/solver/grid_layout.h"
+#include "liquid/solver/active_region.h"
 #include "liquid/solver/images.h"
+#include "liquid/solver/splat_stage.h"
+#include "liquid/solver/variant.h"
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -25,19 +28,24 @@ engine::vk::GraphicsPipelineDesc particle_points_pipeline(const char* name, cons
                                                           std::span<const uint32_t> fragment, VkFormat format,
                                                           const std::vector<int32_t>& specialization);
 
-class SplatPass {
+// The particles' images bound for particle_points_pipeline()'s vertex stage.
+void bind_particle_points(engine::passes::PassBindings& bindings, PassBuilder& builder, const ParticleImages& particles,
+                          const engine::vk::Sampler& nearest);
+
+class SplatPass : public SplatStage {
  public:
-  SplatPass(engine::vk::Context& context, const SimulationSetup& setup, const GridLayout& layout,
+  SplatPass(engine::vk::Context& context, const SolverVariant& variant, const SimulationSetup& setup,
             VkFormat splat_format, const std::vector<int32_t>& specialization);
 
-  // Clears `splat` and accumulates the first `active_particles` particles into it.
-  ImageHandle add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                     const ParticleImages& particles, ImageHandle splat, int active_particles) const;
+  // The splat, then the active region from its grid (whose marks already reach the kernel's radius).
+  void add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, StepImages& step,
+              int active) const override;
 
  private:
   engine::vk::GraphicsPipeline pipeline_;
   engine::vk::Sampler nearest_;
   uint32_t instances_;  // draws per particle: 1 in 2D, one per slice the kernel can reach in 3D
+  std::optional<ActiveRegion> active_region_;
 };
 
 }  // namespace liquid

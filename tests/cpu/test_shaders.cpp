@@ -99,14 +99,14 @@ TEST_CASE("shaders declare the specialization ids the host fills in", "[shaders]
   REQUIRE(expected.size() == liquid::specialization_id::count);
   const std::map<std::string, std::span<const uint32_t>> modules{
       {"grid 2D", liquid_shaders::grid_frag_2d},         {"grid 3D", liquid_shaders::grid_frag_3d},
-      {"grid adjoint 2D", liquid_shaders::grid_adjoint_frag_2d},
-      {"grid adjoint 3D", liquid_shaders::grid_adjoint_frag_3d},
+      {"grid adjoint 2D", liquid_shaders::grid_frag_2d_splat_adjoint},
+      {"grid adjoint 3D", liquid_shaders::grid_frag_3d_splat_adjoint},
       {"pressure 2D", liquid_shaders::pressure_frag_2d}, {"pressure 3D", liquid_shaders::pressure_frag_3d},
       {"potential 2D", liquid_shaders::potential_frag_2d}, {"potential 3D", liquid_shaders::potential_frag_3d},
       {"particle 2D", liquid_shaders::particle_frag_2d}, {"particle 3D", liquid_shaders::particle_frag_3d},
       {"splat 2D", liquid_shaders::splat_vert_2d},       {"splat 3D", liquid_shaders::splat_vert_3d},
       {"grid 3D atlas", liquid_shaders::grid_frag_3d_atlas},
-      {"grid adjoint 3D atlas", liquid_shaders::grid_adjoint_frag_3d_atlas},
+      {"grid adjoint 3D atlas", liquid_shaders::grid_frag_3d_atlas_splat_adjoint},
       {"pressure 3D atlas", liquid_shaders::pressure_frag_3d_atlas},
       {"potential 3D atlas", liquid_shaders::potential_frag_3d_atlas},
       {"particle 3D atlas", liquid_shaders::particle_frag_3d_atlas},

@@ -57,7 +57,7 @@ inline void require_conserved(liquid::LiquidNode& node, const liquid::Diagnostic
                 << d.inside_obstacles << ", non-finite " << d.non_finite << ", max rho/rho0 " << d.max_density_ratio
                 << ", KE " << d.kinetic_energy << " J");
   CHECK(d.active_particles == expected_count);
-  CHECK(d.mass == Approx(expected_count * double(node.simulation().setup().particle_mass)));
+  CHECK(d.mass == Approx(expected_count * double(simulation_of(node).setup().particle_mass)));
   CHECK(d.non_finite == 0);
   CHECK(d.outside_domain == 0);
   CHECK(d.inside_obstacles == 0);

@@ -251,7 +251,7 @@ TEST_CASE("a 2D box denser than water sinks", "[gpu][liquid][bodies]") {
 TEST_CASE("the body force pass sums the liquid's pressure on the body's coverage as its formula does", "[gpu][liquid][bodies]") {
   const Pool pool = deep_pool(0.0f);
   liquid::LiquidNode node(test::gpu(), pool_scene(pool, 1200.0f, 0.05f));
-  const liquid::SimulationSetup& setup = node.simulation().setup();
+  const liquid::SimulationSetup& setup = simulation_of(node).setup();
   const glm::ivec3 n = node.grid_cells();
   const float h = node.cell_size();
   const glm::vec2 domain(pool.domain);
@@ -380,7 +380,7 @@ TEST_CASE("a body thrown into a pool gives the liquid the momentum it loses", "[
   liquid::Scene scene = pool_scene(pool, 500.0f, pool.depth + 0.005f, glm::vec3(1.5f, -1.0f, 0.0f));
   scene.substeps = 10;
   liquid::LiquidNode node(test::gpu(), scene);
-  const double particle_mass = node.simulation().setup().particle_mass;
+  const double particle_mass = simulation_of(node).setup().particle_mass;
   const auto liquid_momentum = [&] {
     double p = 0.0;
     for (const glm::vec4& v : node.read_particles().velocities) p += particle_mass * v.x;
@@ -547,7 +547,7 @@ TEMPLATE_TEST_CASE("on each 3D path the rasterizer voxelizes a dynamic mesh's di
   scene.obstacles = {box, sphere};
   engine::vk::Context& context = test::gpu_for(TestType::path);
   liquid::LiquidNode node(context, scene, test::options_for(TestType::path));
-  liquid::Simulation& simulation = node.simulation();
+  liquid::Simulation& simulation = simulation_of(node);
   engine::vk::Image& shapes = simulation.body_shapes();
   const int n = int(shapes.desc().width);
   const std::vector<std::byte> bytes = engine::graph::download_image(context, shapes);

@@ -67,7 +67,7 @@ TEMPLATE_TEST_CASE("small 3D dam break conserves particles and stays in the doma
                    "[gpu][liquid][physics][paths]", test::GeometryPath, test::VertexLayerPath, test::AtlasPath) {
   engine::vk::Context& context = test::gpu_for(TestType::path);
   liquid::LiquidNode node(context, test::shipped_scene("small_3d"), test::options_for(TestType::path));
-  REQUIRE(node.simulation().grid_layout().path == TestType::path);
+  REQUIRE(simulation_of(node).grid_layout().path == TestType::path);
   const int count = node.active_particles();
   const liquid::Diagnostics d = test::run_steps(node, 500);
   test::require_conserved(node, d, count);
@@ -89,7 +89,7 @@ TEMPLATE_TEST_CASE("a 3D pool at rest stays at rest with a level surface", "[gpu
   CHECK(d.kinetic_energy < bound);
   // Level surface: the top particle of each column of 2 x 2 cells, away from the walls, lies
   // within 1.5 cells of the mean surface height.
-  const auto& s = node.simulation().setup();
+  const auto& s = simulation_of(node).setup();
   const float bin = 2.0f * s.cell_size;
   const int bx = int(s.domain.x / bin), bz = int(s.domain.z / bin);
   std::vector<float> top(size_t(bx * bz), -1.0f);
@@ -114,7 +114,7 @@ TEMPLATE_TEST_CASE("a mirror-symmetric 3D scene stays symmetric", "[gpu][liquid]
   liquid::LiquidNode node(context, liquid::parse_scene(k_symmetric_3d, "symmetric_3d.json"),
                           test::options_for(TestType::path));
   const liquid::Diagnostics d = test::run_steps(node, 300);
-  const auto& s = node.simulation().setup();
+  const auto& s = simulation_of(node).setup();
   // Centre of mass on the mirror plane within a tenth of a cell.
   INFO("centre of mass x " << d.center_of_mass.x << " m, mirror plane " << s.domain.x / 2 << " m");
   CHECK(std::abs(d.center_of_mass.x - s.domain.x / 2) < 0.1f * s.cell_size);

@@ -236,7 +236,7 @@ TEST_CASE("a host's own device is adopted, not owned, and runs the node with zer
       cmd.submit_and_wait();
     }
     const liquid::Diagnostics d = node.diagnose();
-    CHECK(d.active_particles == node.simulation().setup().initial_particles);
+    CHECK(d.active_particles == simulation_of(node).setup().initial_particles);
     CHECK(d.non_finite == 0);
     INFO("last validation message: " << context.last_validation_message());
     CHECK(context.validation_message_count() == 0u);
@@ -557,7 +557,7 @@ TEST_CASE("two views of one step share a target side by side, and an orthographi
   CHECK(unequal == 0);  // the same view in both halves: the same pixels
 
   // Orthographic: rays parallel, each from its own point of the near plane.
-  const glm::vec3 domain = node.simulation().setup().domain;
+  const glm::vec3 domain = simulation_of(node).setup().domain;
   const float extent = 0.8f * glm::length(domain);
   liquid::LiquidNode ortho_node(context, test::shipped_scene("small_3d"));
   HostTargets ortho_targets(context);
@@ -810,7 +810,7 @@ TEST_CASE("a node's placement maps world positions, velocities and brushes into 
   // A brush in world units: its radius and acceleration scale with the placement.
   node.set_brushes({{.position = world_point, .radius = 0.25f, .acceleration = placement.vector_to_world({0, 5, 0})}},
                    liquid::Frame::World);
-  const liquid::ForceBrush brush = node.simulation().brushes().at(0);
+  const liquid::ForceBrush brush = simulation_of(node).brushes().at(0);
   CHECK(glm::length(brush.position - liquid_point) < 1e-5f);
   CHECK(brush.radius == Approx(0.1f));
   CHECK(glm::length(brush.acceleration - glm::vec3(0, 5, 0)) < 1e-4f);
@@ -1169,7 +1169,7 @@ TEST_CASE("a host's own mesh, from its interleaved vertex buffer, is an obstacle
     cmd.submit_and_wait();
   }
   // Moved every step: its field made again every step (resampled, or voxelized if it has no reference).
-  CHECK(node.simulation().mesh_field()->voxelizations() == 4 * node.substeps());
+  CHECK(simulation_of(node).mesh_field()->voxelizations() == 4 * node.substeps());
   // Its surface turns at the rate of the host's turn between the last two frames, for a frame, then stops.
   const double frame_time = node.substeps() * node.time_step();
   CHECK(node.obstacle_poses(node.time())[boat].angular_velocity.y == Approx(0.3 / frame_time).epsilon(1e-3));

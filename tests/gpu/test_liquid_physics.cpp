@@ -17,8 +17,8 @@ TEST_CASE("2D dam break conserves particles and stays in the domain for 600 step
   // The column is collapsing (0.07 s in): the centre of mass moved right and down.
   const glm::vec3 start = [&] {
     glm::vec3 c(0.0f);
-    for (const auto& p : node.simulation().setup().positions) c += glm::vec3(p);
-    return c / float(node.simulation().setup().positions.size());
+    for (const auto& p : simulation_of(node).setup().positions) c += glm::vec3(p);
+    return c / float(simulation_of(node).setup().positions.size());
   }();
   CHECK(d.center_of_mass.x > start.x + 0.002f);
   CHECK(d.center_of_mass.y < start.y);
@@ -85,7 +85,7 @@ TEST_CASE("a pool at rest stays at rest with a level surface", "[gpu][liquid][ph
   // Level surface: the top particle of each column of width 2 cells, away from the walls, lies
   // within 1.5 cells of the mean surface height.
   const auto snapshot = node.read_particles();
-  const auto& s = node.simulation().setup();
+  const auto& s = simulation_of(node).setup();
   const float bin = 2.0f * s.cell_size;
   const int bins = int(s.domain.x / bin);
   std::vector<float> top(size_t(bins), -1.0f);
@@ -105,7 +105,7 @@ TEST_CASE("a pool at rest stays at rest with a level surface", "[gpu][liquid][ph
 TEST_CASE("a mirror-symmetric scene stays symmetric", "[gpu][liquid][physics]") {
   liquid::LiquidNode node(test::gpu(), test::shipped_scene("symmetric_2d"));
   const liquid::Diagnostics d = test::run_steps(node, 300);
-  const auto& s = node.simulation().setup();
+  const auto& s = simulation_of(node).setup();
   // Centre of mass on the mirror plane within a tenth of a cell.
   INFO("centre of mass x " << d.center_of_mass.x << " m, mirror plane " << s.domain.x / 2 << " m");
   CHECK(std::abs(d.center_of_mass.x - s.domain.x / 2) < 0.1f * s.cell_size);
@@ -140,7 +140,7 @@ TEST_CASE("PIC (r = 1) dissipates more kinetic energy than the FLIP blend (r = 0
 
 TEST_CASE("an emitter adds particles on schedule up to its capacity", "[gpu][liquid][physics]") {
   liquid::LiquidNode node(test::gpu(), test::shipped_scene("jet_2d"));
-  const auto& s = node.simulation().setup();
+  const auto& s = simulation_of(node).setup();
   REQUIRE(!node.scene().emitters.empty());
   const int initial = node.active_particles();
   auto scheduled = [&] {

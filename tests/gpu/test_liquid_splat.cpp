@@ -40,10 +40,10 @@ struct SplatError {
 };
 
 SplatError measure_splat(liquid::LiquidNode& node) {
-  const auto initial = node.simulation().setup().positions;
+  const auto initial = simulation_of(node).setup().positions;
   test::run_steps(node, 1);
   const std::vector<glm::vec4> splat = node.read_splat();
-  const std::vector<double> expected = analytic_weights(node.simulation().setup(), initial);
+  const std::vector<double> expected = analytic_weights(simulation_of(node).setup(), initial);
   REQUIRE(splat.size() == expected.size());
   SplatError e;
   for (size_t i = 0; i < splat.size(); ++i) {
@@ -147,13 +147,13 @@ TEST_CASE("RGBA16F against RGBA32F splats: density and particles after 200 chapt
       liquid::Scene scene = test::shipped_scene(b.scene);
       scene.splat_format = i == 0 ? liquid::SplatFormat::Rgba32f : liquid::SplatFormat::Rgba16f;
       liquid::LiquidNode node(test::gpu(), scene);
-      REQUIRE(node.simulation().splat_format() == (i == 0 ? VK_FORMAT_R32G32B32A32_SFLOAT : VK_FORMAT_R16G16B16A16_SFLOAT));
+      REQUIRE(simulation_of(node).splat_format() == (i == 0 ? VK_FORMAT_R32G32B32A32_SFLOAT : VK_FORMAT_R16G16B16A16_SFLOAT));
       // The simulated time of 200 steps at the chapter's step, where the bounds were measured
       // (the scenes now take 8 times longer steps: 25 of them).
       test::run_steps(node, int(std::lround(200.0 * scene.pic_ratio_reference_step.value() / scene.time_step)));
       density[i] = node.read_density_ratio();
       positions[i] = node.read_particles().positions;
-      cell = node.simulation().setup().cell_size;
+      cell = simulation_of(node).setup().cell_size;
     }
     double difference = 0.0, total = 0.0, squares = 0.0, signed_total = 0.0;
     for (size_t c = 0; c < density[0].size(); ++c) {

@@ -43,7 +43,7 @@ void run_frame(liquid::LiquidNode& node, int steps) {
 // rest of the band (the jump flood's) within a quarter cell, every cell's sign right, the clamp
 // beyond the band.
 void check_sphere_field(liquid::LiquidNode& node, glm::vec3 center, float radius, float near_tolerance_cells = 0.02f) {
-  liquid::Simulation& sim = node.simulation();
+  liquid::Simulation& sim = simulation_of(node);
   REQUIRE(sim.mesh_field() != nullptr);
   const std::vector<glm::vec4> field = sim.mesh_field()->read(node.context());
   const float h = node.cell_size(), band = sim.mesh_field()->band();
@@ -161,10 +161,10 @@ TEMPLATE_TEST_CASE("each 3D path voxelizes a mesh sphere within a quarter cell o
   scene.obstacles.push_back(test::mesh_obstacle_of(test::icosphere(radius, 4), center));
   liquid::LiquidNode node(context, scene, test::options_for(TestType::path));
   run_frame(node, 1);
-  CHECK(node.simulation().mesh_field()->voxelizations() == 1);
+  CHECK(simulation_of(node).mesh_field()->voxelizations() == 1);
   check_sphere_field(node, center, radius);
   run_frame(node, 1);  // it stands still: not voxelized again
-  CHECK(node.simulation().mesh_field()->voxelizations() == 1);
+  CHECK(simulation_of(node).mesh_field()->voxelizations() == 1);
   REQUIRE_NO_VALIDATION_MESSAGES_ON(context);
 }
 
@@ -178,7 +178,7 @@ TEMPLATE_TEST_CASE("each 3D path places a mesh's reference field at a new pose w
   const float radius = 0.08f;
   scene.obstacles.push_back(test::mesh_obstacle_of(test::icosphere(radius, 4), glm::vec3(0.17f, 0.155f, 0.162f)));
   liquid::LiquidNode node(context, scene, test::options_for(TestType::path));
-  const liquid::MeshField& field = *node.simulation().mesh_field();
+  const liquid::MeshField& field = *simulation_of(node).mesh_field();
   REQUIRE(field.resampled(0));
   run_frame(node, 1);
   CHECK(field.triangle_voxelizations() == 1);
@@ -270,11 +270,11 @@ liquid::Scene pool_with_paddle(const char* spin) {
 
 // The liquid's angular momentum about the vertical through the paddle's centre, kg m^2/s.
 double angular_momentum_y(liquid::LiquidNode& node, glm::vec3 axis_point) {
-  const liquid::ParticleSnapshot p = node.simulation().read_particles();
+  const liquid::ParticleSnapshot p = simulation_of(node).read_particles();
   double total = 0.0;
   for (size_t i = 0; i < p.positions.size(); ++i)
     total += glm::cross(glm::vec3(p.positions[i]) - axis_point, glm::vec3(p.velocities[i])).y;
-  return total * node.simulation().setup().particle_mass;
+  return total * simulation_of(node).setup().particle_mass;
 }
 
 // Runs the paddle pool for 0.4 s; `rate` (rad/s about +y) turns the mesh by set_mesh_transform

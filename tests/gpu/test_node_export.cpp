@@ -147,8 +147,8 @@ TEST_CASE("OpenVDB files hold the node's density and velocity grids in metres", 
     CHECK(file.grid_names == std::vector<std::string>{"density", "velocity"});
     CHECK(file.frame.frame == 7);
     CHECK(file.frame.time_s == node.time());
-    CHECK(file.voxel_size == Approx(node.simulation().setup().cell_size));
-    CHECK(file.voxel_zero.x == Approx(0.5 * node.simulation().setup().cell_size));
+    CHECK(file.voxel_size == Approx(simulation_of(node).setup().cell_size));
+    CHECK(file.voxel_zero.x == Approx(0.5 * simulation_of(node).setup().cell_size));
     // The kernel's faint tail stays out of the file: only cells of at least k_vdb_min_density.
     size_t liquid_cells = 0, faint_cells = 0;
     for (float rho : volume.density) {

@@ -34,7 +34,7 @@ double spread(const std::vector<double>& heights) {
 // Runs `seconds`, sampling every `every` steps.
 std::vector<Sample> run_sampled(liquid::LiquidNode& node, double seconds, int every) {
   std::vector<Sample> samples;
-  const int total = int(std::lround(seconds / double(node.simulation().setup().time_step)));
+  const int total = int(std::lround(seconds / double(simulation_of(node).setup().time_step)));
   for (int done = 0; done < total;) {
     const int n = std::min(every, total - done);
     test::run_steps(node, n);
@@ -42,9 +42,9 @@ std::vector<Sample> run_sampled(liquid::LiquidNode& node, double seconds, int ev
     const liquid::ParticleSnapshot p = node.read_particles();
     const liquid::Diagnostics d = node.diagnose(p);
     const std::vector<float> rho = node.read_density_ratio();
-    const std::vector<double> heights = liquid::surface_heights(rho, node.simulation().setup());
+    const std::vector<double> heights = liquid::surface_heights(rho, simulation_of(node).setup());
     samples.push_back({d.time, d.kinetic_energy, d.potential_energy, d.mechanical_energy,
-                       liquid::volume_under_surface(heights, node.simulation().setup()), liquid::surge_front(p), spread(heights)});
+                       liquid::volume_under_surface(heights, simulation_of(node).setup()), liquid::surge_front(p), spread(heights)});
   }
   return samples;
 }
@@ -77,7 +77,7 @@ liquid::FrontError column_front(const liquid::Scene& scene) {
 TEST_CASE("still water stays still, level and of constant volume", "[gpu][liquid][physics][energy]") {
   liquid::LiquidNode node(test::gpu(), coarse_pool());
   const std::vector<Sample> s = run_sampled(node, 3.0, node.substeps());
-  const double pe0 = s.front().potential, h = node.simulation().setup().cell_size;
+  const double pe0 = s.front().potential, h = simulation_of(node).setup().cell_size;
   double early = 0.0, late = 0.0, worst_level = 0.0, worst_volume = 0.0;
   for (const Sample& x : s) {
     if (x.t >= 1.0 && x.t < 2.0) early = std::max(early, x.kinetic);
@@ -132,7 +132,7 @@ TEST_CASE("a dam break gains no mechanical energy and keeps its volume", "[gpu][
   const std::vector<Sample> s = run_sampled(node, 2.0, node.substeps());
   double impact = s.back().t;
   for (const Sample& x : s)
-    if (x.front >= node.simulation().setup().domain.x - 2.0 * node.simulation().setup().cell_size) {
+    if (x.front >= simulation_of(node).setup().domain.x - 2.0 * simulation_of(node).setup().cell_size) {
       impact = x.t;
       break;
     }
@@ -201,12 +201,12 @@ TEST_CASE("adaptive steps keep stable a dam break whose fixed step explodes", "[
   liquid::Diagnostics at_rest;
   at_rest.max_density_ratio = 1.0f;  // the first batch: the CFL step of the liquid at rest
   CHECK(node.time_step() ==
-        Approx(liquid::cfl_time_step(node.simulation().setup(), *scene.adaptive_time_step, at_rest, scene.time_step)));
+        Approx(liquid::cfl_time_step(simulation_of(node).setup(), *scene.adaptive_time_step, at_rest, scene.time_step)));
   liquid::Diagnostics d = node.diagnose();
   double clock = 0.0, smallest = 1.0, largest = 0.0;
   while (node.time() < covered) {
     const double dt = node.adapt_time_step(d);
-    REQUIRE(dt == Approx(liquid::cfl_time_step(node.simulation().setup(), *scene.adaptive_time_step, d, scene.time_step)));
+    REQUIRE(dt == Approx(liquid::cfl_time_step(simulation_of(node).setup(), *scene.adaptive_time_step, d, scene.time_step)));
     REQUIRE(dt <= scene.time_step);
     smallest = std::min(smallest, dt);
     largest = std::max(largest, dt);
@@ -220,6 +220,6 @@ TEST_CASE("adaptive steps keep stable a dam break whose fixed step explodes", "[
   CHECK(node.time() == Approx(clock).epsilon(1e-9));
   CHECK(largest < 0.3 * scene.time_step);  // the acoustic bound, far below the scene's step
   CHECK(smallest < largest);                // and it moves with the state
-  test::require_conserved(node, d, node.simulation().setup().initial_particles);
+  test::require_conserved(node, d, simulation_of(node).setup().initial_particles);
   REQUIRE_NO_VALIDATION_MESSAGES();
 }

@@ -50,7 +50,7 @@ liquid::Scene separable_scene(int dimension, glm::vec3 at) {
 
 // Runs one step (its splat is of the initial particles) and compares the grid with the CPU's sum.
 void check_separable_splat(liquid::LiquidNode& node, bool check_velocity) {
-  const liquid::SimulationSetup& setup = node.simulation().setup();
+  const liquid::SimulationSetup& setup = simulation_of(node).setup();
   REQUIRE(setup.splat == liquid::SplatMode::Separable);
   const std::vector<double> expected = separable_weights(setup, setup.positions);
   test::run_steps(node, 1);  // its splat is of the initial particles

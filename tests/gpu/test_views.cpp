@@ -92,14 +92,14 @@ float nearest_obstacle(const liquid::LiquidNode& node, glm::vec2 p) {
 // Replaces the node's density grid with rho / rho0 = field(cell centre). The golden tests draw such
 // fields, so that a golden changes with the view alone, not with the solver or a scene's tuning.
 void set_density(liquid::LiquidNode& node, const std::function<float(glm::vec2)>& field) {
-  const liquid::SimulationSetup& setup = node.simulation().setup();
+  const liquid::SimulationSetup& setup = simulation_of(node).setup();
   const int nx = setup.grid_cells.x, ny = setup.grid_cells.y;
   std::vector<uint16_t> halves(size_t(nx) * size_t(ny));
   for (int y = 0; y < ny; ++y)
     for (int x = 0; x < nx; ++x)
       halves[size_t(y) * size_t(nx) + size_t(x)] =
           uint16_t(glm::packHalf1x16(field((glm::vec2(float(x), float(y)) + 0.5f) * setup.cell_size)));
-  engine::graph::upload_image(test::gpu(), node.simulation().state().density, std::as_bytes(std::span(halves)));
+  engine::graph::upload_image(test::gpu(), simulation_of(node).state().density, std::as_bytes(std::span(halves)));
 }
 
 // 0 outside, 1 inside, a linear ramp `width` wide across the surface at signed distance 0.
@@ -119,7 +119,7 @@ TEST_CASE("2D view of obstacles_2d: liquid where the density is high, grey obsta
   REQUIRE(image.width == k_width);
   REQUIRE(image.height == k_height);
 
-  const liquid::SimulationSetup& setup = node.simulation().setup();
+  const liquid::SimulationSetup& setup = simulation_of(node).setup();
   const std::vector<float> density = node.read_density_ratio();
   const liquid::View2dLayout layout = liquid::fit_view2d(glm::vec2(setup.domain), k_width, k_height);
   const float metres_per_pixel = 1.0f / layout.pixels_per_metre;
@@ -189,7 +189,7 @@ TEST_CASE("2D view draws the active particles as points over the liquid", "[gpu]
   const Rgba8Image dotted = render(node, [&](auto& graph, const auto& images) { return pass.add_to(graph, images, settings); });
 
   // Pixels within a point's reach of some particle may change; nothing else may.
-  const liquid::View2dLayout layout = liquid::fit_view2d(glm::vec2(node.simulation().setup().domain), k_width, k_height);
+  const liquid::View2dLayout layout = liquid::fit_view2d(glm::vec2(simulation_of(node).setup().domain), k_width, k_height);
   std::vector<uint8_t> reachable(size_t(k_width) * k_height, 0);
   const liquid::ParticleSnapshot particles = node.read_particles();
   REQUIRE(int(particles.positions.size()) == node.active_particles());
@@ -222,7 +222,7 @@ TEST_CASE("height-field view of shallow_water: sky, sandy ground and water where
   test::run_steps(node, 16);
   liquid::HeightFieldPass pass(context, node);
   const liquid::RenderSettings settings{.width = k_width, .height = k_height, .fxaa = false};
-  const liquid::CameraView camera = liquid::default_height_field_camera(node.scene(), node.simulation().setup());
+  const liquid::CameraView camera = liquid::default_height_field_camera(node.scene(), simulation_of(node).setup());
   const Rgba8Image image =
       render(node, [&](auto& graph, const auto& images) { return pass.add_to(graph, images, settings, camera); });
 
@@ -243,7 +243,7 @@ TEST_CASE("height-field view of shallow_water: sky, sandy ground and water where
 
   // The plane's centre (deep water) projects onto water; the middle of the near side wall (the
   // ground's slab below the bed) onto sand.
-  const liquid::SimulationSetup& setup = node.simulation().setup();
+  const liquid::SimulationSetup& setup = simulation_of(node).setup();
   const std::vector<float> density = node.read_density_ratio();
   const glm::ivec2 n(setup.grid_cells.x, setup.grid_cells.y);
   const float centre_depth = setup.rest_depth * density[size_t(n.y / 2) * size_t(n.x) + size_t(n.x / 2)];
@@ -295,7 +295,7 @@ TEST_CASE("2D view golden: a wave, a droplet, a thin sheet, obstacles and partic
     ] })",
                                                   "view2d_golden.json");
   liquid::LiquidNode node(context, scene);
-  const float h = node.simulation().setup().cell_size;
+  const float h = simulation_of(node).setup().cell_size;
   // A wave piled up on the left, slightly compressed at depth, a droplet and a sheet 1.5 cells thick.
   const glm::vec2 drop(0.36f, 0.46f), sheet_a(0.40f, 0.36f), sheet_b(0.50f, 0.41f);
   set_density(node, [&](glm::vec2 p) {
@@ -364,7 +364,7 @@ TEST_CASE("height-field golden: waves around a dry island over a sandy bed", "[g
   });
   liquid::HeightFieldPass pass(context, node);
   const liquid::RenderSettings settings{.width = k_width, .height = k_height, .fxaa = false};
-  const liquid::CameraView camera = liquid::default_height_field_camera(node.scene(), node.simulation().setup());
+  const liquid::CameraView camera = liquid::default_height_field_camera(node.scene(), simulation_of(node).setup());
   const Rgba8Image image =
       render(node, [&](auto& graph, const auto& images) { return pass.add_to(graph, images, settings, camera); });
 

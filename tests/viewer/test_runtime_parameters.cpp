@@ -56,7 +56,7 @@ TEST_CASE("runtime parameters change a running node's next steps and refuse bad 
 TEST_CASE("every end of the viewer's slider ranges runs stable at dam_break_2d's step", "[gpu][liquid][viewer]") {
   liquid::LiquidNode node(test::gpu(), test::shipped_scene("dam_break_2d"));
   const liquid::LiquidNode::RuntimeParameters start = node.runtime_parameters();
-  const liquid::SimulationSetup& setup = node.simulation().setup();
+  const liquid::SimulationSetup& setup = simulation_of(node).setup();
   const liquid::RuntimeParameterRange range = node.runtime_parameter_range(start);
   INFO("|g| <= " << range.max_gravity << " m/s^2, k in [" << range.min_stiffness << ", " << range.max_stiffness << "]");
   CHECK(range.max_gravity < 30.0f);  // the old slider's end

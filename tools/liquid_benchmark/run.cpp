@@ -149,7 +149,7 @@ Result run_configuration(engine::vk::Context& context, const Configuration& c, c
   for (int i = 0; i < o.warmup; ++i) bench.frame();
   for (int i = 0; i < c.timed_frames; ++i) record_frame(r, bench.frame());
   r.active_particles = bench.node.active_particles();
-  if (bench.node.dimension() == 3) r.grid_path = liquid::grid_path_name(bench.node.simulation().grid_layout().path);
+  if (bench.node.dimension() == 3) r.grid_path = liquid::grid_path_name(simulation_of(bench.node).grid_layout().path);
   r.stability = check_stability(bench.node);
   r.total_s = seconds_since(start);
   return r;

@@ -54,7 +54,7 @@ void dry_run(const RunSettings& settings, engine::vk::Context& context, liquid::
              std::chrono::steady_clock::time_point process_start) {
   const auto probe_begin = std::chrono::steady_clock::now();
   const FramePlan& plan = settings.plan;
-  const liquid::SimulationSetup& s = node.simulation().setup();
+  const liquid::SimulationSetup& s = simulation_of(node).setup();
   std::printf("scene %s (from %s%s):\n%s\n", node.scene().name.c_str(), settings.scene_source.c_str(),
               settings.overrides.empty() ? "" : ", with --set", settings.scene_document.c_str());
   std::printf("setup: %dD, %d particles (capacity %d), grid %dx%dx%d, cell %.4g m, dt %.4g s\n", s.dimension,

@@ -3,7 +3,7 @@
 // summary, and on request particles (PLY), grids (OpenVDB), a video and checkpoints to resume
 // from. It is a host like any engine: it builds its render graph through the liquid module's
 // public API (LiquidNode, LiquidRenderer); only its dry run and summary read the derived setup
-// (LiquidNode::simulation()). The pieces live in tools/liquid_capture/.
+// (simulation_of(node)). The pieces live in tools/liquid_capture/.
 #include "engine/io/atomic_file.h"
 #include "engine/vk/context.h"
 #include "liquid/node.h"
@@ -251,7 +251,7 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
       video->add(engine::vk::read_png(settings.folder / settings.frames.name(f)));
   }
 
-  const liquid::SimulationSetup& s = node.simulation().setup();
+  const liquid::SimulationSetup& s = simulation_of(node).setup();
   std::printf("liquid_capture: %s, %dD, %d particles (capacity %d), grid %dx%dx%d, dt %.3g s, %d steps per frame "
               "(%.1f simulated frames/s), frames %d to %d, %ux%u, device %s%s\n",
               scene.name.c_str(), s.dimension, s.initial_particles, s.capacity, s.grid_cells.x, s.grid_cells.y,

@@ -66,7 +66,7 @@ int run(const std::string& scene_path, int steps, double seconds, int report_eve
   node_options.active_region = !whole_grid;
   node_options.log = tools::stdout_log();
   liquid::LiquidNode node(context, scene, node_options);
-  const auto& s = node.simulation().setup();
+  const auto& s = simulation_of(node).setup();
   std::printf("scene %s: %dD, %d particles (capacity %d), grid %dx%dx%d, h = %.4g m, dt = %.3g s%s, k = %.4g, "
               "gamma = %.3g, rho0 = %.5g kg/m^3\n",
               scene.name.c_str(), s.dimension, s.initial_particles, s.capacity, s.grid_cells.x, s.grid_cells.y,

@@ -103,7 +103,7 @@ Run run_scene(engine::vk::Context& context, const Options& o, const liquid::Scen
   liquid::LiquidOptions node_options;
   node_options.grid_path = tools::grid_path_from_flag(o.grid_path);
   liquid::LiquidNode node(context, scene, node_options);
-  run.setup = node.simulation().setup();
+  run.setup = simulation_of(node).setup();
   tools::FrameLoop loop(context);
   const auto start = std::chrono::steady_clock::now();
   const int total = int(std::ceil(seconds / double(run.setup.time_step) - 1e-6));

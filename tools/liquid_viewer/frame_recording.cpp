@@ -20,14 +20,14 @@ int Viewer::steps_for_frame(double wall_seconds) {
     return steps;
   }
   if (settings_.pacing == Pacing::FixedSteps) return settings_.steps_per_frame;
-  const int steps = clock_.steps(wall_seconds, session_->node().simulation().setup().time_step, settings_.max_steps_per_frame);
+  const int steps = clock_.steps(wall_seconds, simulation_of(session_->node()).setup().time_step, settings_.max_steps_per_frame);
   stats_.lag = clock_.lag();
   return steps;
 }
 
 void Viewer::apply_mouse(int steps) {
   liquid::LiquidNode& node = session_->node();
-  const float dt = node.simulation().setup().time_step;
+  const float dt = simulation_of(node).setup().time_step;
   const float frame_seconds = float(steps) * dt;
   const Interaction in = mouse_.frame(session_->mapping(), frame_seconds);
   node.set_brushes(in.brushes);
@@ -49,7 +49,7 @@ void Viewer::apply_mouse(int steps) {
     glm::vec3 velocity(0.0f);
     if (frame_seconds > 0.0f) velocity = (in.obstacle->target - center) / frame_seconds;
     // At most half a cell per step, so the obstacle pushes the liquid instead of jumping through it.
-    const float cap = 0.5f * node.simulation().setup().cell_size / dt;
+    const float cap = 0.5f * simulation_of(node).setup().cell_size / dt;
     if (glm::length(velocity) > cap) velocity *= cap / glm::length(velocity);
     node.set_obstacle_pose(in.obstacle->index, center, velocity);
   }

@@ -30,7 +30,7 @@ void live_parameters(liquid::LiquidNode& node) {
   }
   // The range bounds |g|, not each component: a diagonal past it is shortened to it.
   if (const float length = glm::length(p.gravity); length > gmax) p.gravity *= gmax / length;
-  const bool per_second = node.simulation().setup().pic_ratio_reference_step > 0.0f;
+  const bool per_second = simulation_of(node).setup().pic_ratio_reference_step > 0.0f;
   changed |= ImGui::SliderFloat(per_second ? "PIC ratio (per reference step)" : "PIC ratio", &p.pic_ratio,
                                 range.min_pic_ratio, range.max_pic_ratio, "%.3f", clamp);
   changed |= ImGui::SliderFloat("stiffness k", &p.stiffness, range.min_stiffness, range.max_stiffness, "%.1f",

@@ -26,7 +26,7 @@ void Viewer::write_report(const std::filesystem::path& path) {
   r["frames"] = drawn_frames_;
   r["steps"] = node.step_count();
   r["time"] = node.time();
-  if (node.dimension() == 3) r["grid_path"] = liquid::grid_path_name(node.simulation().grid_layout().path);
+  if (node.dimension() == 3) r["grid_path"] = liquid::grid_path_name(simulation_of(node).grid_layout().path);
   r["width"] = swapchain_->extent().width;
   r["height"] = swapchain_->extent().height;
   r["swapchain_recreations"] = swapchain_->recreations();

@@ -83,7 +83,7 @@ ViewMapping Session::mapping() const {
   ViewMapping m;
   m.dimension = node_->dimension();
   m.size = {float(view_.width), float(view_.height)};
-  const liquid::SimulationSetup& setup = node_->simulation().setup();
+  const liquid::SimulationSetup& setup = simulation_of(*node_).setup();
   m.domain = setup.domain;
   m.height_field = setup.shallow_water;
   m.water_level = setup.rest_depth;
@@ -98,8 +98,8 @@ ViewMapping Session::mapping() const {
 }
 
 std::optional<glm::vec3> Session::surface_hit(glm::vec3 origin, glm::vec3 direction) {
-  if (node_->simulation().setup().shallow_water) return height_field_hit(origin, direction);
-  const liquid::SimulationSetup& s = node_->simulation().setup();
+  if (simulation_of(*node_).setup().shallow_water) return height_field_hit(origin, direction);
+  const liquid::SimulationSetup& s = simulation_of(*node_).setup();
   const glm::vec3 domain = s.domain;
   // The ray's stretch inside the domain box (slab test).
   float t0 = 0.0f, t1 = 1e30f;
@@ -127,7 +127,7 @@ std::optional<glm::vec3> Session::surface_hit(glm::vec3 origin, glm::vec3 direct
 }
 
 std::optional<glm::vec3> Session::height_field_hit(glm::vec3 origin, glm::vec3 direction) {
-  const liquid::SimulationSetup& s = node_->simulation().setup();
+  const liquid::SimulationSetup& s = simulation_of(*node_).setup();
   const glm::ivec2 n(s.grid_cells.x, s.grid_cells.y);
   const std::vector<float> ratio = node_->read_density_ratio();
   if (ratio.size() < size_t(n.x) * size_t(n.y)) return std::nullopt;

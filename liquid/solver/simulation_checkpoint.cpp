@@ -1,0 +1,88 @@
+// Simulation's checkpoints: the particle and body textures downloaded with the clock and the host's
+// inputs, each value checked before a checkpoint is restored.
+#include "engine/graph/transfer.h"
+#include "liquid/scene/format.h"
+#include "liquid/solver/bodies.h"
+#include "liquid/solver/simulation.h"
+#include "liquid/solver/texels.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace liquid {
+
+Checkpoint Simulation::save_checkpoint() {
+  Checkpoint c;
+  c.step = step_;
+  c.time = time_;
+  c.time_step = time_step_;
+  c.active = active_;
+  host_.save(c);
+  const size_t texels = size_t(setup_.particle_texture.x) * setup_.particle_texture.y;
+  c.positions = texels_as<glm::vec4>(engine::graph::download_image(context_, state_->positions[state_->current]), texels);
+  c.velocities =
+      texels_as<glm::vec4>(engine::graph::download_image(context_, state_->velocities[state_->current]), texels);
+  engine::vk::Image& bodies = state_->bodies[state_->body_current];
+  c.bodies = texels_as<glm::vec4>(engine::graph::download_image(context_, bodies),
+                                  size_t(bodies.desc().width) * bodies.desc().height);
+  return c;
+}
+
+// Every value a checkpoint carries within what a run can reach, so a damaged or edited one is
+// refused naming the value rather than run (a NaN position used to surface as "simulation
+// unstable" steps later).
+void Simulation::check_checkpoint_values(const Checkpoint& c) const {
+  const auto refuse = [](const std::string& what) { throw std::invalid_argument("liquid: the checkpoint's " + what); };
+  const auto finite = [](glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+  if (c.step < 0) refuse("step count is negative (" + std::to_string(c.step) + ")");
+  if (!(std::isfinite(c.time) && c.time >= 0.0)) refuse("time is not a finite time >= 0 s");
+  if (!(std::isfinite(c.time_step) && c.time_step >= 0.0 && c.time_step <= double(setup_.time_step) * (1.0 + 1e-6)))
+    refuse("time step is not in [0, " + format_number(setup_.time_step) + "] s");
+  for (size_t e = 0; e < c.emitted.size(); ++e)
+    if (c.emitted[e] < 0 || c.emitted[e] > scene_.emitters[e].capacity)
+      refuse("emitter " + std::to_string(e) + " has added " + std::to_string(c.emitted[e]) + " particles, outside [0, " +
+             std::to_string(scene_.emitters[e].capacity) + "]");
+  for (size_t i = 0; i < c.poses.size(); ++i)
+    if (!finite(c.poses[i].center) || !finite(c.poses[i].velocity) || !std::isfinite(c.poses[i].since))
+      refuse("obstacle " + std::to_string(i) + " has a non-finite pose");
+  for (size_t i = 0; i < c.bodies.size(); ++i)
+    if (!finite(glm::vec3(c.bodies[i])) || !std::isfinite(c.bodies[i].w))
+      refuse("body state holds a non-finite value (texel " + std::to_string(i) + ")");
+  for (int i = 0; i < c.active; ++i) {
+    const glm::vec4 p = c.positions[size_t(i)], v = c.velocities[size_t(i)];
+    if (!finite(glm::vec3(p)) || !finite(glm::vec3(v)))
+      refuse("particle " + std::to_string(i) + " has a non-finite position or velocity");
+    for (int a = 0; a < setup_.dimension; ++a)
+      if (p[a] < 0.0f || p[a] > setup_.domain[a])
+        refuse("particle " + std::to_string(i) + " lies outside the domain (" + format_number(p[a]) + " m on axis " +
+               std::to_string(a) + ")");
+  }
+}
+
+void Simulation::restore_checkpoint(const Checkpoint& c) {
+  const size_t texels = size_t(setup_.particle_texture.x) * setup_.particle_texture.y;
+  if (c.active < 0 || c.active > setup_.capacity)
+    throw std::invalid_argument("liquid: the checkpoint holds " + std::to_string(c.active) +
+                                " active particles, outside the scene's capacity of 0 to " + std::to_string(setup_.capacity));
+  const engine::vk::ImageDesc& body_desc = state_->bodies[0].desc();
+  if (c.positions.size() != texels || c.velocities.size() != texels || c.emitted.size() != scene_.emitters.size() ||
+      c.poses.size() != scene_.obstacles.size() || c.bodies.size() != size_t(body_desc.width) * body_desc.height)
+    throw std::invalid_argument("liquid: the checkpoint does not match this scene (" + std::to_string(c.positions.size()) +
+                                " particle texels, " + std::to_string(c.emitted.size()) + " emitters, " +
+                                std::to_string(c.poses.size()) + " obstacles; the scene has " + std::to_string(texels) +
+                                ", " + std::to_string(scene_.emitters.size()) + ", " + std::to_string(scene_.obstacles.size()) + ")");
+  check_checkpoint_values(c);
+  engine::graph::upload_image(context_, state_->positions[state_->current], std::as_bytes(std::span(c.positions)));
+  engine::graph::upload_image(context_, state_->velocities[state_->current], std::as_bytes(std::span(c.velocities)));
+  engine::graph::upload_image(context_, state_->bodies[state_->body_current], std::as_bytes(std::span(c.bodies)));
+  bodies_ = decode_bodies(scene_, setup_.dimension, c.bodies);
+  for (BodyReadback& r : body_readbacks_) r.readback = {};
+  step_ = c.step;
+  time_ = c.time;
+  time_step_ = c.time_step > 0.0 ? c.time_step : double(setup_.time_step);
+  active_ = c.active;
+  host_.restore(c);
+}
+
+}  // namespace liquid
