@@ -221,11 +221,7 @@ TEST_CASE("a host's own device is adopted, not owned, and runs the node with zer
     engine::graph::RenderGraph graph(&context);
     engine::vk::CommandBuffer cmd(context);
     for (int frame = 0; frame < 3; ++frame) {
-      graph.reset();
-      node.add_to(graph, 5);
-      graph.compile();
-      graph.execute(cmd.begin());
-      cmd.submit_and_wait();
+      test::run_frame(node, graph, cmd, 5);
     }
     const liquid::Diagnostics d = node.diagnose();
     CHECK(d.active_particles == node.simulation().setup().initial_particles);
@@ -1154,11 +1150,7 @@ TEST_CASE("a host's own mesh, from its interleaved vertex buffer, is an obstacle
     // Each frame, before add_to(): where it is, how fast its centre moves, and its own turn and scale.
     node.set_obstacle_pose(boat, center, velocity);
     node.set_mesh_transform(boat, rotation, 1.0f);
-    graph.reset();
-    node.add_to(graph, node.substeps());
-    graph.compile();
-    graph.execute(cmd.begin());
-    cmd.submit_and_wait();
+    test::run_frame(node, graph, cmd, node.substeps());
   }
   // Moved every step: its field made again every step (resampled, or voxelized if it has no reference).
   CHECK(node.simulation().mesh_field()->voxelizations() == 4 * node.substeps());
