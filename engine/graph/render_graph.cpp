@@ -2,6 +2,7 @@
 
 #include "engine/vk/context.h"
 #include "engine/vk/vk_check.h"
+#include "engine/vk/vk_helpers.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -271,18 +272,7 @@ void RenderGraph::copy_out_timings(VkCommandBuffer cmd, uint32_t queries) {
   timing_results_.flush();
   vkCmdCopyQueryPoolResults(cmd, query_pool_, 0, queries, timing_results_.handle(), 0, 2 * sizeof(uint64_t),
                             VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WITH_AVAILABILITY_BIT | VK_QUERY_RESULT_WAIT_BIT);
-  VkBufferMemoryBarrier2 to_host{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
-  to_host.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
-  to_host.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-  to_host.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-  to_host.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-  to_host.srcQueueFamilyIndex = to_host.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  to_host.buffer = timing_results_.handle();
-  to_host.size = VK_WHOLE_SIZE;
-  VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-  dependency.bufferMemoryBarrierCount = 1;
-  dependency.pBufferMemoryBarriers = &to_host;
-  vkCmdPipelineBarrier2(cmd, &dependency);
+  vk::cmd_copy_to_host_barrier(cmd, timing_results_.handle());
 }
 
 void RenderGraph::execute(VkCommandBuffer cmd) {
@@ -305,26 +295,10 @@ void RenderGraph::execute(VkCommandBuffer cmd) {
     // Barriers planned by compile(), in one vkCmdPipelineBarrier2.
     std::vector<VkImageMemoryBarrier2> barriers;
     if (pass.name != dropped_pass_)
-      for (const BarrierPlan& b : pp.barriers) {
-        vk::Image& image = *resources_[b.resource].image;
-        VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-        barrier.srcStageMask = b.src_stages;
-        barrier.srcAccessMask = b.src_access;
-        barrier.dstStageMask = b.dst_stages;
-        barrier.dstAccessMask = b.dst_access;
-        barrier.oldLayout = b.old_layout;
-        barrier.newLayout = b.new_layout;
-        barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-        barrier.image = image.handle();
-        barrier.subresourceRange = image.full_range();
-        barriers.push_back(barrier);
-      }
-    if (!barriers.empty()) {
-      VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-      dependency.imageMemoryBarrierCount = static_cast<uint32_t>(barriers.size());
-      dependency.pImageMemoryBarriers = barriers.data();
-      vkCmdPipelineBarrier2(cmd, &dependency);
-    }
+      for (const BarrierPlan& b : pp.barriers)
+        barriers.push_back(vk::image_barrier(*resources_[b.resource].image, b.src_stages, b.src_access, b.old_layout,
+                                             b.dst_stages, b.dst_access, b.new_layout));
+    if (!barriers.empty()) vk::cmd_image_barriers(cmd, barriers);
 
     // Dynamic rendering on the declared attachments (layered for 3D images and arrays).
     const bool renders = !pp.colors.empty() || pp.depth.has_value();

@@ -2,6 +2,7 @@
 
 #include "engine/vk/context.h"
 #include "engine/vk/vk_check.h"
+#include "engine/vk/vk_helpers.h"
 
 #include <stdexcept>
 
@@ -20,25 +21,20 @@ Buffer::Buffer(Context& context, VkDeviceSize size, VkBufferUsageFlags usage, Me
   objects_->buffer = {device, buffer, vkDestroyBuffer};
   VkMemoryRequirements requirements{};
   vkGetBufferMemoryRequirements(device, buffer, &requirements);
-  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  alloc.allocationSize = requirements.size;
+  uint32_t memory_type = 0;
   if (memory == MemoryUsage::HostVisible) {
     try {
-      alloc.memoryTypeIndex = context.find_memory_type(
-          requirements.memoryTypeBits,
-          VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+      memory_type = context.find_memory_type(
+          requirements.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
     } catch (const std::runtime_error&) {
-      alloc.memoryTypeIndex =
-          context.find_memory_type(requirements.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT);
+      memory_type = context.find_memory_type(requirements.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT);
       coherent_ = false;
     }
   } else {
-    alloc.memoryTypeIndex =
-        context.find_memory_type(requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    memory_type = context.find_memory_type(requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
   }
-  VkDeviceMemory device_memory = VK_NULL_HANDLE;
-  VK_CHECK(vkAllocateMemory(device, &alloc, nullptr, &device_memory));
-  objects_->memory = {device, device_memory, vkFreeMemory};
+  objects_->memory = allocate_memory(device, requirements.size, memory_type);
+  const VkDeviceMemory device_memory = objects_->memory.get();
   VK_CHECK(vkBindBufferMemory(device, buffer, device_memory, 0));
   if (memory == MemoryUsage::HostVisible) {
     void* mapped = nullptr;

@@ -2,6 +2,7 @@
 
 #include "engine/vk/context.h"
 #include "engine/vk/vk_check.h"
+#include "engine/vk/vk_helpers.h"
 
 #include <cstdint>
 
@@ -14,11 +15,7 @@ CommandBuffer::CommandBuffer(Context& context) : context_(context) {
     fence_ = spare.fence;
     return;
   }
-  VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  alloc.commandPool = context.command_pool();
-  alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  alloc.commandBufferCount = 1;
-  VK_CHECK(vkAllocateCommandBuffers(context.device(), &alloc, &cmd_));
+  cmd_ = allocate_command_buffer(context);
   VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
   const VkResult result = vkCreateFence(context.device(), &fence, nullptr, &fence_);
   if (result != VK_SUCCESS) {
@@ -34,10 +31,7 @@ CommandBuffer::~CommandBuffer() {
 
 VkCommandBuffer CommandBuffer::begin() {
   wait();
-  VK_CHECK(vkResetCommandBuffer(cmd_, 0));
-  VkCommandBufferBeginInfo info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-  info.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  VK_CHECK(vkBeginCommandBuffer(cmd_, &info));
+  begin_one_time(cmd_);
   return cmd_;
 }
 

@@ -2,6 +2,7 @@
 
 #include "engine/vk/context.h"
 #include "engine/vk/vk_check.h"
+#include "engine/vk/vk_helpers.h"
 
 #include <stdexcept>
 
@@ -63,14 +64,10 @@ Image::Image(Context& context, const ImageDesc& desc, const std::string& name)
   objects_->image = {device, image, vkDestroyImage};
   VkMemoryRequirements requirements{};
   vkGetImageMemoryRequirements(device, image, &requirements);
-  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  alloc.allocationSize = requirements.size;
-  alloc.memoryTypeIndex =
-      context.find_memory_type(requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  VkDeviceMemory memory = VK_NULL_HANDLE;
-  VK_CHECK(vkAllocateMemory(device, &alloc, nullptr, &memory));
-  objects_->memory = {device, memory, vkFreeMemory};
-  VK_CHECK(vkBindImageMemory(device, image, memory, 0));
+  objects_->memory = allocate_memory(
+      device, requirements.size,
+      context.find_memory_type(requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT));
+  VK_CHECK(vkBindImageMemory(device, image, objects_->memory.get(), 0));
   create_views(context);
   context.set_name(VK_OBJECT_TYPE_IMAGE, reinterpret_cast<uint64_t>(image), name);
 }

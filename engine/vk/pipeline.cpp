@@ -45,6 +45,15 @@ VkPipelineColorBlendAttachmentState blend_state(BlendMode mode) {
   return state;
 }
 
+// A write of one descriptor of `type` at `binding`; the caller points it at the image or buffer.
+VkWriteDescriptorSet descriptor_write(uint32_t binding, VkDescriptorType type) {
+  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.dstBinding = binding;
+  write.descriptorCount = 1;
+  write.descriptorType = type;
+  return write;
+}
+
 }  // namespace
 
 GraphicsPipeline::GraphicsPipeline(Context& context, const GraphicsPipelineDesc& desc)
@@ -165,10 +174,7 @@ void GraphicsPipeline::bind(VkCommandBuffer cmd, uint32_t width, uint32_t height
 void GraphicsPipeline::push_image(VkCommandBuffer cmd, uint32_t binding, VkImageView view,
                                   VkSampler sampler) const {
   VkDescriptorImageInfo image{sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  write.dstBinding = binding;
-  write.descriptorCount = 1;
-  write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  VkWriteDescriptorSet write = descriptor_write(binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
   write.pImageInfo = &image;
   context_.get()->cmd_push_descriptor_set(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout(), 0, 1, &write);
 }
@@ -176,10 +182,7 @@ void GraphicsPipeline::push_image(VkCommandBuffer cmd, uint32_t binding, VkImage
 void GraphicsPipeline::push_uniform(VkCommandBuffer cmd, uint32_t binding, VkBuffer buffer,
                                     VkDeviceSize offset, VkDeviceSize size) const {
   VkDescriptorBufferInfo info{buffer, offset, size};
-  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  write.dstBinding = binding;
-  write.descriptorCount = 1;
-  write.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+  VkWriteDescriptorSet write = descriptor_write(binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
   write.pBufferInfo = &info;
   context_.get()->cmd_push_descriptor_set(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout(), 0, 1, &write);
 }

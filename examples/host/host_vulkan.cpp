@@ -147,6 +147,17 @@ uint32_t memory_type(VkPhysicalDevice physical_device, const VkMemoryRequirement
   throw std::runtime_error("no memory type for a host resource");
 }
 
+// Memory for `requirements` of the first type that has every one of `properties`.
+VkDeviceMemory allocate_memory(VkPhysicalDevice physical_device, VkDevice device, const VkMemoryRequirements& requirements,
+                               VkMemoryPropertyFlags properties) {
+  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  alloc.allocationSize = requirements.size;
+  alloc.memoryTypeIndex = memory_type(physical_device, requirements, properties);
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  host_check(vkAllocateMemory(device, &alloc, nullptr, &memory), "vkAllocateMemory");
+  return memory;
+}
+
 }  // namespace
 
 HostImage::HostImage(VkPhysicalDevice physical_device, VkDevice device_, uint32_t width, uint32_t height,
@@ -165,11 +176,7 @@ HostImage::HostImage(VkPhysicalDevice physical_device, VkDevice device_, uint32_
   host_check(vkCreateImage(device, &info, nullptr, &image), "vkCreateImage");
   VkMemoryRequirements requirements{};
   vkGetImageMemoryRequirements(device, image, &requirements);
-  const uint32_t type = memory_type(physical_device, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  alloc.allocationSize = requirements.size;
-  alloc.memoryTypeIndex = type;
-  host_check(vkAllocateMemory(device, &alloc, nullptr, &memory), "vkAllocateMemory");
+  memory = allocate_memory(physical_device, device, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
   host_check(vkBindImageMemory(device, image, memory, 0), "vkBindImageMemory");
 }
 
@@ -188,11 +195,8 @@ HostBuffer::HostBuffer(VkPhysicalDevice physical_device, VkDevice device_, const
   host_check(vkCreateBuffer(device, &info, nullptr, &buffer), "vkCreateBuffer");
   VkMemoryRequirements requirements{};
   vkGetBufferMemoryRequirements(device, buffer, &requirements);
-  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  alloc.allocationSize = requirements.size;
-  alloc.memoryTypeIndex = memory_type(physical_device, requirements,
-                                      VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-  host_check(vkAllocateMemory(device, &alloc, nullptr, &memory), "vkAllocateMemory");
+  memory = allocate_memory(physical_device, device, requirements,
+                           VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
   host_check(vkBindBufferMemory(device, buffer, memory, 0), "vkBindBufferMemory");
   void* mapped = nullptr;
   host_check(vkMapMemory(device, memory, 0, size, 0, &mapped), "vkMapMemory");

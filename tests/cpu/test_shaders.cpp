@@ -80,6 +80,18 @@ std::map<std::string, uint32_t> member_layout(std::span<const uint32_t> spirv) {
   return out;
 }
 
+// Every member of `expected` ("Struct.member" -> offset or stride) is laid out so in `module`'s SPIR-V.
+void check_layout(const std::string& module, std::span<const uint32_t> spirv,
+                  const std::map<std::string, uint32_t>& expected) {
+  INFO(module);
+  const std::map<std::string, uint32_t> found = member_layout(spirv);
+  for (const auto& [member, offset] : expected) {
+    INFO(member);
+    REQUIRE(found.count(member) == 1);
+    CHECK(found.at(member) == offset);
+  }
+}
+
 std::map<std::string, uint32_t> expected_ids() {
   namespace id = liquid::specialization_id;
   std::map<std::string, uint32_t> ids{{"OBSTACLE_COUNT", id::obstacle_count},
@@ -169,15 +181,7 @@ TEST_CASE("the solver's uniform block has the same layout in C++ and in every sh
       {"particle 3D", liquid_shaders::particle_frag_3d}, {"splat 3D", liquid_shaders::splat_vert_3d},
       {"grid 3D atlas", liquid_shaders::grid_frag_3d_atlas}, {"particle 3D atlas", liquid_shaders::particle_frag_3d_atlas},
       {"splat 3D atlas", liquid_shaders::splat_vert_3d_atlas}, {"splat 3D geometry", liquid_shaders::splat_vert_3d_gs}};
-  for (const auto& [module, spirv] : modules) {
-    INFO(module);
-    const std::map<std::string, uint32_t> found = member_layout(spirv);
-    for (const auto& [member, offset] : expected) {
-      INFO(member);
-      REQUIRE(found.count(member) == 1);
-      CHECK(found.at(member) == offset);
-    }
-  }
+  for (const auto& [module, spirv] : modules) check_layout(module, spirv, expected);
 }
 
 TEST_CASE("the views' uniform and push-constant blocks have the same layout in C++ and GLSL", "[shaders]") {
@@ -216,13 +220,5 @@ TEST_CASE("the views' uniform and push-constant blocks have the same layout in C
       {"raymarch atlas", liquid_shaders::raymarch_frag_atlas}, {"occupancy atlas", liquid_shaders::occupancy_frag_atlas},
       {"height field", liquid_shaders::height_field_vert},   {"height field fragment", liquid_shaders::height_field_frag},
       {"2D view", liquid_shaders::view2d_frag},              {"2D particles", liquid_shaders::particles2d_vert}};
-  for (const auto& [module, members] : expected) {
-    INFO(module);
-    const std::map<std::string, uint32_t> found = member_layout(modules.at(module));
-    for (const auto& [member, offset] : members) {
-      INFO(member);
-      REQUIRE(found.count(member) == 1);
-      CHECK(found.at(member) == offset);
-    }
-  }
+  for (const auto& [module, members] : expected) check_layout(module, modules.at(module), members);
 }

@@ -32,6 +32,22 @@ inline liquid::Scene single_particle_scene(int dimension, glm::vec3 at) {
   return scene;
 }
 
+// `graph` reset, filled by `add` and run in one submission of `cmd`, waited for.
+template <class Add>
+void run_graph(engine::graph::RenderGraph& graph, engine::vk::CommandBuffer& cmd, Add add) {
+  graph.reset();
+  add();
+  graph.compile();
+  graph.execute(cmd.begin());
+  cmd.submit_and_wait();
+}
+
+// One frame of `steps` steps of `node` on `graph`, run in one submission of `cmd`.
+inline void run_frame(liquid::LiquidNode& node, engine::graph::RenderGraph& graph, engine::vk::CommandBuffer& cmd,
+                      int steps) {
+  run_graph(graph, cmd, [&] { node.add_to(graph, steps); });
+}
+
 // Runs `steps` steps in frames of the scene's substeps; returns the last diagnostics.
 inline liquid::Diagnostics run_steps(liquid::LiquidNode& node, int steps) {
   engine::vk::Context& context = node.context();
@@ -40,11 +56,7 @@ inline liquid::Diagnostics run_steps(liquid::LiquidNode& node, int steps) {
   int done = 0;
   while (done < steps) {
     const int n = std::min(node.substeps(), steps - done);
-    graph.reset();
-    node.add_to(graph, n);
-    graph.compile();
-    graph.execute(cmd.begin());
-    cmd.submit_and_wait();
+    run_frame(node, graph, cmd, n);
     done += n;
   }
   return node.diagnose();

@@ -418,11 +418,7 @@ TEST_CASE("a host reads the bodies one frame late without waiting, or now with a
   std::vector<liquid::BodyState> previous;
   double blocking_ms = 0.0;
   for (int frame = 0; frame < 6; ++frame) {
-    graph.reset();
-    node.add_to(graph, 3);
-    graph.compile();
-    graph.execute(cmd.begin());
-    cmd.submit_and_wait();
+    test::run_frame(node, graph, cmd, 3);
     const std::vector<liquid::BodyState> late = node.latest_bodies();
     const auto start = std::chrono::steady_clock::now();
     const std::vector<liquid::BodyState> now = node.read_bodies();

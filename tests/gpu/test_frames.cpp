@@ -73,6 +73,13 @@ double water_fraction(const Rgba8Image& image) {
   return double(count) / double(size_t(image.width) * image.height);
 }
 
+// `steps` steps of `node`, then its frame: water on more than 5% of it, and matching the golden `name`.
+void check_frame_golden(liquid::LiquidNode& node, int steps, const std::string& name) {
+  const Frame frame = step_and_render(node, steps);
+  CHECK(water_fraction(frame.color) > 0.05);
+  check_golden(frame.color, name);
+}
+
 }  // namespace
 
 // The 3D goldens hold on every 3D path (liquid/solver/grid_layout.h) with the same golden and tolerance:
@@ -121,9 +128,7 @@ TEMPLATE_TEST_CASE("frame golden: 3D sphere obstacle in the liquid, raymarched",
     "camera": { "position": [0.2, 0.4, 0.75], "target": [0.2, 0.06, 0.15], "fov_y_degrees": 45 } })",
                                                          "frame_golden_3d_obstacle.json"),
                           test::options_for(TestType::path));
-  const Frame frame = step_and_render(node, 40);
-  CHECK(water_fraction(frame.color) > 0.05);
-  check_golden(frame.color, "frame_obstacle_3d");
+  check_frame_golden(node, 40, "frame_obstacle_3d");
   REQUIRE_NO_VALIDATION_MESSAGES_ON(context);
 }
 
@@ -136,9 +141,7 @@ TEST_CASE("frame golden: 2D dam break with obstacles, 2D view with FXAA", "[gpu]
     "obstacles": [ { "shape": "sphere", "center": [0.6, 0.1], "radius": 0.07 },
                    { "shape": "box", "center": [0.85, 0.25], "half_extent": [0.06, 0.03] } ] })",
                                                          "frame_golden_2d.json"));
-  const Frame frame = step_and_render(node, 150);
-  CHECK(water_fraction(frame.color) > 0.05);
-  check_golden(frame.color, "frame_dam_break_2d");
+  check_frame_golden(node, 150, "frame_dam_break_2d");
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
@@ -151,9 +154,7 @@ TEST_CASE("frame golden: shallow water over a hill, height field with FXAA", "[g
     "fluid_blocks": [ { "min": [0.0, 0.0], "max": [0.5, 1.0] } ],
     "ground": [ { "center": [0.7, 0.5], "height": 0.06, "width": 0.1 } ] })",
                                                          "frame_golden_shallow_water.json"));
-  const Frame frame = step_and_render(node, 60);
-  CHECK(water_fraction(frame.color) > 0.05);
-  check_golden(frame.color, "frame_shallow_water");
+  check_frame_golden(node, 60, "frame_shallow_water");
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 

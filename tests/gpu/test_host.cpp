@@ -4,6 +4,7 @@
 #include "engine/graph/transfer.h"
 #include "engine/vk/buffer.h"
 #include "engine/vk/commands.h"
+#include "engine/vk/vk_helpers.h"
 #include "examples/host/host_vulkan.h"
 #include "liquid/renderer.h"
 #include "liquid/solver/simulation.h"
@@ -73,19 +74,10 @@ struct HostTargets {
 // Barrier from wherever `image` stands to `layout` for transfers.
 void to_transfer(VkCommandBuffer cmd, Image& image, VkImageLayout layout, VkAccessFlags2 access, bool keep) {
   const ImageSyncState& s = image.sync_state();
-  VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-  b.srcStageMask = s.write_stages | s.read_stages;
-  b.srcAccessMask = s.write_access;
-  b.dstStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
-  b.dstAccessMask = access;
-  b.oldLayout = keep ? s.layout : VK_IMAGE_LAYOUT_UNDEFINED;
-  b.newLayout = layout;
-  b.image = image.handle();
-  b.subresourceRange = image.full_range();
-  VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-  dependency.imageMemoryBarrierCount = 1;
-  dependency.pImageMemoryBarriers = &b;
-  vkCmdPipelineBarrier2(cmd, &dependency);
+  const VkImageMemoryBarrier2 b = engine::vk::image_barrier(
+      image, s.write_stages | s.read_stages, s.write_access, keep ? s.layout : VK_IMAGE_LAYOUT_UNDEFINED,
+      VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, access, layout);
+  engine::vk::cmd_image_barriers(cmd, {&b, 1});
 }
 
 // What the host keeps in its stencil (depth formats with one): the liquid must leave it as it was.
@@ -229,11 +221,7 @@ TEST_CASE("a host's own device is adopted, not owned, and runs the node with zer
     engine::graph::RenderGraph graph(&context);
     engine::vk::CommandBuffer cmd(context);
     for (int frame = 0; frame < 3; ++frame) {
-      graph.reset();
-      node.add_to(graph, 5);
-      graph.compile();
-      graph.execute(cmd.begin());
-      cmd.submit_and_wait();
+      test::run_frame(node, graph, cmd, 5);
     }
     const liquid::Diagnostics d = node.diagnose();
     CHECK(d.active_particles == simulation_of(node).setup().initial_particles);
@@ -1162,11 +1150,7 @@ TEST_CASE("a host's own mesh, from its interleaved vertex buffer, is an obstacle
     // Each frame, before add_to(): where it is, how fast its centre moves, and its own turn and scale.
     node.set_obstacle_pose(boat, center, velocity);
     node.set_mesh_transform(boat, rotation, 1.0f);
-    graph.reset();
-    node.add_to(graph, node.substeps());
-    graph.compile();
-    graph.execute(cmd.begin());
-    cmd.submit_and_wait();
+    test::run_frame(node, graph, cmd, node.substeps());
   }
   // Moved every step: its field made again every step (resampled, or voxelized if it has no reference).
   CHECK(simulation_of(node).mesh_field()->voxelizations() == 4 * node.substeps());

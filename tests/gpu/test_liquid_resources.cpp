@@ -41,6 +41,23 @@ liquid::Scene busy_small_3d() {
   return scene;
 }
 
+// How much the resident set grows (MiB) over `count` calls of `frame` after `warm_up` uncounted ones.
+template <class Frame>
+double resident_growth(int warm_up, int count, Frame frame) {
+  double before = 0.0;
+  for (int i = 0; i < warm_up + count; ++i) {
+    if (i == warm_up) before = test::resident_mib();
+    frame();
+  }
+  return test::resident_mib() - before;
+}
+
+// The resident set grew by less than `limit` MiB over the run (`over` says what it did).
+void check_growth(double growth, const char* over, double limit) {
+  INFO("resident set grew by " << growth << " MiB over " << over);
+  CHECK(growth < limit);
+}
+
 }  // namespace
 
 TEST_CASE("a long 3D run with obstacles, an emitter and a force brush does not grow host memory", "[gpu][liquid][resources]") {
@@ -54,8 +71,7 @@ TEST_CASE("a long 3D run with obstacles, an emitter and a force brush does not g
   test::run_steps(node, 300);
   const double growth = test::resident_mib() - before;
   // Before the fix this run grew by about 900 MiB; allocator noise is a few MiB.
-  INFO("resident set grew by " << growth << " MiB over 300 steps");
-  CHECK(growth < 48.0);
+  check_growth(growth, "300 steps", 48.0);
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
@@ -69,20 +85,12 @@ TEST_CASE("a long raymarched 3D capture does not grow host memory", "[gpu][liqui
   const liquid::CameraView camera = liquid::default_camera(node);
   engine::graph::RenderGraph graph(&context);
   engine::vk::CommandBuffer cmd(context);
-  double before = 0.0;
-  for (int frame = 0; frame < 270; ++frame) {
-    if (frame == 20) before = test::resident_mib();
-    graph.reset();
-    renderer.add_to(graph, node.add_to(graph, 1), camera);
-    graph.compile();
-    graph.execute(cmd.begin());
-    cmd.submit_and_wait();
-  }
-  const double growth = test::resident_mib() - before;
+  const double growth = resident_growth(20, 250, [&] {
+    test::run_graph(graph, cmd, [&] { renderer.add_to(graph, node.add_to(graph, 1), camera); });
+  });
   // With the bisection's count read from the view's uniform block this grew by about 2.7 MiB per
   // frame (some 670 MiB here).
-  INFO("resident set grew by " << growth << " MiB over 250 frames");
-  CHECK(growth < 24.0);
+  check_growth(growth, "250 frames", 24.0);
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
@@ -96,18 +104,10 @@ TEST_CASE("a long 2D run checked after every step does not grow host memory", "[
   liquid::LiquidNode node(context, test::shipped_scene("rest_pool_2d"));
   engine::graph::RenderGraph graph(&context);
   engine::vk::CommandBuffer cmd(context);
-  double before = 0.0;
-  for (int batch = 0; batch < 1050; ++batch) {
-    if (batch == 50) before = test::resident_mib();
-    graph.reset();
-    node.add_to(graph, 1);
-    graph.compile();
-    graph.execute(cmd.begin());
-    cmd.submit_and_wait();
+  const double growth = resident_growth(50, 1000, [&] {
+    test::run_frame(node, graph, cmd, 1);
     node.diagnose();
-  }
-  const double growth = test::resident_mib() - before;
-  INFO("resident set grew by " << growth << " MiB over 1000 steps and checks");
-  CHECK(growth < 4.0);
+  });
+  check_growth(growth, "1000 steps and checks", 4.0);
   REQUIRE_NO_VALIDATION_MESSAGES();
 }

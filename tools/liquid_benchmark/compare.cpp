@@ -81,27 +81,37 @@ void add_configuration(RunMedians& run, const std::string& name, std::map<std::s
   run.configurations[name] = std::move(measures);
 }
 
-RunMedians medians_of_reference(const json& document, const std::string& source) {
+// The run in `document` (a reference or results): its date and identity, then a configuration per
+// element of its list `key`, named by the element's "name" and measured by `measures_of(element, path)`.
+template <class MeasuresOf>
+RunMedians run_of(const json& document, const std::string& source, const std::string& key, MeasuresOf measures_of) {
   RunMedians run;
   run.source = source;
+  run.date = text_member(document, "date", source, "");
+  run.identity = identity_of(document, source);
+  const json& list = member(document, key, source, "");
+  if (!list.is_array()) malformed(source, key + " is not a list");
+  for (size_t i = 0; i < list.size(); ++i) {
+    const std::string path = key + "[" + std::to_string(i) + "]";
+    std::map<std::string, double> measures = measures_of(list[i], path);
+    add_configuration(run, text_member(list[i], "name", source, path), std::move(measures));
+  }
+  return run;
+}
+
+RunMedians medians_of_reference(const json& document, const std::string& source) {
   const json& format = member(document, "format", source, "");
   if (!format.is_number_integer() || format.get<int>() != k_reference_format)
     malformed(source, "reference format " + format.dump() + " is not " + std::to_string(k_reference_format) +
                           " (saved by another version of liquid_benchmark: save it again with --save-reference)");
-  run.date = text_member(document, "date", source, "");
-  run.identity = identity_of(document, source);
-  const json& list = member(document, "configurations", source, "");
-  if (!list.is_array()) malformed(source, "configurations is not a list");
-  for (size_t i = 0; i < list.size(); ++i) {
-    const std::string path = "configurations[" + std::to_string(i) + "]";
+  return run_of(document, source, "configurations", [&](const json& configuration, const std::string& path) {
     std::map<std::string, double> measures;
-    measures["frame"] = ms_value(member(list[i], "frame_ms", source, path), source, path + ".frame_ms");
-    const json& gpu = member(list[i], "gpu_ms", source, path);
+    measures["frame"] = ms_value(member(configuration, "frame_ms", source, path), source, path + ".frame_ms");
+    const json& gpu = member(configuration, "gpu_ms", source, path);
     if (!gpu.is_object()) malformed(source, path + ".gpu_ms is not an object");
     for (const auto& [pass, ms] : gpu.items()) measures[pass] = ms_value(ms, source, path + ".gpu_ms." + pass);
-    add_configuration(run, text_member(list[i], "name", source, path), std::move(measures));
-  }
-  return run;
+    return measures;
+  });
 }
 
 std::string format_ms(double ms) {
@@ -155,17 +165,9 @@ double round_to_round_change(const std::vector<double>& ms) {
 }  // namespace
 
 RunMedians medians_of_results(const json& document, const std::string& source) {
-  RunMedians run;
-  run.source = source;
   if (!document.is_object() || document.value("tool", "") != "liquid_benchmark")
     malformed(source, "not a liquid_benchmark JSON (no \"tool\": \"liquid_benchmark\")");
-  run.date = text_member(document, "date", source, "");
-  run.identity = identity_of(document, source);
-  const json& results = member(document, "results", source, "");
-  if (!results.is_array()) malformed(source, "results is not a list");
-  for (size_t i = 0; i < results.size(); ++i) {
-    const std::string path = "results[" + std::to_string(i) + "]";
-    const json& r = results[i];
+  return run_of(document, source, "results", [&](const json& r, const std::string& path) {
     std::map<std::string, double> measures;
     measures["frame"] =
         ms_value(member(member(r, "frame_wall_ms", source, path), "median", source, path + ".frame_wall_ms"), source,
@@ -176,9 +178,8 @@ RunMedians medians_of_results(const json& document, const std::string& source) {
       const std::string pass_path = path + ".gpu_ms_per_frame." + pass;
       measures[pass] = ms_value(member(stats, "median", source, pass_path), source, pass_path + ".median");
     }
-    add_configuration(run, text_member(r, "name", source, path), std::move(measures));
-  }
-  return run;
+    return measures;
+  });
 }
 
 RunMedians read_medians(const fs::path& path) {

@@ -3,17 +3,14 @@
 #include "engine/io/png.h"
 #include "engine/vk/context.h"
 #include "engine/vk/vk_check.h"
+#include "engine/vk/vk_helpers.h"
 
 #include <cstring>
 
 namespace viewer {
 
 FrameSlot::FrameSlot(engine::vk::Context& context) : graph(&context), context_(context) {
-  VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  alloc.commandPool = context.command_pool();
-  alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  alloc.commandBufferCount = 1;
-  VK_CHECK(vkAllocateCommandBuffers(context.device(), &alloc, &cmd));
+  cmd = engine::vk::allocate_command_buffer(context);
   VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
   fence_info.flags = VK_FENCE_CREATE_SIGNALED_BIT;
   VK_CHECK(vkCreateFence(context.device(), &fence_info, nullptr, &fence));
@@ -47,30 +44,16 @@ void FrameSlot::wait() {
 
 VkCommandBuffer FrameSlot::begin() {
   VK_CHECK(vkResetFences(context_.device(), 1, &fence));
-  VK_CHECK(vkResetCommandBuffer(cmd, 0));
-  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
+  engine::vk::begin_one_time(cmd);
   return cmd;
 }
 
 void transition(VkCommandBuffer cmd, engine::vk::Image& image, VkImageLayout layout, VkPipelineStageFlags2 stages,
                 VkAccessFlags2 access, bool writes) {
   engine::vk::ImageSyncState& state = image.sync_state();
-  VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-  barrier.srcStageMask = state.write_stages | state.read_stages;
-  barrier.srcAccessMask = state.write_access;
-  barrier.dstStageMask = stages;
-  barrier.dstAccessMask = access;
-  barrier.oldLayout = state.layout;
-  barrier.newLayout = layout;
-  barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  barrier.image = image.handle();
-  barrier.subresourceRange = image.full_range();
-  VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-  dependency.imageMemoryBarrierCount = 1;
-  dependency.pImageMemoryBarriers = &barrier;
-  vkCmdPipelineBarrier2(cmd, &dependency);
+  const VkImageMemoryBarrier2 barrier = engine::vk::image_barrier(
+      image, state.write_stages | state.read_stages, state.write_access, state.layout, stages, access, layout);
+  engine::vk::cmd_image_barriers(cmd, {&barrier, 1});
   state = writes ? engine::vk::ImageSyncState::after_write(layout, stages, access)
                  : engine::vk::ImageSyncState::after_read(layout, stages, access);
 }
@@ -91,18 +74,7 @@ Shot copy_to_buffer(engine::vk::Context& context, VkCommandBuffer cmd, engine::v
   region.imageExtent = {d.width, d.height, 1};
   vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, shot.buffer->handle(), 1, &region);
   // The host reads the buffer after the fence: a buffer barrier to HOST makes the copy visible.
-  VkBufferMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
-  barrier.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
-  barrier.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-  barrier.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-  barrier.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-  barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  barrier.buffer = shot.buffer->handle();
-  barrier.size = VK_WHOLE_SIZE;
-  VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-  dependency.bufferMemoryBarrierCount = 1;
-  dependency.pBufferMemoryBarriers = &barrier;
-  vkCmdPipelineBarrier2(cmd, &dependency);
+  engine::vk::cmd_copy_to_host_barrier(cmd, shot.buffer->handle());
   return shot;
 }
 
