@@ -46,11 +46,11 @@ void LiquidNode::set_placement(const Placement& placement) {
   const bool finite = std::isfinite(placement.scale) && std::isfinite(q.w) && std::isfinite(q.x) &&
                       std::isfinite(q.y) && std::isfinite(q.z) && std::isfinite(placement.translation.x) &&
                       std::isfinite(placement.translation.y) && std::isfinite(placement.translation.z);
-  if (!finite) throw std::invalid_argument("liquid: the placement has a non-finite value");
+  if (!finite) throw ArgumentError("liquid: the placement has a non-finite value");
   if (placement.scale <= 0.0f)
-    throw std::invalid_argument("liquid: the placement's scale " + std::to_string(placement.scale) + " is not positive");
+    throw ArgumentError("liquid: the placement's scale " + std::to_string(placement.scale) + " is not positive");
   if (std::abs(glm::length(q) - 1.0f) > 1e-3f)
-    throw std::invalid_argument("liquid: the placement's rotation is not a unit quaternion (length " +
+    throw ArgumentError("liquid: the placement's rotation is not a unit quaternion (length " +
                                 std::to_string(glm::length(q)) + ")");
   placement_ = placement;
   placement_.rotation = glm::normalize(q);

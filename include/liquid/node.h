@@ -39,8 +39,8 @@ Obstacle mesh_obstacle(std::span<const std::byte> vertex_bytes, size_t stride, s
 class LiquidNode {
  public:
   // Throws SceneError when the scene does not fit the device (grid or particle count past its
-  // limits), std::runtime_error when the device lacks a needed format feature or the forced 3D
-  // path's feature, and std::invalid_argument for a LIQUID_3D_PATH that names no path.
+  // limits), DeviceError when the device lacks a needed format feature or the forced 3D path's
+  // feature, and ArgumentError for a LIQUID_3D_PATH that names no path (liquid/error.h).
   LiquidNode(engine::vk::Context& context, const Scene& scene, const LiquidOptions& options = {});
   ~LiquidNode();
   LiquidNode(const LiquidNode&) = delete;
@@ -73,14 +73,14 @@ class LiquidNode {
   // returns the step. Without it, returns the fixed step.
   double adapt_time_step(const Diagnostics& d);
   // Sets the following steps' length directly (a host fitting a whole number of steps into its
-  // frame). Throws std::invalid_argument unless 0 < dt <= the scene's time_step and finite.
+  // frame). Throws ArgumentError unless 0 < dt <= the scene's time_step and finite.
   void set_time_step(double dt);
 
   // Where the liquid lies in the host's world (identity until set): what Frame::World positions,
   // velocities and brushes go through, and a compositing renderer's model when a HostView gives
   // none. Gravity stays the scene's, in the liquid's frame (a host tilting the tank and wanting its
   // world's gravity sets RuntimeParameters::gravity to glm::inverse(placement().rotation) * g: the
-  // physics stays in the liquid's own metres however large the host draws it). Throws std::invalid_argument for a non-finite value, a scale that is not
+  // physics stays in the liquid's own metres however large the host draws it). Throws ArgumentError for a non-finite value, a scale that is not
   // positive or a rotation that is not a unit quaternion (to 1e-3).
   void set_placement(const Placement& placement);
   const Placement& placement() const { return placement_; }
@@ -91,7 +91,7 @@ class LiquidNode {
   void set_brushes(std::vector<ForceBrush> brushes, Frame frame = Frame::Liquid);
   static int max_force_brushes();
   // The parameters a host may change while the node runs; they take effect from the next step.
-  // Throws std::invalid_argument on a non-finite gravity, a PIC ratio outside [0, 1] or a negative
+  // Throws ArgumentError on a non-finite gravity, a PIC ratio outside [0, 1] or a negative
   // stiffness. (The energy bound stays the scene's.)
   using RuntimeParameters = liquid::RuntimeParameters;
   RuntimeParameters runtime_parameters() const;
@@ -103,7 +103,7 @@ class LiquidNode {
   // `center`, replacing the scene's scripted motion. The set of obstacles and their shapes are
   // fixed when the node is created (the shaders are specialized for them).
   // `frame`: the frame `center` and `velocity` are given in, or the poses are reported in.
-  // Throws std::invalid_argument for a dynamic obstacle (the liquid moves it).
+  // Throws ArgumentError for a dynamic obstacle (the liquid moves it).
   void set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity, Frame frame = Frame::Liquid);
   // A mesh obstacle's own transform for the following steps (with set_obstacle_pose() for its
   // centre and velocity, once per frame for a host-driven mesh), in the liquid's frame. The mesh is
@@ -111,7 +111,7 @@ class LiquidNode {
   // surface moves at v + w x (p - center), w the turn from the rotation of the previous call (at an
   // earlier time) to this one, divided by the time between them, the shorter way round; held for
   // as long again, so a mesh the host stops turning stops stirring; zero for the first call. Throws
-  // std::out_of_range when obstacle `index` is not a mesh and std::invalid_argument for a dynamic
+  // ArgumentError when obstacle `index` is not a mesh, or is a dynamic
   // mesh (the liquid turns it), a scale that is not finite and > 0 or a zero or non-finite rotation.
   void set_mesh_transform(size_t index, glm::quat rotation, float scale);
   // The same with the angular velocity given (rad/s, the liquid's frame), held until the next call:
@@ -124,7 +124,7 @@ class LiquidNode {
   // Dynamic obstacles (rigid bodies the liquid moves; README, "Bodies that float"). Their state lives
   // on the GPU and is integrated there every step, so reading it is the host's choice of cost:
   // A force (N) and torque (N m) of the host's, through the body's centre, added every following
-  // step until changed (zero to stop). Throws std::invalid_argument unless obstacle `index` is
+  // step until changed (zero to stop). Throws ArgumentError unless obstacle `index` is
   // dynamic and the values finite.
   void set_body_force(size_t index, glm::vec3 force, glm::vec3 torque = glm::vec3(0.0f));
   // Blocking read (own submission; call when no frame of this node is in flight): the state after
@@ -163,7 +163,7 @@ class LiquidNode {
   // node is in flight.
   using Checkpoint = liquid::Checkpoint;
   Checkpoint save_checkpoint();
-  // Throws std::invalid_argument when the checkpoint's sizes (texture, emitters, obstacles) do not
+  // Throws ArgumentError when the checkpoint's sizes (texture, emitters, obstacles) do not
   // match this node's scene.
   void restore_checkpoint(const Checkpoint& checkpoint);
 

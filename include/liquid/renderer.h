@@ -102,7 +102,9 @@ class HeightFieldPass;
 
 class LiquidRenderer {
  public:
-  // Throws std::invalid_argument when the size exceeds the device's 2D image limit.
+  // Throws ArgumentError when the size exceeds the device's 2D image limit, UsageError for
+  // RenderSettings::composite with shallow water. Each add_to() below throws UsageError when it does
+  // not match how the renderer was made (composite or not, a 2D or 3D scene).
   LiquidRenderer(engine::vk::Context& context, const LiquidNode& node, const RenderSettings& settings);
   ~LiquidRenderer();
 
@@ -112,11 +114,11 @@ class LiquidRenderer {
   RenderOutputs add_to(engine::graph::RenderGraph& graph, const LiquidImages& images, const CameraView& camera,
                        const HostTargets& targets);
   // A 2D scene's liquid into a rectangle of the host's colour target (see HostPanel); `color` and
-  // `final` of the result are the target's new version. Throws std::invalid_argument for a
+  // `final` of the result are the target's new version. Throws ArgumentError for a
   // rectangle outside the target or a target of another format.
   RenderOutputs add_to(engine::graph::RenderGraph& graph, const LiquidImages& images, const HostPanel& panel);
   // The same from the host's own view (see HostView); the host draws its geometry with the same
-  // matrices. Throws std::invalid_argument for a viewport outside the targets.
+  // matrices. Throws ArgumentError for a viewport outside the targets.
   RenderOutputs add_to(engine::graph::RenderGraph& graph, const LiquidImages& images, const HostView& view,
                        const HostTargets& targets);
   const RenderSettings& settings() const { return settings_; }

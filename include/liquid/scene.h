@@ -3,6 +3,8 @@
 // mass and initial particles; the GPU side never sees JSON.
 #pragma once
 
+#include "liquid/error.h"
+
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -14,13 +16,6 @@
 #include <vector>
 
 namespace liquid {
-
-// Thrown for any problem in a scene file; what() names the file and the field, e.g.
-// "scenes/x.json: fluid_blocks[1].min: must lie inside the domain".
-class SceneError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 // What a scene file may hold, checked while it is read so that no input can make the loader spend
 // more than a fraction of a second or more than a few tens of MB (a scene is a few kB; these are

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "engine/graph/render_graph.h"
+#include "liquid/error.h"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -31,14 +32,8 @@ std::string grid_path_names(std::string_view separator, std::string_view last_se
 std::optional<GridPath> find_grid_path(std::string_view name);
 // "'<text>' is not a 3D path (geometry, vertex-layer or atlas)", for messages.
 std::string not_a_grid_path(std::string_view text);
-// Throws std::invalid_argument naming `where` (a flag or variable) and the valid names.
+// Throws ArgumentError naming `where` (a flag or variable) and the valid names.
 GridPath parse_grid_path(std::string_view text, std::string_view where);
-
-// An unstable run (NaN/Inf, or kinetic energy past the bound); what() names the step.
-class SimulationError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 // How a node is created for a host's frame loop.
 struct LiquidOptions {

@@ -26,7 +26,7 @@ std::string encode_ply(const ParticleSnapshot& particles, const PlyFrame& frame)
   static_assert(std::endian::native == std::endian::little, "binary_little_endian PLY is written as-is");
   const size_t count = particles.positions.size();
   if (particles.velocities.size() != count || frame.density.size() != count)
-    throw std::invalid_argument("encode_ply: " + std::to_string(count) + " positions but " +
+    throw ArgumentError("encode_ply: " + std::to_string(count) + " positions but " +
                                 std::to_string(particles.velocities.size()) + " velocities and " +
                                 std::to_string(frame.density.size()) + " densities");
   char time[64];

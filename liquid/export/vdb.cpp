@@ -1,5 +1,7 @@
 #include "liquid/export/vdb.h"
 
+#include "liquid/error.h"
+
 #include <openvdb/openvdb.h>
 
 #include <array>
@@ -40,7 +42,7 @@ bool looks_like_uuid(const std::string& text) {
 void stamp_content_uuid(const std::filesystem::path& path) {
   std::fstream file(path, std::ios::in | std::ios::out | std::ios::binary);
   std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-  if (!file.good() && !file.eof()) throw std::runtime_error("cannot read the file back");
+  if (!file.good() && !file.eof()) throw liquid::Error("cannot read the file back");
   if (bytes.size() < k_uuid_offset + k_uuid_length || !looks_like_uuid(bytes.substr(k_uuid_offset, k_uuid_length)))
     throw std::logic_error("the OpenVDB header has no UUID where this build expects it");
   std::array<uint64_t, 2> hash{0xcbf29ce484222325ull, 0x84222325cbf29ce4ull};
@@ -56,7 +58,7 @@ void stamp_content_uuid(const std::filesystem::path& path) {
   file.seekp(k_uuid_offset);
   file.write(uuid, k_uuid_length);
   file.close();
-  if (!file) throw std::runtime_error("cannot write the file's UUID");
+  if (!file) throw liquid::Error("cannot write the file's UUID");
 }
 
 }  // namespace
@@ -111,13 +113,13 @@ void write_vdb(const std::filesystem::path& path, const VolumeFrame& volume, con
   } catch (const std::exception& e) {
     std::error_code ignored;
     std::filesystem::remove(temporary, ignored);
-    throw std::runtime_error(path.string() + ": cannot write (" + e.what() + ")");
+    throw liquid::Error(path.string() + ": cannot write (" + e.what() + ")");
   }
   std::error_code error;
   std::filesystem::rename(temporary, path, error);
   if (error) {
     std::filesystem::remove(temporary, error);
-    throw std::runtime_error(path.string() + ": cannot rename into place");
+    throw liquid::Error(path.string() + ": cannot rename into place");
   }
 }
 
@@ -135,7 +137,7 @@ VdbContents read_vdb(const std::filesystem::path& path) {
     const auto density = openvdb::gridPtrCast<openvdb::FloatGrid>(file.readGrid("density"));
     const auto velocity = openvdb::gridPtrCast<openvdb::Vec3SGrid>(file.readGrid("velocity"));
     file.close();
-    if (!density || !velocity) throw std::runtime_error(path.string() + ": the density or velocity grid has the wrong type");
+    if (!density || !velocity) throw liquid::Error(path.string() + ": the density or velocity grid has the wrong type");
     out.voxel_size = density->voxelSize()[0];
     const openvdb::Vec3d zero = density->indexToWorld(openvdb::Vec3d(0.0));
     out.voxel_zero = {zero.x(), zero.y(), zero.z()};
@@ -144,7 +146,7 @@ VdbContents read_vdb(const std::filesystem::path& path) {
     for (auto v = velocity->cbeginValueOn(); v; ++v)
       out.velocity.push_back({{v.getCoord().x(), v.getCoord().y(), v.getCoord().z()}, {(*v).x(), (*v).y(), (*v).z()}});
   } catch (const openvdb::Exception& e) {
-    throw std::runtime_error(path.string() + ": " + e.what());
+    throw liquid::Error(path.string() + ": " + e.what());
   }
   return out;
 }

@@ -321,7 +321,7 @@ PressureLaw pressure_law(const Scene& scene) {
 double kernel_integral_cells(int dimension, double radius_cells) {
   if (dimension == 2) return k_pi * radius_cells * radius_cells / 4.0;
   if (dimension == 3) return 64.0 * k_pi * radius_cells * radius_cells * radius_cells / 315.0;
-  throw std::invalid_argument("kernel_integral_cells: dimension must be 2 or 3, got " + std::to_string(dimension));
+  throw ArgumentError("kernel_integral_cells: dimension must be 2 or 3, got " + std::to_string(dimension));
 }
 
 double splat_kernel_integral_cells(SplatMode mode, int dimension, double radius_cells) {

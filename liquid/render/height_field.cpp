@@ -33,7 +33,7 @@ constexpr glm::vec4 k_sky{0.70f, 0.79f, 0.89f, 1.0f};
 
 const LiquidNode& require_shallow_water(const LiquidNode& node) {
   if (node.dimension() != 2 || !node_setup(node).shallow_water)
-    throw std::invalid_argument("liquid: the height-field view needs a 2D shallow-water scene");
+    throw UsageError("liquid: the height-field view needs a 2D shallow-water scene");
   return node;
 }
 

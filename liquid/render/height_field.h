@@ -25,7 +25,7 @@ CameraView default_height_field_camera(const Scene& scene, const SimulationSetup
 // between its six triangles, so the vertex work (five surface lookups each) is done once per vertex.
 class HeightFieldPass {
  public:
-  // Throws std::invalid_argument when the node is not a 2D shallow-water simulation.
+  // Throws UsageError when the node is not a 2D shallow-water simulation.
   HeightFieldPass(engine::vk::Context& context, const LiquidNode& node);
 
   // Returns a new RGBA8_UNORM image of settings.width x settings.height.

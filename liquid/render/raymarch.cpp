@@ -159,7 +159,7 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
                                            const RenderSettings& settings, const RaymarchView& view_input,
                                            const HostTargets* targets) {
   if (bool(targets) != composite_)
-    throw std::logic_error(composite_ ? "liquid.raymarch: a compositing pass draws into host targets"
+    throw UsageError(composite_ ? "liquid.raymarch: a compositing pass draws into host targets"
                                       : "liquid.raymarch: host targets need a compositing pass");
   const SimulationSetup& setup = node_setup(node_);
   const engine::vk::UniformSlice solver = uniforms_.begin_frame();
@@ -171,12 +171,12 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
   if (viewport.extent.width == 0 || viewport.extent.height == 0 || viewport.offset.x < 0 || viewport.offset.y < 0 ||
       viewport.offset.x + viewport.extent.width > settings.width ||
       viewport.offset.y + viewport.extent.height > settings.height)
-    throw std::invalid_argument("liquid: the view's viewport " + std::to_string(viewport.extent.width) + "x" +
+    throw ArgumentError("liquid: the view's viewport " + std::to_string(viewport.extent.width) + "x" +
                                 std::to_string(viewport.extent.height) + " at (" + std::to_string(viewport.offset.x) +
                                 ", " + std::to_string(viewport.offset.y) + ") is not inside the " +
                                 std::to_string(settings.width) + "x" + std::to_string(settings.height) + " targets");
   if (view_input.reversed_z && !composite_)
-    throw std::logic_error("liquid.raymarch: reversed Z is for a host's targets; the renderer's own frame is forward");
+    throw UsageError("liquid.raymarch: reversed Z is for a host's targets; the renderer's own frame is forward");
   // Compositing: the pipeline for the host's colour and depth formats and depth convention, made once.
   const engine::vk::GraphicsPipeline* pipeline = &raymarch_;
   if (composite_) {

@@ -17,7 +17,7 @@ LiquidRenderer::LiquidRenderer(engine::vk::Context& context, const LiquidNode& n
     : node_(node), settings_(settings) {
   const uint32_t limit = context.limits().maxImageDimension2D;
   if (settings.width == 0 || settings.height == 0 || settings.width > limit || settings.height > limit)
-    throw std::invalid_argument("frame size " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+    throw ArgumentError("frame size " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
                                 " is outside the device's limit of 1.." + std::to_string(limit) + " pixels per side");
   const SimulationSetup& setup = node_setup(node);
   const ViewOutput output = settings.composite ? ViewOutput::HostTargets : ViewOutput::OwnFrame;
@@ -28,7 +28,7 @@ LiquidRenderer::LiquidRenderer(engine::vk::Context& context, const LiquidNode& n
   else
     view2d_ = std::make_unique<View2dPass>(context, node, output);
   if (settings.composite && height_field_)
-    throw std::invalid_argument("liquid: shallow water is not composited into host targets (3D and 2D liquids are)");
+    throw UsageError("liquid: shallow water is not composited into host targets (3D and 2D liquids are)");
   if (settings.fxaa.value_or(!settings.composite))
     fxaa_ = std::make_unique<engine::passes::FxaaPass>(context, k_color_format);
 }
@@ -48,20 +48,20 @@ RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const Li
 RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
                                      const HostPanel& panel) {
   if (!settings_.composite || !view2d_)
-    throw std::logic_error("liquid: a host panel needs a compositing renderer of a 2D scene");
+    throw UsageError("liquid: a host panel needs a compositing renderer of a 2D scene");
   const engine::vk::ImageDesc& d = graph.image_desc(panel.color);
   const VkRect2D r = panel.rect;
   if (d.kind != engine::vk::ImageKind::Image2D || d.format != k_color_format)
-    throw std::invalid_argument("liquid: the host's panel target '" + graph.image_name(panel.color) +
+    throw ArgumentError("liquid: the host's panel target '" + graph.image_name(panel.color) +
                                 "' must be a 2D R8G8B8A8_UNORM image");
   if (r.extent.width == 0 || r.extent.height == 0 || r.offset.x < 0 || r.offset.y < 0 ||
       r.offset.x + r.extent.width > d.width || r.offset.y + r.extent.height > d.height)
-    throw std::invalid_argument("liquid: the panel " + std::to_string(r.extent.width) + "x" +
+    throw ArgumentError("liquid: the panel " + std::to_string(r.extent.width) + "x" +
                                 std::to_string(r.extent.height) + " at (" + std::to_string(r.offset.x) + ", " +
                                 std::to_string(r.offset.y) + ") is not inside the host's target '" +
                                 graph.image_name(panel.color) + "'");
   if (fxaa_)
-    throw std::invalid_argument("liquid: FXAA is not run on a host panel (RenderSettings::fxaa = false)");
+    throw UsageError("liquid: FXAA is not run on a host panel (RenderSettings::fxaa = false)");
   RenderSettings frame = settings_;
   frame.width = d.width;
   frame.height = d.height;
@@ -79,17 +79,17 @@ VkFormat checked_target_format(const engine::graph::RenderGraph& graph, engine::
   const engine::vk::ImageDesc& d = graph.image_desc(image);
   const std::string target = std::string("liquid: the host's ") + what + " target '" + graph.image_name(image) + "'";
   if (d.kind != engine::vk::ImageKind::Image2D || d.width != settings.width || d.height != settings.height)
-    throw std::invalid_argument(target + " must be a " + std::to_string(settings.width) + "x" +
+    throw ArgumentError(target + " must be a " + std::to_string(settings.width) + "x" +
                                 std::to_string(settings.height) + " 2D image");
   if (d.samples != VK_SAMPLE_COUNT_1_BIT)
-    throw std::invalid_argument(target + " has " + std::to_string(int(d.samples)) +
+    throw ArgumentError(target + " has " + std::to_string(int(d.samples)) +
                                 " samples; composite into the resolved single-sample colour and depth");
   return d.format;
 }
 
 [[noreturn]] void refuse_format(const engine::graph::RenderGraph& graph, engine::graph::ImageHandle image,
                                 const char* what, const std::string& why) {
-  throw std::invalid_argument(std::string("liquid: the host's ") + what + " target '" + graph.image_name(image) +
+  throw ArgumentError(std::string("liquid: the host's ") + what + " target '" + graph.image_name(image) +
                               "' has format " + std::to_string(int(graph.image_desc(image).format)) + ", " + why);
 }
 
@@ -97,7 +97,7 @@ VkFormat checked_target_format(const engine::graph::RenderGraph& graph, engine::
 
 RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
                                      const HostView& view, const HostTargets& targets) {
-  if (!settings_.composite || !raymarch_) throw std::logic_error("liquid: add_to with host targets needs RenderSettings::composite");
+  if (!settings_.composite || !raymarch_) throw UsageError("liquid: add_to with host targets needs RenderSettings::composite");
   const VkFormat color_format = checked_target_format(graph, targets.color, "colour", settings_);
   if (!composite_output_encoding(color_format) ||
       !node_.context().format_supports(color_format, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT))
@@ -112,12 +112,12 @@ RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const Li
                   "a depth attachment on the device)");
   // FXAA works on display-referred colour: an HDR target is the host's to tone map first.
   if (fxaa_ && composite_output_encoding(color_format) == LIQUID_OUTPUT_HDR)
-    throw std::invalid_argument("liquid: FXAA into the host's HDR colour target '" + graph.image_name(targets.color) +
+    throw UsageError("liquid: FXAA into the host's HDR colour target '" + graph.image_name(targets.color) +
                                 "' would smooth radiance before its tone map; run anti-aliasing after it "
                                 "(RenderSettings::fxaa = false)");
   engine::vk::ImageDesc copy_desc = graph.image_desc(targets.color);
   if (fxaa_ && !(copy_desc.usage & VK_IMAGE_USAGE_TRANSFER_SRC_BIT))
-    throw std::invalid_argument("liquid: FXAA in the host's colour target '" + graph.image_name(targets.color) +
+    throw UsageError("liquid: FXAA in the host's colour target '" + graph.image_name(targets.color) +
                                 "' needs VK_IMAGE_USAGE_TRANSFER_SRC_BIT on it (or RenderSettings::fxaa = false)");
   const VkRect2D whole{{0, 0}, {settings_.width, settings_.height}};
   const glm::mat4 model = view.model.value_or(node_.placement().world_from_liquid());
@@ -141,7 +141,7 @@ RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const Li
 
 RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const LiquidImages& images,
                                      const CameraView& camera) {
-  if (settings_.composite) throw std::logic_error("liquid: a compositing renderer draws into host targets");
+  if (settings_.composite) throw UsageError("liquid: a compositing renderer draws into host targets");
   RenderOutputs out;
   if (raymarch_) {
     const RaymarchView own{view_projection(camera), false, {{0, 0}, {settings_.width, settings_.height}}};

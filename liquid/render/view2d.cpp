@@ -37,7 +37,7 @@ std::vector<int32_t> view2d_specialization(const LiquidNode& node, bool panel) {
 }
 
 const LiquidNode& require_2d(const LiquidNode& node) {
-  if (node.dimension() != 2) throw std::invalid_argument("liquid: the 2D view needs a two-dimensional scene");
+  if (node.dimension() != 2) throw UsageError("liquid: the 2D view needs a two-dimensional scene");
   return node;
 }
 

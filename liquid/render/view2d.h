@@ -31,7 +31,7 @@ View2dLayout fit_view2d(glm::vec2 domain, uint32_t width, uint32_t height);
 // Draws a 2D LiquidNode's density grid as liquid (and its particles when asked) into a new image.
 class View2dPass {
  public:
-  // Throws std::invalid_argument when the node is not two-dimensional. HostTargets: draw the
+  // Throws UsageError when the node is not two-dimensional. HostTargets: draw the
   // liquid alone with alpha into a host's rectangle (HostPanel) instead of a frame of its own.
   View2dPass(engine::vk::Context& context, const LiquidNode& node, ViewOutput output = ViewOutput::OwnFrame);
 

@@ -23,7 +23,7 @@ class ViewUniforms {
 
   // Starts the frame's region the first time a view of the node's newest frame is drawn (later
   // views of that frame share it); returns the solver block of the node's current state. Throws
-  // std::length_error past k_max_views_per_frame views of one frame.
+  // UsageError past k_max_views_per_frame views of one frame.
   engine::vk::UniformSlice begin_frame();
   // The view's own block for this frame.
   template <class T>

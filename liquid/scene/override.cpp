@@ -97,9 +97,9 @@ void apply(Json& doc, const SceneOverride& o) {
 SceneOverride parse_scene_override(const std::string& text) {
   const size_t equals = text.find('=');
   if (equals == std::string::npos || equals == 0)
-    throw std::invalid_argument("--set " + printable(text) + ": expected key=value (e.g. --set stiffness=20)");
+    throw ArgumentError("--set " + printable(text) + ": expected key=value (e.g. --set stiffness=20)");
   // A path that cannot name a field is a bad flag too, refused before any scene is read.
-  if (path_parts(text.substr(0, equals)).empty()) throw std::invalid_argument(not_a_field_path(text.substr(0, equals)));
+  if (path_parts(text.substr(0, equals)).empty()) throw ArgumentError(not_a_field_path(text.substr(0, equals)));
   return {text.substr(0, equals), text.substr(equals + 1)};
 }
 

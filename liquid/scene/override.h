@@ -17,7 +17,7 @@ struct SceneOverride {
   std::string value;  // JSON ("12", "[0.1, 0.2]", "true"); text that is not JSON is a string
 };
 
-// Splits "key=value"; throws std::invalid_argument naming the text when there is no key.
+// Splits "key=value"; throws ArgumentError naming the text when there is no key.
 SceneOverride parse_scene_override(const std::string& key_equals_value);
 
 // The scene document after the overrides, as JSON text: the file is read and checked as it is

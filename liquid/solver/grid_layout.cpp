@@ -48,7 +48,7 @@ std::string not_a_grid_path(std::string_view text) {
 
 GridPath parse_grid_path(std::string_view text, std::string_view where) {
   if (const std::optional<GridPath> path = find_grid_path(text)) return *path;
-  throw std::invalid_argument(std::string(where) + ": " + not_a_grid_path(text));
+  throw ArgumentError(std::string(where) + ": " + not_a_grid_path(text));
 }
 
 GridPath choose_grid_path(const GridPathSupport& support, std::optional<GridPath> requested) {
@@ -58,9 +58,9 @@ GridPath choose_grid_path(const GridPathSupport& support, std::optional<GridPath
     return GridPath::Atlas;
   }
   if (*requested == GridPath::GeometryShader && !support.geometry_shader)
-    throw std::runtime_error("the 3D path 'geometry' needs the device feature geometryShader, which is not enabled");
+    throw DeviceError("the 3D path 'geometry' needs the device feature geometryShader, which is not enabled");
   if (*requested == GridPath::VertexLayer && !support.vertex_layer_output)
-    throw std::runtime_error("the 3D path 'vertex-layer' needs the device feature shaderOutputLayer "
+    throw DeviceError("the 3D path 'vertex-layer' needs the device feature shaderOutputLayer "
                              "(gl_Layer from vertex shaders), which is not enabled");
   return *requested;
 }

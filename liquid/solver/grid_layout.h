@@ -32,7 +32,7 @@ struct GridPathSupport {
 };
 // `requested`, or (empty) the first the device supports of vertex-layer, geometry and atlas: the
 // vertex-layer path draws the fewest primitives, and the atlas needs nothing. Throws
-// std::runtime_error naming the missing feature when the requested path is not supported.
+// DeviceError naming the missing feature when the requested path is not supported.
 GridPath choose_grid_path(const GridPathSupport& support, std::optional<GridPath> requested);
 
 // The storage of one grid of `cells` (z = 1 in 2D). In the atlas, slice z is the tile

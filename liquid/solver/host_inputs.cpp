@@ -19,9 +19,9 @@ HostInputs::HostInputs(Scene& scene, const SimulationSetup& setup)
 
 void HostInputs::set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity, double now) {
   if (index >= pose_overrides_.size())
-    throw std::out_of_range("liquid: obstacle " + std::to_string(index) + " does not exist");
+    throw ArgumentError("liquid: obstacle " + std::to_string(index) + " does not exist");
   if (scene_.obstacles[index].dynamic)
-    throw std::invalid_argument("liquid: obstacle " + std::to_string(index) +
+    throw ArgumentError("liquid: obstacle " + std::to_string(index) +
                                 " is dynamic: the liquid moves it (set_body_force pushes it)");
   pose_overrides_[index] = PoseOverride{center, velocity, now};
 }
@@ -29,15 +29,15 @@ void HostInputs::set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 vel
 void HostInputs::set_mesh_transform(size_t index, glm::quat rotation, float scale,
                                     std::optional<glm::vec3> angular_velocity, double now) {
   if (index >= scene_.obstacles.size() || scene_.obstacles[index].shape != ObstacleShape::Mesh)
-    throw std::out_of_range("liquid: obstacle " + std::to_string(index) + " is not a mesh");
+    throw ArgumentError("liquid: obstacle " + std::to_string(index) + " is not a mesh");
   if (scene_.obstacles[index].dynamic)
-    throw std::invalid_argument("liquid: obstacle " + std::to_string(index) + " is a dynamic mesh: the liquid turns it");
-  if (!(scale > 0.0f && std::isfinite(scale))) throw std::invalid_argument("liquid: a mesh's scale must be finite and > 0");
+    throw ArgumentError("liquid: obstacle " + std::to_string(index) + " is a dynamic mesh: the liquid turns it");
+  if (!(scale > 0.0f && std::isfinite(scale))) throw ArgumentError("liquid: a mesh's scale must be finite and > 0");
   if (!(std::isfinite(glm::length(rotation)) && glm::length(rotation) > 0.0f))
-    throw std::invalid_argument("liquid: a mesh's rotation must be a finite, nonzero quaternion");
+    throw ArgumentError("liquid: a mesh's rotation must be a finite, nonzero quaternion");
   if (angular_velocity && !(std::isfinite(angular_velocity->x) && std::isfinite(angular_velocity->y) &&
                             std::isfinite(angular_velocity->z)))
-    throw std::invalid_argument("liquid: a mesh's angular velocity must be finite");
+    throw ArgumentError("liquid: a mesh's angular velocity must be finite");
   rotation = glm::normalize(rotation);
   // The turn is measured from the rotation in effect at the last call made at an earlier time (or
   // the scene's, the first time): calls at one time (several in a frame) correct each other, and
@@ -64,15 +64,15 @@ void HostInputs::set_mesh_transform(size_t index, glm::quat rotation, float scal
 }
 
 size_t HostInputs::dynamic_obstacle(size_t index) const {
-  if (index >= scene_.obstacles.size()) throw std::out_of_range("liquid: obstacle " + std::to_string(index) + " does not exist");
+  if (index >= scene_.obstacles.size()) throw ArgumentError("liquid: obstacle " + std::to_string(index) + " does not exist");
   if (!scene_.obstacles[index].dynamic)
-    throw std::invalid_argument("liquid: obstacle " + std::to_string(index) + " is not dynamic");
+    throw ArgumentError("liquid: obstacle " + std::to_string(index) + " is not dynamic");
   return index;
 }
 
 void HostInputs::set_body_force(size_t index, glm::vec3 force, glm::vec3 torque) {
   const auto finite = [](glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
-  if (!finite(force) || !finite(torque)) throw std::invalid_argument("liquid: a body's force and torque must be finite");
+  if (!finite(force) || !finite(torque)) throw ArgumentError("liquid: a body's force and torque must be finite");
   body_pushes_[dynamic_obstacle(index)] = {force, torque};
 }
 

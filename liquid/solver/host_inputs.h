@@ -23,7 +23,7 @@ class HostInputs {
   HostInputs(Scene& scene, const SimulationSetup& setup);
 
   // The calls LiquidNode forwards (include/liquid/node.h), made at the node's time `now` (s).
-  // Each refuses an index or value it cannot take with std::out_of_range or std::invalid_argument.
+  // Each refuses an index or value it cannot take with ArgumentError.
   void set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 velocity, double now);
   void set_mesh_transform(size_t index, glm::quat rotation, float scale, std::optional<glm::vec3> angular_velocity,
                           double now);
@@ -45,7 +45,7 @@ class HostInputs {
   void restore(const Checkpoint& checkpoint);
 
  private:
-  // The index of a dynamic obstacle, or std::out_of_range / std::invalid_argument naming it.
+  // The index of a dynamic obstacle, or ArgumentError naming it.
   size_t dynamic_obstacle(size_t index) const;
 
   Scene& scene_;

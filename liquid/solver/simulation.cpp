@@ -42,7 +42,7 @@ void check_atlas_fits(const engine::vk::Context& context, const GridLayout& layo
   const engine::vk::ImageDesc d = layout.image_desc(VK_FORMAT_R32G32B32A32_SFLOAT, 0);
   const uint32_t limit = context.limits().maxImageDimension2D;
   if (d.width > limit || d.height > limit)
-    throw std::runtime_error("the 3D grid's atlas (" + std::to_string(d.width) + " x " + std::to_string(d.height) +
+    throw DeviceError("the 3D grid's atlas (" + std::to_string(d.width) + " x " + std::to_string(d.height) +
                              " texels) exceeds the device's 2D image limit of " + std::to_string(limit) +
                              "; lower grid_resolution or use another 3D path");
 }
@@ -110,9 +110,9 @@ Simulation::~Simulation() = default;
 
 void Simulation::set_runtime_parameters(const RuntimeParameters& p) {
   if (!std::isfinite(p.gravity.x) || !std::isfinite(p.gravity.y) || !std::isfinite(p.gravity.z))
-    throw std::invalid_argument("liquid: gravity must be finite");
-  if (!(p.pic_ratio >= 0.0f && p.pic_ratio <= 1.0f)) throw std::invalid_argument("liquid: pic_ratio must be in [0, 1]");
-  if (!(p.stiffness >= 0.0f && std::isfinite(p.stiffness))) throw std::invalid_argument("liquid: stiffness must be >= 0");
+    throw ArgumentError("liquid: gravity must be finite");
+  if (!(p.pic_ratio >= 0.0f && p.pic_ratio <= 1.0f)) throw ArgumentError("liquid: pic_ratio must be in [0, 1]");
+  if (!(p.stiffness >= 0.0f && std::isfinite(p.stiffness))) throw ArgumentError("liquid: stiffness must be >= 0");
   setup_.gravity = p.gravity;
   setup_.pic_ratio = p.pic_ratio;
   setup_.stiffness = p.stiffness;
@@ -151,7 +151,7 @@ ImageHandle Simulation::update_mesh_field(engine::graph::RenderGraph& graph, con
 
 LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
   if (steps > max_steps_per_frame_)
-    throw std::invalid_argument("liquid: " + std::to_string(steps) + " steps in one frame, at most " +
+    throw ArgumentError("liquid: " + std::to_string(steps) + " steps in one frame, at most " +
                                 std::to_string(max_steps_per_frame_) + " (LiquidOptions::max_steps_per_frame)");
   uniforms_->begin_frame();
   ++frames_declared_;
@@ -208,7 +208,7 @@ LiquidImages Simulation::add_grids_to(engine::graph::RenderGraph& graph, const L
   const engine::vk::UniformSlice slice = grid_uniforms_->push(uniforms_for(inputs));
   // The images add_to() declared in this graph (a second import of the mesh field would lose its state).
   if (mesh_field_ && !images.mesh_field.valid())
-    throw std::invalid_argument("liquid: add_grids_to needs the images of add_to()");
+    throw UsageError("liquid: add_grids_to needs the images of add_to()");
   StepImages step;
   step.particles = {images.positions, images.velocities};
   step.splat = images.splat;
@@ -242,7 +242,7 @@ double Simulation::adapt_time_step(const Diagnostics& d) {
 
 void Simulation::set_time_step(double dt) {
   if (!std::isfinite(dt) || dt <= 0.0 || dt > double(setup_.time_step))
-    throw std::invalid_argument("liquid: time step " + std::to_string(dt) + " s must be in (0, " +
+    throw ArgumentError("liquid: time step " + std::to_string(dt) + " s must be in (0, " +
                                 std::to_string(setup_.time_step) + "] s (the scene's time_step)");
   time_step_ = dt;
 }

@@ -100,7 +100,7 @@ class Simulation {
   MeshField* mesh_field() { return mesh_field_.get(); }
 
  private:
-  // Refuses a checkpoint whose values no run reaches (std::invalid_argument naming the value).
+  // Refuses a checkpoint whose values no run reaches (ArgumentError naming the value).
   void check_checkpoint_values(const Checkpoint& checkpoint) const;
   // The step's splat, pressure and grid passes (the splat-adjoint pressure's when the variant has it).
   void add_grid_passes(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice, StepImages& step) const;

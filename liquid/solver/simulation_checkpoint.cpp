@@ -33,7 +33,7 @@ Checkpoint Simulation::save_checkpoint() {
 // refused naming the value rather than run (a NaN position used to surface as "simulation
 // unstable" steps later).
 void Simulation::check_checkpoint_values(const Checkpoint& c) const {
-  const auto refuse = [](const std::string& what) { throw std::invalid_argument("liquid: the checkpoint's " + what); };
+  const auto refuse = [](const std::string& what) { throw ArgumentError("liquid: the checkpoint's " + what); };
   const auto finite = [](glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
   if (c.step < 0) refuse("step count is negative (" + std::to_string(c.step) + ")");
   if (!(std::isfinite(c.time) && c.time >= 0.0)) refuse("time is not a finite time >= 0 s");
@@ -63,12 +63,12 @@ void Simulation::check_checkpoint_values(const Checkpoint& c) const {
 void Simulation::restore_checkpoint(const Checkpoint& c) {
   const size_t texels = size_t(setup_.particle_texture.x) * setup_.particle_texture.y;
   if (c.active < 0 || c.active > setup_.capacity)
-    throw std::invalid_argument("liquid: the checkpoint holds " + std::to_string(c.active) +
+    throw ArgumentError("liquid: the checkpoint holds " + std::to_string(c.active) +
                                 " active particles, outside the scene's capacity of 0 to " + std::to_string(setup_.capacity));
   const engine::vk::ImageDesc& body_desc = state_->bodies[0].desc();
   if (c.positions.size() != texels || c.velocities.size() != texels || c.emitted.size() != scene_.emitters.size() ||
       c.poses.size() != scene_.obstacles.size() || c.bodies.size() != size_t(body_desc.width) * body_desc.height)
-    throw std::invalid_argument("liquid: the checkpoint does not match this scene (" + std::to_string(c.positions.size()) +
+    throw ArgumentError("liquid: the checkpoint does not match this scene (" + std::to_string(c.positions.size()) +
                                 " particle texels, " + std::to_string(c.emitted.size()) + " emitters, " +
                                 std::to_string(c.poses.size()) + " obstacles; the scene has " + std::to_string(texels) +
                                 ", " + std::to_string(scene_.emitters.size()) + ", " + std::to_string(scene_.obstacles.size()) + ")");

@@ -29,7 +29,7 @@ std::vector<glm::vec4> padded(const std::vector<glm::vec4>& values, const Simula
 
 SplatFormatChoice choose_splat_format(SplatFormat requested, bool rgba32f_blendable, bool rgba16f_blendable) {
   const auto refuse = [](const char* name) {
-    return std::runtime_error(std::string("the device cannot blend into ") + name + " render targets (splat_format)");
+    return DeviceError(std::string("the device cannot blend into ") + name + " render targets (splat_format)");
   };
   if (requested == SplatFormat::Rgba16f || (requested == SplatFormat::Auto && !rgba32f_blendable)) {
     if (!rgba16f_blendable) throw refuse(requested == SplatFormat::Auto ? "RGBA32F or RGBA16F" : "RGBA16F");

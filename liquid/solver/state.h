@@ -28,7 +28,7 @@ constexpr VkFormat k_body_format = VK_FORMAT_R32G32B32A32_SFLOAT;  // body state
 
 // The splat's format for a scene's `requested` one and what the device can blend into. Auto takes
 // RGBA32F where it is blendable and falls back to RGBA16F (`fell_back`) where it is not. Throws
-// std::runtime_error naming the format when the device cannot blend into the one needed.
+// DeviceError naming the format when the device cannot blend into the one needed.
 struct SplatFormatChoice {
   VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT;
   bool fell_back = false;  // auto, and RGBA32F is not blendable here

@@ -14,7 +14,7 @@ namespace liquid {
 
 void require_at_most(size_t count, int limit, const char* what) {
   if (count > size_t(limit))
-    throw std::invalid_argument(std::string("liquid: ") + std::to_string(count) + " " + what + " (at most " +
+    throw ArgumentError(std::string("liquid: ") + std::to_string(count) + " " + what + " (at most " +
                                 std::to_string(limit) + ")");
 }
 
@@ -60,7 +60,7 @@ gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& set
   u.rest_depth = setup.rest_depth;
   u.atlas_columns = u.atlas_rows = 1;  // one tile; the node sets an atlas's (Simulation::uniforms_for)
   if (setup.wall_share_beyond.size() != size_t(gpu::k_wall_table_size))
-    throw std::invalid_argument("liquid: the setup's wall table has " + std::to_string(setup.wall_share_beyond.size()) +
+    throw std::logic_error("liquid: the setup's wall table has " + std::to_string(setup.wall_share_beyond.size()) +
                                 " entries, not " + std::to_string(gpu::k_wall_table_size) + " (make it with make_setup)");
   for (size_t k = 0; k < setup.wall_share_beyond.size(); ++k)
     u.wall_kernel_beyond[k / 4][k % 4] = setup.wall_share_beyond[k];
@@ -69,7 +69,7 @@ gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& set
   u.body_images_beyond_walls = setup.splat == SplatMode::Separable ? 1 : 0;
 
   if (setup.bodies.size() != scene.obstacles.size())
-    throw std::invalid_argument("liquid: the setup has body constants for " + std::to_string(setup.bodies.size()) +
+    throw std::logic_error("liquid: the setup has body constants for " + std::to_string(setup.bodies.size()) +
                                 " obstacles, the scene has " + std::to_string(scene.obstacles.size()) +
                                 " (make it with make_setup)");
   int ball = 0;

@@ -40,12 +40,12 @@ struct StepInputs {
   std::vector<EmissionRange> emissions;
 };
 
-// Throws std::invalid_argument when the step has more brushes or emitting emitters than the uniform
+// Throws ArgumentError when the step has more brushes or emitting emitters than the uniform
 // block holds (limits in shaders/liquid/shared.h); the scene's own lists were checked when it
 // entered the library (liquid/scene/limits.h).
 gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& setup, const StepInputs& step);
 
-// Throws std::invalid_argument ("liquid: N what (at most limit)") when count exceeds limit.
+// Throws ArgumentError ("liquid: N what (at most limit)") when count exceeds limit.
 void require_at_most(size_t count, int limit, const char* what);
 
 // The code shaders compare an obstacle's kind with (LIQUID_OBSTACLE_* in shared.h), plus

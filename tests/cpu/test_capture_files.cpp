@@ -59,10 +59,10 @@ TEST_CASE("scene overrides (the capture tool's --set) are applied to the documen
   CHECK_THROWS_WITH(scene_with({{"dimension.x", "1"}}), Catch::Contains("dimension is a number, it has no field 'x'"));
   CHECK_THROWS_WITH(scene_with({{"fluid_blocks.first", "1"}}), Catch::Contains("expected an index"));
   CHECK_THROWS_WITH(scene_with({{"a..b", "1"}}), Catch::Contains("not a field path"));
-  CHECK_THROWS_AS(liquid::parse_scene_override("=3"), std::invalid_argument);
+  CHECK_THROWS_AS(liquid::parse_scene_override("=3"), liquid::ArgumentError);
   // A path naming no field is a bad flag, refused before any scene is read.
   for (const char* text : {"a..b=1", "a.=1", ".a=1"})
-    CHECK_THROWS_MATCHES(liquid::parse_scene_override(text), std::invalid_argument,
+    CHECK_THROWS_MATCHES(liquid::parse_scene_override(text), liquid::ArgumentError,
                          Catch::Message(std::string("--set ") + std::string(text).substr(0, std::string(text).find('=')) +
                                         ": not a field path (use name, camera.position, fluid_blocks.0.max)"));
   CHECK(liquid::parse_scene_override("camera.position=[1,2,3]").value == "[1,2,3]");

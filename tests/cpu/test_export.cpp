@@ -58,9 +58,9 @@ TEST_CASE("PLY export writes a little-endian header, the frame's time and eight 
   CHECK(id == 1);  // the particle's index: stable across frames
   CHECK(density == 0.625f);
 
-  CHECK_THROWS_AS(liquid::encode_ply(particles, liquid::PlyFrame{0, 0.0, {1.0f}}), std::invalid_argument);
+  CHECK_THROWS_AS(liquid::encode_ply(particles, liquid::PlyFrame{0, 0.0, {1.0f}}), liquid::ArgumentError);
   particles.velocities.pop_back();
-  CHECK_THROWS_AS(liquid::encode_ply(particles, liquid::PlyFrame{0, 0.0, {1.0f, 1.0f}}), std::invalid_argument);
+  CHECK_THROWS_AS(liquid::encode_ply(particles, liquid::PlyFrame{0, 0.0, {1.0f, 1.0f}}), liquid::ArgumentError);
 }
 
 TEST_CASE("atomic writes replace the file whole and leave nothing behind on failure", "[export]") {

@@ -61,5 +61,5 @@ TEST_CASE("the uniform block carries the setup's wall table, by the scene's pres
     CHECK(u.wall_kernel_beyond[0][3] == 0.0f);  // r = 3: nothing beyond 3.5 cells
   }
   // A setup built by hand without the table would silently turn the wall correction off.
-  CHECK_THROWS_AS(make_uniforms(Scene{}, SimulationSetup{}, {}), std::invalid_argument);
+  CHECK_THROWS_AS(make_uniforms(Scene{}, SimulationSetup{}, {}), std::logic_error);
 }

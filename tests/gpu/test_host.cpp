@@ -1164,8 +1164,8 @@ TEST_CASE("a host's own mesh, from its interleaved vertex buffer, is an obstacle
     node.set_mesh_transform(boat, rotation, 1.0f, glm::vec3(0.0f, 2.0f, 0.0f));
     CHECK(node.obstacle_poses(node.time() + 10.0)[boat].angular_velocity.y == 2.0f);  // held until the next call
   }
-  CHECK_THROWS_AS(node.set_mesh_transform(boat + 1, glm::quat(1, 0, 0, 0), 1.0f), std::out_of_range);  // no such obstacle
-  CHECK_THROWS_AS(node.set_mesh_transform(boat, glm::quat(1, 0, 0, 0), 0.0f), std::invalid_argument);
+  CHECK_THROWS_AS(node.set_mesh_transform(boat + 1, glm::quat(1, 0, 0, 0), 1.0f), liquid::ArgumentError);  // no such obstacle
+  CHECK_THROWS_AS(node.set_mesh_transform(boat, glm::quat(1, 0, 0, 0), 0.0f), liquid::ArgumentError);
   const liquid::Diagnostics d = node.diagnose();
   CHECK(d.inside_obstacles == 0);
   REQUIRE_NO_VALIDATION_MESSAGES_ON(context);

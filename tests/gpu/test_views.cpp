@@ -272,9 +272,9 @@ TEST_CASE("height-field view of shallow_water: sky, sandy ground and water where
 TEST_CASE("the views refuse scenes they cannot show", "[gpu][view2d][height_field]") {
   engine::vk::Context& context = test::gpu();
   liquid::LiquidNode liquid_2d(context, test::shipped_scene("obstacles_2d"));
-  CHECK_THROWS_AS(liquid::HeightFieldPass(context, liquid_2d), std::invalid_argument);
+  CHECK_THROWS_AS(liquid::HeightFieldPass(context, liquid_2d), liquid::UsageError);
   liquid::LiquidNode liquid_3d(context, test::shipped_scene("small_3d"));
-  CHECK_THROWS_AS(liquid::View2dPass(context, liquid_3d), std::invalid_argument);
+  CHECK_THROWS_AS(liquid::View2dPass(context, liquid_3d), liquid::UsageError);
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 

@@ -39,13 +39,13 @@ TEST_CASE("runtime parameters change a running node's next steps and refuse bad 
 
   liquid::LiquidNode::RuntimeParameters bad = start;
   bad.pic_ratio = 1.5f;
-  CHECK_THROWS_AS(node.set_runtime_parameters(bad), std::invalid_argument);
+  CHECK_THROWS_AS(node.set_runtime_parameters(bad), liquid::ArgumentError);
   bad = start;
   bad.stiffness = -1.0f;
-  CHECK_THROWS_AS(node.set_runtime_parameters(bad), std::invalid_argument);
+  CHECK_THROWS_AS(node.set_runtime_parameters(bad), liquid::ArgumentError);
   bad = start;
   bad.gravity.x = std::numeric_limits<float>::quiet_NaN();
-  CHECK_THROWS_AS(node.set_runtime_parameters(bad), std::invalid_argument);
+  CHECK_THROWS_AS(node.set_runtime_parameters(bad), liquid::ArgumentError);
   CHECK(node.runtime_parameters().gravity.y == 40.0f);  // a refused value changes nothing
   REQUIRE_NO_VALIDATION_MESSAGES();
 }

@@ -126,7 +126,7 @@ RunSettings settle(const CaptureOptions& o, int max_steps_per_frame) {
   for (const std::string& text : o.set) {
     try {
       overrides.push_back(liquid::parse_scene_override(text));
-    } catch (const std::invalid_argument& e) {
+    } catch (const liquid::ArgumentError& e) {
       throw UsageError(e.what());
     }
   }

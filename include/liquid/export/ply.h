@@ -22,7 +22,7 @@ struct PlyFrame {
 // The whole file: an ASCII header then one packed little-endian vertex per particle. The id is the
 // particle's index, which the solver keeps for its whole life (texel i of the particle texture is
 // particle i; emitters fill the next free texels), so it identifies a particle across frames.
-// Throws std::invalid_argument when the arrays' lengths differ.
+// Throws ArgumentError when the arrays' lengths differ.
 std::string encode_ply(const ParticleSnapshot& particles, const PlyFrame& frame);
 
 // Writes encode_ply() to a temporary file renamed into place, so an interrupted export never leaves

@@ -26,7 +26,7 @@ struct VdbFrame {
   double fps = 0.0;     // frames per simulated second of the sequence, stored as "fps" (0: not stored)
 };
 
-// Writes the file through a temporary name renamed into place; throws std::runtime_error naming
+// Writes the file through a temporary name renamed into place; throws liquid::Error naming
 // the path when it cannot be written.
 void write_vdb(const std::filesystem::path& path, const VolumeFrame& volume, const VdbFrame& frame);
 
@@ -45,7 +45,7 @@ struct VdbContents {
   std::vector<Voxel<float>> density;
   std::vector<Voxel<glm::vec3>> velocity;
 };
-// Throws std::runtime_error naming the path when it cannot be read or lacks either grid.
+// Throws liquid::Error naming the path when it cannot be read or lacks either grid.
 VdbContents read_vdb(const std::filesystem::path& path);
 
 }  // namespace liquid
