@@ -33,7 +33,7 @@ Buffer::Buffer(Context& context, VkDeviceSize size, VkBufferUsageFlags usage, Me
   } else {
     memory_type = context.find_memory_type(requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
   }
-  objects_->memory = allocate_memory(device, requirements.size, memory_type);
+  objects_->memory = allocate_memory(context, requirements.size, memory_type);
   const VkDeviceMemory device_memory = objects_->memory.get();
   VK_CHECK(vkBindBufferMemory(device, buffer, device_memory, 0));
   if (memory == MemoryUsage::HostVisible) {
@@ -46,14 +46,14 @@ Buffer::Buffer(Context& context, VkDeviceSize size, VkBufferUsageFlags usage, Me
 
 void Buffer::flush() const {
   if (coherent_ || !mapped_) return;
-  const UniqueHandle<VkDeviceMemory>& memory = objects_->memory;
+  const DeviceMemory& memory = objects_->memory;
   VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE, nullptr, memory.get(), 0, VK_WHOLE_SIZE};
   VK_CHECK(vkFlushMappedMemoryRanges(memory.device(), 1, &range));
 }
 
 void Buffer::invalidate() const {
   if (coherent_ || !mapped_) return;
-  const UniqueHandle<VkDeviceMemory>& memory = objects_->memory;
+  const DeviceMemory& memory = objects_->memory;
   VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE, nullptr, memory.get(), 0, VK_WHOLE_SIZE};
   VK_CHECK(vkInvalidateMappedMemoryRanges(memory.device(), 1, &range));
 }

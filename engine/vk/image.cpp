@@ -65,7 +65,7 @@ Image::Image(Context& context, const ImageDesc& desc, const std::string& name)
   VkMemoryRequirements requirements{};
   vkGetImageMemoryRequirements(device, image, &requirements);
   objects_->memory = allocate_memory(
-      device, requirements.size,
+      context, requirements.size,
       context.find_memory_type(requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT));
   VK_CHECK(vkBindImageMemory(device, image, objects_->memory.get(), 0));
   create_views(context);

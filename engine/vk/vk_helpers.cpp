@@ -6,13 +6,13 @@
 
 namespace engine::vk {
 
-UniqueHandle<VkDeviceMemory> allocate_memory(VkDevice device, VkDeviceSize size, uint32_t type_index) {
+DeviceMemory allocate_memory(Context& context, VkDeviceSize size, uint32_t type_index) {
   VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
   alloc.allocationSize = size;
   alloc.memoryTypeIndex = type_index;
   VkDeviceMemory memory = VK_NULL_HANDLE;
-  VK_CHECK(vkAllocateMemory(device, &alloc, nullptr, &memory));
-  return {device, memory, vkFreeMemory};
+  VK_CHECK(vkAllocateMemory(context.device(), &alloc, nullptr, &memory));
+  return {UniqueHandle<VkDeviceMemory>(context.device(), memory, vkFreeMemory), size, context.memory_counter()};
 }
 
 VkCommandBuffer allocate_command_buffer(Context& context) {

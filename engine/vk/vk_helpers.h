@@ -3,6 +3,7 @@
 // to-host barriers. Internal: not installed.
 #pragma once
 
+#include "engine/vk/device_memory.h"
 #include "engine/vk/handle.h"
 
 #include <vulkan/vulkan.h>
@@ -15,8 +16,9 @@ namespace engine::vk {
 class Context;
 class Image;
 
-// `size` bytes of the memory type `type_index`, freed with the returned handle.
-UniqueHandle<VkDeviceMemory> allocate_memory(VkDevice device, VkDeviceSize size, uint32_t type_index);
+// `size` bytes of the memory type `type_index`, freed with the returned object and counted against
+// the context's memory_in_use() while it lives.
+DeviceMemory allocate_memory(Context& context, VkDeviceSize size, uint32_t type_index);
 
 // A primary command buffer from the context's pool; the caller frees it with vkFreeCommandBuffers.
 VkCommandBuffer allocate_command_buffer(Context& context);

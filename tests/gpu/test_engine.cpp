@@ -4,8 +4,10 @@
 #include "engine/graph/transfer.h"
 #include "engine/passes/fullscreen.h"
 #include "engine/passes/fxaa.h"
+#include "engine/vk/buffer.h"
 #include "engine/vk/commands.h"
 #include "engine/vk/context.h"
+#include "engine/vk/image.h"
 #include "engine/vk/pipeline.h"
 #include "tests/support/gpu.h"
 #include "tests/support/image_compare.h"
@@ -160,6 +162,33 @@ TEST_CASE("upload and download round-trip a 3D float image", "[gpu][transfer]") 
   const std::vector<std::byte> back = graph::download_image(context, image);
   REQUIRE(back.size() == values.size() * sizeof(float));
   CHECK(std::memcmp(back.data(), values.data(), back.size()) == 0);
+  REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("the context counts the device memory its buffers and images hold and the most they held at once",
+          "[gpu][context]") {
+  vk::Context& context = test::gpu();
+  const VkDeviceSize before = context.memory_in_use();
+  context.reset_memory_peak();
+  REQUIRE(context.memory_peak() == before);
+  const VkDeviceSize texels = 64 * 32 * 8, bytes = texels * 16;  // RGBA32F
+  VkDeviceSize with_image = 0;
+  {
+    vk::Image image(context, {vk::ImageKind::Image3D, 64, 32, 8, VK_FORMAT_R32G32B32A32_SFLOAT, VK_IMAGE_USAGE_SAMPLED_BIT},
+                    "counted");
+    with_image = context.memory_in_use();
+    CHECK(with_image >= before + bytes);
+    CHECK(with_image < before + 2 * bytes);  // its own memory, not a pool's worth
+    vk::Buffer buffer(context, 4096, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUsage::HostVisible, "counted");
+    CHECK(context.memory_in_use() >= with_image + 4096);
+    vk::Image moved = std::move(image);  // a move hands the memory over: counted once
+    CHECK(context.memory_in_use() >= with_image + 4096);
+    CHECK(context.memory_in_use() < with_image + 2 * 4096 + 1024);
+  }
+  CHECK(context.memory_in_use() == before);
+  CHECK(context.memory_peak() >= with_image + 4096);
+  context.reset_memory_peak();
+  CHECK(context.memory_peak() == before);
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 

@@ -1,5 +1,5 @@
-// The plan: the paper's configurations and the 2D scaling points, with the scene changes each
-// needs, and the --only selection.
+// The plan: the paper's configurations and the 2D and 3D scaling points, with the scene changes
+// each needs, and the --only selection.
 #include "tools/liquid_benchmark/plan.h"
 
 #include "liquid/physics/setup.h"
@@ -280,6 +280,44 @@ std::vector<Configuration> scaling_configurations(const Options& o) {
   return out;
 }
 
+// paper_3d with the separable splat (the fast 3D path), scaled by `factor` along each axis at the
+// same spacing per cell: spacing, cell and step divided by it, the emitter's particles (placed up
+// front) multiplied by its cube, so the count grows as factor^3 on a grid of 96 factor cells a side.
+liquid::Scene scaled_3d(liquid::Scene scene, double factor) {
+  scene.splat = liquid::SplatMode::Separable;
+  scene.particle_spacing = float(scene.particle_spacing / factor);
+  scene.grid_resolution = int(std::lround(scene.grid_resolution.value_or(96) * factor));
+  scene.time_step = float(scene.time_step / factor);
+  for (liquid::Emitter& e : scene.emitters) e.capacity = int(std::lround(e.capacity * factor * factor * factor));
+  return scene;
+}
+
+// Simulation only, from paper_3d with the separable splat: 125k to 1M particles, the grid growing
+// as N^(1/3) (96^3 to 192^3); each point also reports the device memory it held.
+std::vector<Configuration> scaling_3d_configurations(const Options& o) {
+  const std::string base_name = "paper_3d";
+  const liquid::Scene base = load_named_scene(o, base_name);
+  std::vector<std::optional<liquid::GridPath>> paths(o.paths_3d.begin(), o.paths_3d.end());
+  if (paths.empty()) paths.push_back(std::nullopt);
+  std::vector<Configuration> out;
+  for (const int k : {125, 250, 500, 1000}) {
+    const double factor = std::cbrt(k / 125.0);
+    for (const std::optional<liquid::GridPath>& path : paths) {
+      Configuration c = make_configuration(
+          "scaling3d/particles/" + (k < 1000 ? std::to_string(k) + "k" : std::to_string(k / 1000) + "M") +
+              (path ? std::string("/") + liquid::grid_path_name(*path) : std::string()),
+          "scaling3d", base_name, scaled_3d(base, factor), Mode::Simulation, o.scaling_runs);
+      c.grid_path = path;
+      c.splat_mode = "separable";
+      c.note = "paper_3d, separable splat, " + std::to_string(c.particles) + " particles on a " + grid_label(c.grid) +
+               " grid (spacing " + std::to_string(c.scene.particle_spacing) + " m, step " +
+               std::to_string(c.scene.time_step) + " s); " + c.note;
+      out.push_back(std::move(c));
+    }
+  }
+  return out;
+}
+
 // A --only value selects the configuration of that exact name, else every name containing it
 // ("paper_2d_64k/sim" is one configuration, "paper_2d" six).
 bool matches(const std::string& name, const std::string& pattern, const std::vector<Configuration>& all) {
@@ -303,6 +341,8 @@ Plan make_plan(const Options& o) {
   if (!o.no_scaling) {
     auto scaling = scaling_configurations(o);
     all.insert(all.end(), scaling.begin(), scaling.end());
+    auto scaling_3d = scaling_3d_configurations(o);
+    all.insert(all.end(), scaling_3d.begin(), scaling_3d.end());
   }
   if (!o.scaling_only) {
     auto meshes = mesh_configurations(o);

@@ -69,7 +69,7 @@ struct Configuration {
   int particles = 0;                 // active at the start (no configuration here emits)
   glm::ivec3 grid{1};
   std::optional<liquid::GridPath> grid_path;  // 3D: the path forced by --3d-path
-  std::string splat_mode;                     // paper_* rows: the splat mode it runs; else empty
+  std::string splat_mode;                     // paper_* and scaling3d rows: the splat mode it runs; else empty
   std::filesystem::path scene_file;           // group "viewer": the file liquid_viewer opens
   // Group "composite": the host targets' formats the liquid is composited into.
   VkFormat composite_color = VK_FORMAT_UNDEFINED;

@@ -8,6 +8,8 @@ Writes, where the JSON holds the data for them:
                   paper's Quadro 2000M figures (the chapter's method and the DX11 SDK SPH sample)
   gpu_passes.svg  GPU time of every pass, stacked per configuration
   scaling.svg     time per step against particle count (256^2 grid) and against grid size (64k)
+  scaling_3d.svg  3D: time per step and per particle, and the device memory held, against particle
+                  count (paper_3d, separable splat, the grid growing as N^(1/3))
 """
 
 import os
@@ -34,6 +36,8 @@ EXTRA_COLORS = ["#bcbd22", "#17becf", "#aec7e8", "#ffbb78", "#98df8a"]
 
 
 def format_count(v):
+    if v >= 1e6:
+        return f"{v / 1e6:.2g}M"
     return f"{v / 1000:.0f}k" if v >= 1000 else f"{v:g}"
 
 
@@ -141,7 +145,8 @@ def gpu_passes_chart(data, path):
     # One panel per kind, each with its own scale: a 3D frame takes ~50x a 2D one.
     panels = [("2D paper scenes", [r for r in rows if r["group"] == "paper" and r["dimension"] == 2]),
               ("3D paper scene", [r for r in rows if r["group"] == "paper" and r["dimension"] == 3]),
-              ("2D scaling runs (simulation only)", [r for r in rows if r["group"] == "scaling"])]
+              ("2D scaling runs (simulation only)", [r for r in rows if r["group"] == "scaling"]),
+              ("3D scaling runs (simulation only)", [r for r in rows if r["group"] == "scaling3d"])]
     panels = [(t, rs) for t, rs in panels if rs]
     names = pass_names(rows)
     extra = {}
@@ -207,9 +212,36 @@ def scaling_chart(data, path):
     return True
 
 
+def scaling_3d_chart(data, path):
+    rows = sorted((r for r in data["results"] if r["group"] == "scaling3d"), key=lambda r: r["particles"])
+    if not rows:
+        return False
+    xs = [r["particles"] for r in rows]
+    fig = Figure(figsize=(11.8, 6.4), layout="constrained")
+    fig.suptitle("3D scaling, simulation only: paper_3d, separable splat, grid growing as N^(1/3) (log-log)",
+                 fontweight="bold")
+    time_axes, memory_axes = fig.subplots(1, 2)
+    log_log(time_axes, "time per step", "active particles", "ms per step (log scale)", xs, format_count, 1.3)
+    series(time_axes, "wall time per step (bar: min..max)",
+           [(r["particles"], r["step_wall_ms"]["median"], r["step_wall_ms"]["min"], r["step_wall_ms"]["max"])
+            for r in rows], "#000")
+    series(time_axes, "solver GPU time per step", [(r["particles"], r["solver_gpu_ms_per_step"]["median"])
+                                                   for r in rows], PASS_COLORS["liquid.splat"], "s", (0, (2.5, 1.5)))
+    time_axes.legend(loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=2, fontsize="small", handlelength=3)
+    log_log(memory_axes, "device memory held", "active particles", "MiB (log scale)", xs, format_count, 1.3)
+    series(memory_axes, "the engine's buffers and images at most at once",
+           [(r["particles"], r.get("device_memory_bytes", 0) / 2**20) for r in rows], "#9467bd")
+    memory_axes.legend(loc="upper center", bbox_to_anchor=(0.5, -0.13), fontsize="small", handlelength=3)
+    per_particle = ", ".join(f"{format_count(r['particles'])}: {1e6 * r['step_wall_ms']['median'] / r['particles']:.3g}"
+                             for r in rows)
+    footer(fig, data, f"wall time per particle and step (ns): {per_particle}")
+    plot_files.save_svg(fig, path)
+    return True
+
+
 def plot(data, out):
     for name, chart in (("paper_2d.svg", paper_2d_chart), ("gpu_passes.svg", gpu_passes_chart),
-                        ("scaling.svg", scaling_chart)):
+                        ("scaling.svg", scaling_chart), ("scaling_3d.svg", scaling_3d_chart)):
         path = os.path.join(out, name)
         print(f"wrote {path}" if chart(data, path) else f"skipped {name} (no data for it in the JSON)")
 

@@ -30,15 +30,17 @@ namespace {
 
 void print_wall_table(const std::vector<Result>& results, const Options& o) {
   std::printf("\nWall time (recording to fence, one submission per frame, %d step(s) per frame)\n", o.steps_per_frame);
-  std::printf("%-34s %8s %10s %12s | %8s %8s %8s | %8s %8s %8s | %8s %9s %7s %s\n", "configuration", "particles",
-              "grid", "3D path", "frame ms", "min", "max", "step ms", "min", "max", "steps/s", "Mpart/s", "fps", "");
+  std::printf("%-34s %8s %10s %12s | %8s %8s %8s | %8s %8s %8s | %8s %9s %7s %8s %s\n", "configuration",
+              "particles", "grid", "3D path", "frame ms", "min", "max", "step ms", "min", "max", "steps/s", "Mpart/s",
+              "fps", "MiB", "");
   for (const Result& r : results) {
     const Figures f = figures_of(r, o.steps_per_frame);
-    std::printf("%-34s %8d %10s %12s | %8.2f %8.2f %8.2f | %8.2f %8.2f %8.2f | %8.2f %9.3f %7.2f %s\n",
+    std::printf("%-34s %8d %10s %12s | %8.2f %8.2f %8.2f | %8.2f %8.2f %8.2f | %8.2f %9.3f %7.2f %8.1f %s\n",
                 r.config->name.c_str(), r.active_particles, grid_label(r.config->grid).c_str(),
                 r.grid_path.empty() ? "-" : r.grid_path.c_str(), f.frame.median,
                 f.frame.min, f.frame.max, f.step.median, f.step.min, f.step.max, f.steps_per_second,
-                f.particles_per_second * 1e-6, f.fps, r.stability == "stable" ? "" : "UNSTABLE");
+                f.particles_per_second * 1e-6, f.fps, double(r.device_memory_bytes) / (1 << 20),
+                r.stability == "stable" ? "" : "UNSTABLE");
   }
 }
 
@@ -153,6 +155,7 @@ json result_json(const Result& r, const Options& o) {
             {"pass_order", r.pass_order},
             {"frame_wall_ms_samples", r.frame_ms},
             {"setup_s", r.setup_s},
+            {"device_memory_bytes", r.device_memory_bytes},
             {"stability", r.stability},
             {"note", c.note},
             {"splat", c.splat_mode.empty() ? json(nullptr) : json(c.splat_mode)}};

@@ -144,6 +144,8 @@ Result run_configuration(engine::vk::Context& context, const Configuration& c, c
   Result r;
   r.config = &c;
   const auto start = Clock::now();
+  const VkDeviceSize held_before = context.memory_in_use();
+  context.reset_memory_peak();
   Bench bench(context, c, o);
   r.setup_s = seconds_since(start);
   for (int i = 0; i < o.warmup; ++i) bench.frame();
@@ -151,6 +153,7 @@ Result run_configuration(engine::vk::Context& context, const Configuration& c, c
   r.active_particles = bench.node.active_particles();
   if (bench.node.dimension() == 3) r.grid_path = liquid::grid_path_name(simulation_of(bench.node).grid_layout().path);
   r.stability = check_stability(bench.node);
+  r.device_memory_bytes = context.memory_peak() - held_before;
   r.total_s = seconds_since(start);
   return r;
 }

@@ -39,6 +39,9 @@ struct Result {
   std::map<std::string, std::vector<double>> pass_ms;  // GPU, per timed frame, summed over repeats
   std::vector<double> solver_gpu_ms, render_gpu_ms;     // per timed frame
   double setup_s = 0.0, total_s = 0.0;
+  // The most device memory the engine's objects held at once while it ran, beyond what was held
+  // before: the node's state, its passes' transients, the renderer's targets (Context::memory_peak).
+  uint64_t device_memory_bytes = 0;
   std::string grid_path;             // 3D: the path the node ran on; empty in 2D
   std::string stability = "stable";  // else what went wrong
   std::optional<ViewerRun> viewer;   // group "viewer": frame_ms holds the one average frame time

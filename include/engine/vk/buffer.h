@@ -2,6 +2,7 @@
 // and upload staging); device-local ones are for data the GPU alone touches.
 #pragma once
 
+#include "engine/vk/device_memory.h"
 #include "engine/vk/handle.h"
 
 #include <vulkan/vulkan.h>
@@ -32,7 +33,7 @@ class Buffer {
 
  private:
   struct Objects {
-    UniqueHandle<VkDeviceMemory> memory;
+    DeviceMemory memory;  // counted against the context (memory_in_use)
     UniqueHandle<VkBuffer> buffer;  // bound to memory
   };
 

@@ -4,6 +4,7 @@
 // queue without owning them.
 #pragma once
 
+#include "engine/vk/device_memory.h"
 #include "engine/vk/device_requirements.h"
 
 #include <vulkan/vulkan.h>
@@ -104,6 +105,13 @@ class Context {
   // The last validation message, for test failure output.
   std::string last_validation_message() const;
 
+  // Device memory the engine's buffers and images hold now, and the most they held at once since
+  // the last reset_memory_peak() (bytes; a host's own adopted images are not counted).
+  VkDeviceSize memory_in_use() const { return memory_.in_use(); }
+  VkDeviceSize memory_peak() const { return memory_.peak(); }
+  void reset_memory_peak() { memory_.reset_peak(); }
+  MemoryCounter& memory_counter() { return memory_; }
+
   // Memory type index with the given property flags among the allowed bits; throws if none.
   uint32_t find_memory_type(uint32_t type_bits, VkMemoryPropertyFlags flags) const;
   // Whether `format` supports every feature bit in `features` for optimal tiling.
@@ -155,6 +163,7 @@ class Context {
   bool geometry_shader_ = false;
   bool dual_source_blend_ = false;
   std::atomic<uint32_t> validation_messages_{0};
+  MemoryCounter memory_;
   mutable std::string last_message_;
   PFN_vkSetDebugUtilsObjectNameEXT set_object_name_ = nullptr;
   std::mutex recycled_mutex_;

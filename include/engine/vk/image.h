@@ -2,6 +2,7 @@
 // for it between graph executions (an imported, persistent image remembers its last access).
 #pragma once
 
+#include "engine/vk/device_memory.h"
 #include "engine/vk/handle.h"
 
 #include <vulkan/vulkan.h>
@@ -94,7 +95,7 @@ class Image {
 
  private:
   struct Objects {
-    UniqueHandle<VkDeviceMemory> memory;
+    DeviceMemory memory;  // counted against the context (memory_in_use)
     UniqueHandle<VkImage> image;  // bound to memory
     UniqueHandle<VkImageView> sampled_view;
     UniqueHandle<VkImageView> attachment_view;
