@@ -51,7 +51,7 @@ void LiquidNode::set_placement(const Placement& placement) {
     throw ArgumentError("liquid: the placement's scale " + std::to_string(placement.scale) + " is not positive");
   if (std::abs(glm::length(q) - 1.0f) > 1e-3f)
     throw ArgumentError("liquid: the placement's rotation is not a unit quaternion (length " +
-                                std::to_string(glm::length(q)) + ")");
+                        std::to_string(glm::length(q)) + ")");
   placement_ = placement;
   placement_.rotation = glm::normalize(q);
 }

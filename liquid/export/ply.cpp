@@ -27,8 +27,8 @@ std::string encode_ply(const ParticleSnapshot& particles, const PlyFrame& frame)
   const size_t count = particles.positions.size();
   if (particles.velocities.size() != count || frame.density.size() != count)
     throw ArgumentError("encode_ply: " + std::to_string(count) + " positions but " +
-                                std::to_string(particles.velocities.size()) + " velocities and " +
-                                std::to_string(frame.density.size()) + " densities");
+                        std::to_string(particles.velocities.size()) + " velocities and " +
+                        std::to_string(frame.density.size()) + " densities");
   char time[64];
   std::snprintf(time, sizeof time, "%.17g", frame.time_s);  // round-trips the double
   std::string out = "ply\nformat binary_little_endian 1.0\n"

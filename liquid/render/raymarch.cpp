@@ -172,9 +172,9 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
       viewport.offset.x + viewport.extent.width > settings.width ||
       viewport.offset.y + viewport.extent.height > settings.height)
     throw ArgumentError("liquid: the view's viewport " + std::to_string(viewport.extent.width) + "x" +
-                                std::to_string(viewport.extent.height) + " at (" + std::to_string(viewport.offset.x) +
-                                ", " + std::to_string(viewport.offset.y) + ") is not inside the " +
-                                std::to_string(settings.width) + "x" + std::to_string(settings.height) + " targets");
+                        std::to_string(viewport.extent.height) + " at (" + std::to_string(viewport.offset.x) +
+                        ", " + std::to_string(viewport.offset.y) + ") is not inside the " +
+                        std::to_string(settings.width) + "x" + std::to_string(settings.height) + " targets");
   if (view_input.reversed_z && !composite_)
     throw UsageError("liquid.raymarch: reversed Z is for a host's targets; the renderer's own frame is forward");
   // Compositing: the pipeline for the host's colour and depth formats and depth convention, made once.

@@ -18,7 +18,7 @@ LiquidRenderer::LiquidRenderer(engine::vk::Context& context, const LiquidNode& n
   const uint32_t limit = context.limits().maxImageDimension2D;
   if (settings.width == 0 || settings.height == 0 || settings.width > limit || settings.height > limit)
     throw ArgumentError("frame size " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
-                                " is outside the device's limit of 1.." + std::to_string(limit) + " pixels per side");
+                        " is outside the device's limit of 1.." + std::to_string(limit) + " pixels per side");
   const SimulationSetup& setup = node_setup(node);
   const ViewOutput output = settings.composite ? ViewOutput::HostTargets : ViewOutput::OwnFrame;
   if (setup.shallow_water)
@@ -53,13 +53,13 @@ RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const Li
   const VkRect2D r = panel.rect;
   if (d.kind != engine::vk::ImageKind::Image2D || d.format != k_color_format)
     throw ArgumentError("liquid: the host's panel target '" + graph.image_name(panel.color) +
-                                "' must be a 2D R8G8B8A8_UNORM image");
+                        "' must be a 2D R8G8B8A8_UNORM image");
   if (r.extent.width == 0 || r.extent.height == 0 || r.offset.x < 0 || r.offset.y < 0 ||
       r.offset.x + r.extent.width > d.width || r.offset.y + r.extent.height > d.height)
     throw ArgumentError("liquid: the panel " + std::to_string(r.extent.width) + "x" +
-                                std::to_string(r.extent.height) + " at (" + std::to_string(r.offset.x) + ", " +
-                                std::to_string(r.offset.y) + ") is not inside the host's target '" +
-                                graph.image_name(panel.color) + "'");
+                        std::to_string(r.extent.height) + " at (" + std::to_string(r.offset.x) + ", " +
+                        std::to_string(r.offset.y) + ") is not inside the host's target '" +
+                        graph.image_name(panel.color) + "'");
   if (fxaa_)
     throw UsageError("liquid: FXAA is not run on a host panel (RenderSettings::fxaa = false)");
   RenderSettings frame = settings_;
@@ -80,17 +80,17 @@ VkFormat checked_target_format(const engine::graph::RenderGraph& graph, engine::
   const std::string target = std::string("liquid: the host's ") + what + " target '" + graph.image_name(image) + "'";
   if (d.kind != engine::vk::ImageKind::Image2D || d.width != settings.width || d.height != settings.height)
     throw ArgumentError(target + " must be a " + std::to_string(settings.width) + "x" +
-                                std::to_string(settings.height) + " 2D image");
+                        std::to_string(settings.height) + " 2D image");
   if (d.samples != VK_SAMPLE_COUNT_1_BIT)
     throw ArgumentError(target + " has " + std::to_string(int(d.samples)) +
-                                " samples; composite into the resolved single-sample colour and depth");
+                        " samples; composite into the resolved single-sample colour and depth");
   return d.format;
 }
 
 [[noreturn]] void refuse_format(const engine::graph::RenderGraph& graph, engine::graph::ImageHandle image,
                                 const char* what, const std::string& why) {
   throw ArgumentError(std::string("liquid: the host's ") + what + " target '" + graph.image_name(image) +
-                              "' has format " + std::to_string(int(graph.image_desc(image).format)) + ", " + why);
+                      "' has format " + std::to_string(int(graph.image_desc(image).format)) + ", " + why);
 }
 
 }  // namespace
@@ -113,12 +113,12 @@ RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const Li
   // FXAA works on display-referred colour: an HDR target is the host's to tone map first.
   if (fxaa_ && composite_output_encoding(color_format) == LIQUID_OUTPUT_HDR)
     throw UsageError("liquid: FXAA into the host's HDR colour target '" + graph.image_name(targets.color) +
-                                "' would smooth radiance before its tone map; run anti-aliasing after it "
-                                "(RenderSettings::fxaa = false)");
+                     "' would smooth radiance before its tone map; run anti-aliasing after it "
+                     "(RenderSettings::fxaa = false)");
   engine::vk::ImageDesc copy_desc = graph.image_desc(targets.color);
   if (fxaa_ && !(copy_desc.usage & VK_IMAGE_USAGE_TRANSFER_SRC_BIT))
     throw UsageError("liquid: FXAA in the host's colour target '" + graph.image_name(targets.color) +
-                                "' needs VK_IMAGE_USAGE_TRANSFER_SRC_BIT on it (or RenderSettings::fxaa = false)");
+                     "' needs VK_IMAGE_USAGE_TRANSFER_SRC_BIT on it (or RenderSettings::fxaa = false)");
   const VkRect2D whole{{0, 0}, {settings_.width, settings_.height}};
   const glm::mat4 model = view.model.value_or(node_.placement().world_from_liquid());
   const RaymarchView raymarch_view{view.projection * view.view * model, view.reversed_z,

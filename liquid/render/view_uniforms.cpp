@@ -22,7 +22,7 @@ engine::vk::UniformSlice ViewUniforms::begin_frame() {
   }
   if (++views_ > k_max_views_per_frame)
     throw UsageError("liquid: more than " + std::to_string(k_max_views_per_frame) +
-                            " views of one frame of the node from one renderer");
+                     " views of one frame of the node from one renderer");
   return arena_.push(node_uniforms(node_));
 }
 

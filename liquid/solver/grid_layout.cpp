@@ -61,7 +61,7 @@ GridPath choose_grid_path(const GridPathSupport& support, std::optional<GridPath
     throw DeviceError("the 3D path 'geometry' needs the device feature geometryShader, which is not enabled");
   if (*requested == GridPath::VertexLayer && !support.vertex_layer_output)
     throw DeviceError("the 3D path 'vertex-layer' needs the device feature shaderOutputLayer "
-                             "(gl_Layer from vertex shaders), which is not enabled");
+                      "(gl_Layer from vertex shaders), which is not enabled");
   return *requested;
 }
 

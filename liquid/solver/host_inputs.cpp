@@ -22,7 +22,7 @@ void HostInputs::set_obstacle_pose(size_t index, glm::vec3 center, glm::vec3 vel
     throw ArgumentError("liquid: obstacle " + std::to_string(index) + " does not exist");
   if (scene_.obstacles[index].dynamic)
     throw ArgumentError("liquid: obstacle " + std::to_string(index) +
-                                " is dynamic: the liquid moves it (set_body_force pushes it)");
+                        " is dynamic: the liquid moves it (set_body_force pushes it)");
   pose_overrides_[index] = PoseOverride{center, velocity, now};
 }
 

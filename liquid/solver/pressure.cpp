@@ -58,7 +58,7 @@ PressurePass::PressurePass(engine::vk::Context& context, const SolverVariant& va
 PressureImages PressurePass::create_images(engine::graph::RenderGraph& graph) const {
   const engine::vk::ImageDesc desc = variant_.layout.image_desc(k_pressure_format, 0);
   PressureImages images{graph.create_image("liquid.pressure", desc), graph.create_image("liquid.potential", desc), {}, {}};
-  if (variant_.bodies && spread_)  // the body force reads P after the spread
+  if (variant_.pressure_scratch())  // the body force reads P after the spread
     images.scratch = graph.create_image("liquid.potential_scratch", desc);
   return images;
 }

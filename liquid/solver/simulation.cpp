@@ -43,8 +43,8 @@ void check_atlas_fits(const engine::vk::Context& context, const GridLayout& layo
   const uint32_t limit = context.limits().maxImageDimension2D;
   if (d.width > limit || d.height > limit)
     throw DeviceError("the 3D grid's atlas (" + std::to_string(d.width) + " x " + std::to_string(d.height) +
-                             " texels) exceeds the device's 2D image limit of " + std::to_string(limit) +
-                             "; lower grid_resolution or use another 3D path");
+                      " texels) exceeds the device's 2D image limit of " + std::to_string(limit) +
+                      "; lower grid_resolution or use another 3D path");
 }
 
 // The scene as the solver runs it: a mesh obstacle's rotation is its mesh's (what a host set on the
@@ -152,7 +152,7 @@ ImageHandle Simulation::update_mesh_field(engine::graph::RenderGraph& graph, con
 LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
   if (steps > max_steps_per_frame_)
     throw ArgumentError("liquid: " + std::to_string(steps) + " steps in one frame, at most " +
-                                std::to_string(max_steps_per_frame_) + " (LiquidOptions::max_steps_per_frame)");
+                        std::to_string(max_steps_per_frame_) + " (LiquidOptions::max_steps_per_frame)");
   uniforms_->begin_frame();
   ++frames_declared_;
   LiquidState& s = *state_;
@@ -243,7 +243,7 @@ double Simulation::adapt_time_step(const Diagnostics& d) {
 void Simulation::set_time_step(double dt) {
   if (!std::isfinite(dt) || dt <= 0.0 || dt > double(setup_.time_step))
     throw ArgumentError("liquid: time step " + std::to_string(dt) + " s must be in (0, " +
-                                std::to_string(setup_.time_step) + "] s (the scene's time_step)");
+                        std::to_string(setup_.time_step) + "] s (the scene's time_step)");
   time_step_ = dt;
 }
 

@@ -86,8 +86,6 @@ class Simulation {
   const SimulationSetup& setup() const { return setup_; }
   // How the grids are stored (3D: images or atlases, liquid/solver/grid_layout.h) and the splat's format.
   const GridLayout& grid_layout() const { return variant_.layout; }
-  // The solver's modes (liquid/solver/variant.h).
-  const SolverVariant& variant() const { return variant_; }
   VkFormat splat_format() const { return splat_format_; }
   // The solver's uniform block for the current state with no step in progress: what the views
   // read (obstacle poses at the node's time).

@@ -64,14 +64,15 @@ void Simulation::restore_checkpoint(const Checkpoint& c) {
   const size_t texels = size_t(setup_.particle_texture.x) * setup_.particle_texture.y;
   if (c.active < 0 || c.active > setup_.capacity)
     throw ArgumentError("liquid: the checkpoint holds " + std::to_string(c.active) +
-                                " active particles, outside the scene's capacity of 0 to " + std::to_string(setup_.capacity));
+                        " active particles, outside the scene's capacity of 0 to " + std::to_string(setup_.capacity));
   const engine::vk::ImageDesc& body_desc = state_->bodies[0].desc();
   if (c.positions.size() != texels || c.velocities.size() != texels || c.emitted.size() != scene_.emitters.size() ||
       c.poses.size() != scene_.obstacles.size() || c.bodies.size() != size_t(body_desc.width) * body_desc.height)
     throw ArgumentError("liquid: the checkpoint does not match this scene (" + std::to_string(c.positions.size()) +
-                                " particle texels, " + std::to_string(c.emitted.size()) + " emitters, " +
-                                std::to_string(c.poses.size()) + " obstacles; the scene has " + std::to_string(texels) +
-                                ", " + std::to_string(scene_.emitters.size()) + ", " + std::to_string(scene_.obstacles.size()) + ")");
+                        " particle texels, " + std::to_string(c.emitted.size()) + " emitters, " +
+                        std::to_string(c.poses.size()) + " obstacles; the scene has " + std::to_string(texels) +
+                        ", " + std::to_string(scene_.emitters.size()) + ", " +
+                        std::to_string(scene_.obstacles.size()) + ")");
   check_checkpoint_values(c);
   engine::graph::upload_image(context_, state_->positions[state_->current], std::as_bytes(std::span(c.positions)));
   engine::graph::upload_image(context_, state_->velocities[state_->current], std::as_bytes(std::span(c.velocities)));

@@ -15,7 +15,7 @@ namespace liquid {
 void require_at_most(size_t count, int limit, const char* what) {
   if (count > size_t(limit))
     throw ArgumentError(std::string("liquid: ") + std::to_string(count) + " " + what + " (at most " +
-                                std::to_string(limit) + ")");
+                        std::to_string(limit) + ")");
 }
 
 int obstacle_kind_code(ObstacleShape shape) {

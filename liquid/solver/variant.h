@@ -28,6 +28,9 @@ struct SolverVariant {
   bool active_region = false;  // 3D: the grid passes draw the step's active region only
 
   bool splat_adjoint() const { return pressure == PressureMode::SplatAdjoint; }
+  // The splat-adjoint pressure needs a third grid when bodies read P after the separable spread,
+  // which otherwise alternates between P's image and Phi's (PressureImages::scratch).
+  bool pressure_scratch() const { return splat_adjoint() && bodies && splat == SplatMode::Separable; }
   // The shader_feature bits of the variant (SPLAT_ADJOINT, MESH_FIELD, ATLAS).
   uint32_t shader_features() const;
   // A solver shader for this variant: the family's code for the layout, with the features it has.
