@@ -63,7 +63,11 @@ struct Emitter {
   int capacity = 0;          // most particles this emitter ever adds
 };
 
+// A shape's value is the code the shaders compare with (LIQUID_OBSTACLE_* in
+// shaders/liquid/shared.h); a new shape takes the next value and its key in the list below.
 enum class ObstacleShape { Sphere, Box, Metaballs, Mesh };
+// The "shape" key's values, indexed by ObstacleShape.
+inline constexpr const char* k_obstacle_shape_keys[] = {"sphere", "box", "metaballs", "mesh"};
 
 // A closed triangle mesh (every edge shared by exactly two triangles of opposite orientation):
 // positions in the mesh's own frame (m before `scale`), three indices per triangle, counter-clockwise

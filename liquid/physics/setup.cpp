@@ -41,9 +41,8 @@ void check_body_inside_domain(const Scene& scene, size_t index) {
   const glm::vec3 e = body_wall_half_extent(o);
   // A mesh's box is its principal box about its centre of mass, larger than its bounding box when
   // the two centres differ: say which box, or the figure would not match the file's.
-  const char* shape = o.shape == ObstacleShape::Sphere ? "sphere"
-                      : o.shape == ObstacleShape::Box  ? "box"
-                                                       : "mesh's box about its centre of mass (what the walls hold in)";
+  const char* shape = o.shape == ObstacleShape::Mesh ? "mesh's box about its centre of mass (what the walls hold in)"
+                                                     : k_obstacle_shape_keys[size_t(o.shape)];
   const std::string field = "obstacles[" + std::to_string(index) + "]";
   for (int a = 0; a < scene.dimension; ++a) {
     const char axis = "xyz"[a];

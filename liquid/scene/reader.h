@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <initializer_list>
+#include <span>
 #include <sstream>
 #include <string>
 
@@ -42,6 +43,9 @@ class Reader {
 
   // Requires `value` to be an object whose keys are all in `allowed`.
   void check_keys(const Json& value, const std::string& path, std::initializer_list<const char*> allowed) const {
+    check_keys(value, path, std::span<const char* const>(allowed.begin(), allowed.size()));
+  }
+  void check_keys(const Json& value, const std::string& path, std::span<const char* const> allowed) const {
     if (!value.is_object()) fail(path, std::string("must be an object, got ") + value.type_name());
     for (const auto& item : value.items()) {
       const bool known = std::any_of(allowed.begin(), allowed.end(), [&](const char* k) { return item.key() == k; });
@@ -96,6 +100,9 @@ class Reader {
 
   // One of a fixed set of strings; returns its index in `choices`.
   size_t choice(const Json& value, const std::string& path, std::initializer_list<const char*> choices) const {
+    return choice(value, path, std::span<const char* const>(choices.begin(), choices.size()));
+  }
+  size_t choice(const Json& value, const std::string& path, std::span<const char* const> choices) const {
     const std::string text = string(value, path);
     std::string list;
     size_t index = 0;

@@ -2,12 +2,14 @@
 // table). JSON syntax and duplicate keys are handled in json.cpp.
 #include "liquid/scene.h"
 #include "liquid/scene/mesh_file.h"
+#include "liquid/scene/number_keys.h"
 #include "liquid/scene/reader.h"
 #include "shaders/liquid/shared.h"
 
 #include <algorithm>
 #include <array>
 #include <filesystem>
+#include <vector>
 
 namespace liquid::scene_reader {
 namespace {
@@ -22,6 +24,41 @@ constexpr double k_max_angular_speed = 1000.0;  // rad/s per component (about 16
 constexpr int k_max_emitter_capacity = 1 << 24;  // 16M particles
 constexpr double k_max_body_density = 1e5;      // kg/m^3, past any solid (osmium: 22590)
 constexpr double k_max_body_mass = 1e9;         // kg
+
+// Shallow water derives k and gamma (P = g h), so giving them would be silently ignored.
+constexpr const char* k_derived_in_shallow_water = "not used in shallow_water mode (k = |gravity| * rest_depth, gamma = 1)";
+
+// The plain number keys (number_keys.h): a new one is a row here and its member in Scene.
+const NumberKey k_number_keys[] = {
+    {"grid_resolution", &Scene::grid_resolution, k_min_grid_resolution, k_max_grid_resolution},
+    {"density", &Scene::density, 1.0, 1e5},
+    {"stiffness", &Scene::stiffness, 0.0, 1e6, true, k_derived_in_shallow_water},
+    {"gamma", &Scene::gamma, 1.0, 10.0, false, k_derived_in_shallow_water},
+    {"kernel_radius_cells", &Scene::kernel_radius_cells, 1.0, gpu::k_max_kernel_radius_cells},
+    {"pic_ratio", &Scene::pic_ratio, 0.0, 1.0},
+    {"pic_ratio_reference_step", &Scene::pic_ratio_reference_step, 1e-6, 0.1},
+    {"time_step", &Scene::time_step, k_min_time_step, k_max_time_step},
+    {"substeps", &Scene::substeps, 1, 1000},
+    {"wall_margin_cells", &Scene::wall_margin_cells, 0.0, 4.0},
+};
+
+// The keys read by code of their own (vectors, choices, objects, arrays, cross-checked numbers).
+constexpr const char* k_structured_keys[] = {
+    "name", "dimension", "mode", "domain", "gravity", "particle_spacing", "rest_density", "adaptive_time_step",
+    "splat_format", "pressure_force", "splat", "rest_depth", "fluid_blocks", "emitters", "obstacles", "ground",
+    "camera"};
+
+void read_number_key(const Reader& r, const Json& value, const NumberKey& row, Scene& scene) {
+  std::visit(
+      [&](auto member) {
+        using Value = std::remove_reference_t<decltype(scene.*member)>;
+        if constexpr (std::is_same_v<Value, int> || std::is_same_v<Value, std::optional<int>>)
+          scene.*member = r.integer_in(value, row.key, int(row.lo), int(row.hi));
+        else
+          scene.*member = float(r.number_in(value, row.key, row.lo, row.hi, row.lo_open));
+      },
+      row.member);
+}
 
 // ---- Nested objects --------------------------------------------------------------------------
 
@@ -126,8 +163,10 @@ void read_body(const Reader& r, const Json& value, const std::string& path, Obst
     if (density || mass) r.fail(child(path, density ? "density" : "mass"), "only allowed with \"dynamic\": true");
     return;
   }
-  if (obstacle.shape == ObstacleShape::Metaballs)
-    r.fail(child(path, "dynamic"), "metaball obstacles cannot be dynamic (only spheres, boxes and meshes)");
+  // The shapes liquid/physics/body.cpp has mass properties for.
+  if (obstacle.shape != ObstacleShape::Sphere && obstacle.shape != ObstacleShape::Box && obstacle.shape != ObstacleShape::Mesh)
+    r.fail(child(path, "dynamic"), "\"" + std::string(k_obstacle_shape_keys[size_t(obstacle.shape)]) +
+                                       "\" obstacles cannot be dynamic (only spheres, boxes and meshes)");
   if (obstacle.shape == ObstacleShape::Mesh && r.dimension() == 2)
     r.fail(child(path, "dynamic"), "a mesh obstacle can be dynamic in 3D only");
   if (Reader::find(value, "oscillation")) r.fail(child(path, "oscillation"), "not allowed on a dynamic obstacle (the liquid moves it)");
@@ -157,8 +196,7 @@ TriangleMesh read_mesh(const Reader& r, const Json& value, const std::string& pa
 Obstacle read_obstacle(const Reader& r, const Json& value, const std::string& path) {
   if (!value.is_object()) r.fail(path, std::string("must be an object, got ") + value.type_name());
   Obstacle obstacle;
-  obstacle.shape = ObstacleShape(r.choice(r.require(value, path, "shape"), child(path, "shape"),
-                                          {"sphere", "box", "metaballs", "mesh"}));
+  obstacle.shape = ObstacleShape(r.choice(r.require(value, path, "shape"), child(path, "shape"), k_obstacle_shape_keys));
   switch (obstacle.shape) {
     case ObstacleShape::Sphere:
       r.check_keys(value, path, {"shape", "center", "radius", "velocity", "oscillation", "rotation", "angular_velocity", "dynamic", "density", "mass"});
@@ -276,8 +314,11 @@ void read_space(Reader& r, const Json& doc, Scene& scene) {
 
 void read_physics(const Reader& r, const Json& doc, Scene& scene) {
   const bool shallow = scene.mode == SimulationMode::ShallowWater;
-  if (const Json* v = Reader::find(doc, "grid_resolution"))
-    scene.grid_resolution = r.integer_in(*v, "grid_resolution", k_min_grid_resolution, k_max_grid_resolution);
+  for (const NumberKey& row : k_number_keys)
+    if (const Json* v = Reader::find(doc, row.key)) {
+      if (shallow && row.shallow_refusal) r.fail(row.key, row.shallow_refusal);
+      read_number_key(r, *v, row, scene);
+    }
   if (const Json* v = Reader::find(doc, "gravity")) scene.gravity = r.scene_vector(*v, "gravity", k_max_gravity);
   if (shallow && glm::dot(scene.gravity, scene.gravity) == 0.0f)
     r.fail("gravity", "must be nonzero in shallow_water mode (|g| sets the wave speed)");
@@ -290,7 +331,6 @@ void read_physics(const Reader& r, const Json& doc, Scene& scene) {
                                    "] (at most half the smallest domain extent), got " + format_number(spacing));
   scene.particle_spacing = float(spacing);
 
-  if (const Json* v = Reader::find(doc, "density")) scene.density = float(r.number_in(*v, "density", 1.0, 1e5));
   if (const Json* v = Reader::find(doc, "rest_density")) {
     if (v->is_string()) {
       const std::string text = v->get<std::string>();
@@ -299,24 +339,8 @@ void read_physics(const Reader& r, const Json& doc, Scene& scene) {
       scene.rest_density = float(r.number_in(*v, "rest_density", 1.0, 1e5));
     }
   }
-  // Shallow water derives k and gamma (P = g h), so giving them would be silently ignored.
-  for (const char* key : {"stiffness", "gamma"})
-    if (shallow && Reader::find(doc, key))
-      r.fail(key, "not used in shallow_water mode (k = |gravity| * rest_depth, gamma = 1)");
-  if (const Json* v = Reader::find(doc, "stiffness"))
-    scene.stiffness = float(r.number_in(*v, "stiffness", 0.0, 1e6, true));
-  if (const Json* v = Reader::find(doc, "gamma")) scene.gamma = float(r.number_in(*v, "gamma", 1.0, 10.0));
-  if (const Json* v = Reader::find(doc, "kernel_radius_cells"))
-    scene.kernel_radius_cells = float(r.number_in(*v, "kernel_radius_cells", 1.0, gpu::k_max_kernel_radius_cells));
-  if (const Json* v = Reader::find(doc, "pic_ratio")) scene.pic_ratio = float(r.number_in(*v, "pic_ratio", 0.0, 1.0));
-  if (const Json* v = Reader::find(doc, "pic_ratio_reference_step"))
-    scene.pic_ratio_reference_step = float(r.number_in(*v, "pic_ratio_reference_step", 1e-6, 0.1));
-  if (const Json* v = Reader::find(doc, "time_step")) scene.time_step = float(r.number_in(*v, "time_step", k_min_time_step, k_max_time_step));
-  if (const Json* v = Reader::find(doc, "substeps")) scene.substeps = r.integer_in(*v, "substeps", 1, 1000);
   if (const Json* v = Reader::find(doc, "adaptive_time_step"))
     scene.adaptive_time_step = read_adaptive_time_step(r, *v, "adaptive_time_step");
-  if (const Json* v = Reader::find(doc, "wall_margin_cells"))
-    scene.wall_margin_cells = float(r.number_in(*v, "wall_margin_cells", 0.0, 4.0));
   if (const Json* v = Reader::find(doc, "splat_format"))
     scene.splat_format = std::array{SplatFormat::Auto, SplatFormat::Rgba32f, SplatFormat::Rgba16f}
         [r.choice(*v, "splat_format", {"auto", "rgba32f", "rgba16f"})];
@@ -372,15 +396,18 @@ void read_contents(const Reader& r, const Json& doc, Scene& scene) {
 
 }  // namespace
 
+std::span<const NumberKey> number_keys() { return k_number_keys; }
+
+std::vector<const char*> top_level_keys() {
+  std::vector<const char*> keys(std::begin(k_structured_keys), std::end(k_structured_keys));
+  for (const NumberKey& row : k_number_keys) keys.push_back(row.key);
+  return keys;
+}
+
 Scene read_scene(const Json& doc, const std::string& source_name) {
   Reader r(source_name);
   if (!doc.is_object()) r.fail("(document)", std::string("must be a JSON object, got ") + doc.type_name());
-  r.check_keys(doc, "",
-               {"name", "dimension", "mode", "domain", "grid_resolution", "gravity", "particle_spacing", "density",
-                "rest_density", "stiffness", "gamma", "kernel_radius_cells", "pic_ratio", "pic_ratio_reference_step", "time_step", "substeps",
-                "adaptive_time_step",
-                "wall_margin_cells", "splat_format", "pressure_force", "splat", "rest_depth", "fluid_blocks", "emitters", "obstacles", "ground",
-                "camera"});
+  r.check_keys(doc, "", top_level_keys());
   Scene scene;
   scene.name = std::filesystem::path(source_name).stem().string();
   if (const Json* v = Reader::find(doc, "name")) {

@@ -6,7 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
-
+#include <iterator>
 #include <stdexcept>
 #include <string>
 
@@ -18,18 +18,13 @@ void require_at_most(size_t count, int limit, const char* what) {
                         std::to_string(limit) + ")");
 }
 
-int obstacle_kind_code(ObstacleShape shape) {
-  switch (shape) {
-    case ObstacleShape::Sphere: return gpu::k_obstacle_sphere;
-    case ObstacleShape::Box: return gpu::k_obstacle_box;
-    case ObstacleShape::Metaballs: return gpu::k_obstacle_metaballs;
-    case ObstacleShape::Mesh: return gpu::k_obstacle_mesh;
-  }
-  return gpu::k_obstacle_sphere;
-}
+// A shape's value is its code (include/liquid/scene.h).
+static_assert(int(ObstacleShape::Sphere) == LIQUID_OBSTACLE_SPHERE && int(ObstacleShape::Box) == LIQUID_OBSTACLE_BOX &&
+              int(ObstacleShape::Metaballs) == LIQUID_OBSTACLE_METABALLS && int(ObstacleShape::Mesh) == LIQUID_OBSTACLE_MESH);
+static_assert(std::size(k_obstacle_shape_keys) <= size_t(LIQUID_OBSTACLE_SHAPE_MASK) + 1);
 
 int obstacle_code(const Obstacle& obstacle) {
-  return obstacle_kind_code(obstacle.shape) | (obstacle.dynamic ? gpu::k_obstacle_dynamic : 0);
+  return int(obstacle.shape) | (obstacle.dynamic ? gpu::k_obstacle_dynamic : 0);
 }
 
 gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& setup, const StepInputs& step) {
@@ -93,21 +88,20 @@ gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& set
         b.external_torque = step.body_pushes[i].torque;
       }
     }
-    switch (o.shape) {
-      case ObstacleShape::Sphere: g.sphere_radius = o.radius; break;
-      case ObstacleShape::Box: g.box_half_extent = o.half_extent; break;
-      case ObstacleShape::Metaballs:
-        g.metaball_threshold = o.threshold;
-        g.first_ball = ball;
-        g.ball_count = int(o.balls.size());
-        for (const Metaball& m : o.balls) u.balls[ball++] = glm::vec4(m.center, m.radius);
-        break;
-      case ObstacleShape::Mesh:  // its distance is the mesh field's (liquid/solver/mesh_field.h)
-        if (o.dynamic) {         // or, a body's, the body-shape texture's (liquid/solver/body_shapes.h)
-          g.sphere_radius = setup.bodies.at(i).shape_half_size;
-          g.box_half_extent = setup.bodies.at(i).shape_half_extent;
-        }
-        break;
+    // An analytic shape's parameters: the shaders read those its kind uses.
+    g.sphere_radius = o.radius;
+    g.box_half_extent = o.half_extent;
+    if (o.shape == ObstacleShape::Metaballs) {
+      g.metaball_threshold = o.threshold;
+      g.first_ball = ball;
+      g.ball_count = int(o.balls.size());
+      for (const Metaball& m : o.balls) u.balls[ball++] = glm::vec4(m.center, m.radius);
+    }
+    // A mesh's distance is the mesh field's (liquid/solver/mesh_field.h), or, a body's, the
+    // body-shape texture's (liquid/solver/body_shapes.h), whose size it reads here.
+    if (o.shape == ObstacleShape::Mesh && o.dynamic) {
+      g.sphere_radius = setup.bodies.at(i).shape_half_size;
+      g.box_half_extent = setup.bodies.at(i).shape_half_extent;
     }
   }
   for (size_t i = 0; i < scene.ground.size(); ++i) {

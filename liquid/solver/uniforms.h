@@ -48,9 +48,9 @@ gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& set
 // Throws ArgumentError ("liquid: N what (at most limit)") when count exceeds limit.
 void require_at_most(size_t count, int limit, const char* what);
 
-// The code shaders compare an obstacle's kind with (LIQUID_OBSTACLE_* in shared.h), plus
-// LIQUID_OBSTACLE_DYNAMIC for a dynamic one (the OBSTACLE_KIND_i specialization constants).
-int obstacle_kind_code(ObstacleShape shape);
+// The code shaders compare an obstacle's kind with (LIQUID_OBSTACLE_* in shared.h, its shape's
+// value), plus LIQUID_OBSTACLE_DYNAMIC for a dynamic one (the OBSTACLE_KIND_i specialization
+// constants).
 int obstacle_code(const Obstacle& obstacle);
 
 }  // namespace liquid

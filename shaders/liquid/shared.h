@@ -18,6 +18,8 @@
 #define LIQUID_WALL_TABLE_SIZE LIQUID_MAX_KERNEL_RADIUS_CELLS
 
 // ---- Obstacle kinds (the OBSTACLE_KIND_i specialization constants) ------------------------------
+// ObstacleShape's values (include/liquid/scene.h); a new shape's distance goes in common.glsl's
+// obstacle_distance() and liquid/physics/obstacles.cpp, and the views trace it by that distance.
 #define LIQUID_OBSTACLE_SPHERE 0
 #define LIQUID_OBSTACLE_BOX 1
 #define LIQUID_OBSTACLE_METABALLS 2
@@ -141,12 +143,8 @@ constexpr int k_max_emitters = LIQUID_MAX_EMITTERS;
 constexpr int k_max_kernel_radius_cells = LIQUID_MAX_KERNEL_RADIUS_CELLS;
 constexpr int k_wall_table_size = LIQUID_WALL_TABLE_SIZE;
 
-constexpr int k_obstacle_sphere = LIQUID_OBSTACLE_SPHERE;
-constexpr int k_obstacle_box = LIQUID_OBSTACLE_BOX;
-constexpr int k_obstacle_metaballs = LIQUID_OBSTACLE_METABALLS;
 constexpr int k_obstacle_dynamic = LIQUID_OBSTACLE_DYNAMIC;
 constexpr int k_body_texels = LIQUID_BODY_TEXELS;
-constexpr int k_obstacle_mesh = LIQUID_OBSTACLE_MESH;
 constexpr int k_max_mesh_obstacles = LIQUID_MAX_MESH_OBSTACLES;
 constexpr float k_mesh_field_margin_cells = float(LIQUID_MESH_FIELD_MARGIN_CELLS);
 constexpr float k_mesh_seed_cells = float(LIQUID_MESH_SEED_CELLS);
@@ -200,29 +198,38 @@ LIQUID_STRUCT(EmitterRange) {
   int end;                 // one past the last
 };
 
+// The step's scalars, a line each. The block below declares them from this list, in C++ and in
+// GLSL, and tests/cpu/test_shaders.cpp checks every one's offset against glslang's: a new scalar
+// is one line here (before the arrays, where std140 and C++ agree on scalars and vec3s followed
+// by a scalar) and its value in make_uniforms().
+#define LIQUID_SOLVER_SCALARS(X)                                                                     \
+  X(vec3, domain)                 /* m */                                                            \
+  X(float, cell_size)             /* h, m */                                                         \
+  X(ivec3, grid_cells)                                                                               \
+  X(int, particle_texture_width)                                                                     \
+  X(vec3, gravity)                /* m/s^2 */                                                        \
+  X(float, dt)                    /* s */                                                            \
+  X(float, stiffness)             /* k, m^2/s^2 */                                                   \
+  X(float, gamma)                                                                                    \
+  X(float, rest_density)          /* rho0, kg/m^3 */                                                 \
+  X(float, density_scale)         /* kg/m^3 per unit of summed kernel weight */                      \
+  X(float, kernel_radius)         /* r, cells */                                                     \
+  X(float, pic_ratio)             /* r of section 5.1's PIC/FLIP blend */                            \
+  X(float, wall_margin)           /* m, particles are kept this far from every wall (or start) */    \
+  X(float, obstacle_band)         /* m, the artificial obstacle density falls to zero this far out */ \
+  X(int, active_before)           /* particles alive at the start of the step */                     \
+  X(int, active_after)            /* after this step's emission */                                   \
+  X(int, brush_count)                                                                                \
+  X(int, emission_count)          /* emitters adding particles this step */                          \
+  X(float, rest_depth)            /* shallow water: depth at rest, m */                              \
+  X(int, atlas_columns)           /* the atlas path's columns and rows of slice tiles */             \
+  X(int, atlas_rows)              /* (liquid/solver/grid_layout.h); 1 and 1 otherwise */             \
+  X(int, active_region_margin_cells)  /* 3D: the grid passes' region past the marks */
+
+#define LIQUID_DECLARE_MEMBER(type, name) type name;
+
 LIQUID_STRUCT(SolverUniforms) {
-  vec3 domain;             // m
-  float cell_size;         // h, m
-  ivec3 grid_cells;
-  int particle_texture_width;
-  vec3 gravity;            // m/s^2
-  float dt;                // s
-  float stiffness;         // k, m^2/s^2
-  float gamma;
-  float rest_density;      // rho0, kg/m^3
-  float density_scale;     // kg/m^3 per unit of summed kernel weight
-  float kernel_radius;     // r, cells
-  float pic_ratio;         // r of section 5.1's PIC/FLIP blend
-  float wall_margin;       // m, particles are kept this far from every wall (or where they started)
-  float obstacle_band;     // m, the artificial obstacle density falls to zero this far out
-  int active_before;       // particles alive at the start of the step
-  int active_after;        // after this step's emission
-  int brush_count;
-  int emission_count;      // emitters adding particles this step
-  float rest_depth;        // shallow water: depth at rest, m
-  int atlas_columns;       // the atlas path: columns and rows of slice tiles (liquid/solver/grid_layout.h);
-  int atlas_rows;          // 1 and 1 otherwise
-  int active_region_margin_cells;  // 3D: how far the grid passes' region reaches past the marks (active_region.h)
+  LIQUID_SOLVER_SCALARS(LIQUID_DECLARE_MEMBER)
   // Fraction of the kernel's mass beyond a wall k + 0.5 cells from a cell centre: [k / 4][k % 4].
   LIQUID_ALIGN16 vec4 wall_kernel_beyond[LIQUID_WALL_TABLE_SIZE / 4];
   Obstacle obstacles[LIQUID_MAX_OBSTACLES];

@@ -81,7 +81,7 @@ TEST_CASE("bad dynamic and rotation keys are refused naming the field", "[scene]
   Json balls = pool_with(Json::object());
   balls["obstacles"][0] = {{"shape", "metaballs"}, {"balls", {{{"center", {0.5, 0.3}}, {"radius", 0.1}}}},
                            {"dynamic", true}, {"density", 500}};
-  REQUIRE_THROWS_WITH(parse(balls), Contains("obstacles[0].dynamic: metaball obstacles cannot be dynamic"));
+  REQUIRE_THROWS_WITH(parse(balls), Contains("obstacles[0].dynamic: \"metaballs\" obstacles cannot be dynamic"));
   Json chapter = pool_with({{"dynamic", true}, {"density", 500}});
   chapter["pressure_force"] = "chapter";
   REQUIRE_THROWS_WITH(parse(chapter), Contains("obstacles[0].dynamic: needs \"pressure_force\": \"splat_adjoint\""));

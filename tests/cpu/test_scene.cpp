@@ -1,6 +1,8 @@
 // Scene loading with no GPU: every shipped scene parses, defaults and conversions are right, and
 // each kind of malformed scene is rejected with a message naming the file and the field.
 #include "liquid/scene.h"
+#include "liquid/scene/format.h"
+#include "liquid/scene/number_keys.h"
 #include "tests/support/scenes.h"
 
 #include <catch2/catch.hpp>
@@ -8,6 +10,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -161,6 +165,66 @@ TEST_CASE("given fields are read in physical units", "[scene]") {
   REQUIRE(scene.camera.has_value());
   CHECK(scene.camera->fov_y_degrees == 45.0f);
   CHECK(scene.camera->target == glm::vec3(0.5f, 0.2f, 0.25f));
+}
+
+// The number keys' table (liquid/scene/number_keys.h) is the one place a plain number key is
+// declared: this walks it, so a new row is checked without a test of its own.
+TEST_CASE("every number key refuses values outside its range and reads one inside", "[scene]") {
+  for (const scene_reader::NumberKey& row : scene_reader::number_keys()) {
+    INFO(row.key);
+    const bool integer = std::holds_alternative<int Scene::*>(row.member) ||
+                         std::holds_alternative<std::optional<int> Scene::*>(row.member);
+    const double below = integer ? row.lo - 1.0 : row.lo_open ? row.lo : row.lo - std::abs(row.lo) * 0.5 - 1e-3;
+    const double above = integer ? row.hi + 1.0 : row.hi * 1.5 + 1e-3;
+    for (const double outside : {below, above}) {
+      Json j = valid_2d();
+      j[row.key] = outside;
+      REQUIRE_THROWS_WITH(parse(j), Contains(std::string("dam.json: ") + row.key + ": must be in"));
+    }
+    Json j = valid_2d();
+    j[row.key] = "1";
+    REQUIRE_THROWS_WITH(parse(j), Contains(std::string(row.key) + ": must be a"));
+    // A value inside the range (the upper bound, the one a range is most often wrong about) is read.
+    // The time step's upper bound is past the scene's stable step, so it takes its lower one.
+    const bool step = std::string(row.key) == "time_step";
+    const double inside = step ? row.lo : row.hi;
+    j = valid_2d();
+    j[row.key] = inside;
+    if (std::string(row.key) == "kernel_radius_cells") j["particle_spacing"] = 0.002;  // below the kernel
+    const Scene scene = parse(j);
+    std::visit(
+        [&](auto member) {
+          const auto& value = scene.*member;
+          if constexpr (requires { value.value(); }) {
+            REQUIRE(value.has_value());
+            CHECK(double(*value) == Approx(inside));
+          } else {
+            CHECK(double(value) == Approx(inside));
+          }
+        },
+        row.member);
+    if (row.shallow_refusal) {
+      Json shallow = valid_2d();
+      shallow["mode"] = "shallow_water";
+      shallow[row.key] = inside;
+      REQUIRE_THROWS_WITH(parse(shallow), Contains(std::string(row.key) + ": " + row.shallow_refusal));
+    }
+  }
+}
+
+TEST_CASE("the README's scene table has a row for every top-level key", "[scene]") {
+  std::ifstream file(std::filesystem::path(LIQUID_ASSET_DIR).parent_path() / "README.md");
+  REQUIRE(file);
+  std::stringstream text;
+  text << file.rdbuf();
+  // Every key the reader knows is refused when misspelled and documented when spelled right.
+  Json probe = valid_2d();
+  probe["no_such_key"] = 1;
+  REQUIRE_THROWS_WITH(parse(probe), Contains("no_such_key: unknown key"));
+  for (const char* key : scene_reader::top_level_keys()) {
+    INFO(key);
+    CHECK(text.str().find(std::string("| `") + key + "` |") != std::string::npos);
+  }
 }
 
 TEST_CASE("rest_density \"auto\" leaves it to the setup", "[scene]") {

@@ -152,15 +152,10 @@ TEST_CASE("the solver's uniform block has the same layout in C++ and in every sh
   using namespace liquid::gpu;
 #define MEMBER(type, field) {#type "." #field, uint32_t(offsetof(type, field))}
   const std::map<std::string, uint32_t> expected{
-      MEMBER(SolverUniforms, domain), MEMBER(SolverUniforms, cell_size), MEMBER(SolverUniforms, grid_cells),
-      MEMBER(SolverUniforms, particle_texture_width), MEMBER(SolverUniforms, gravity), MEMBER(SolverUniforms, dt),
-      MEMBER(SolverUniforms, stiffness), MEMBER(SolverUniforms, gamma), MEMBER(SolverUniforms, rest_density),
-      MEMBER(SolverUniforms, density_scale), MEMBER(SolverUniforms, kernel_radius), MEMBER(SolverUniforms, pic_ratio),
-      MEMBER(SolverUniforms, wall_margin), MEMBER(SolverUniforms, obstacle_band),
-      MEMBER(SolverUniforms, active_before), MEMBER(SolverUniforms, active_after),
-      MEMBER(SolverUniforms, brush_count), MEMBER(SolverUniforms, emission_count),
-      MEMBER(SolverUniforms, rest_depth), MEMBER(SolverUniforms, atlas_columns),
-      MEMBER(SolverUniforms, atlas_rows), MEMBER(SolverUniforms, wall_kernel_beyond),
+#define SCALAR(type, field) MEMBER(SolverUniforms, field),
+      LIQUID_SOLVER_SCALARS(SCALAR)
+#undef SCALAR
+      MEMBER(SolverUniforms, wall_kernel_beyond),
       MEMBER(SolverUniforms, obstacles), MEMBER(SolverUniforms, balls), MEMBER(SolverUniforms, ground),
       MEMBER(SolverUniforms, brushes), MEMBER(SolverUniforms, emitters), MEMBER(SolverUniforms, bodies), MEMBER(SolverUniforms, body_kernel_beyond),
       {"SolverUniforms.bodies[]", uint32_t(sizeof(Body))}, MEMBER(Obstacle, orientation),

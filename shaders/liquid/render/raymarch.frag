@@ -89,7 +89,8 @@ vec3 floor_color(vec3 p) {
   return mix(vec3(0.7, 0.72, 0.75), color, fade) * (0.55 + 0.45 * max(r.sun_direction.y, 0.0));
 }
 
-// Nearest obstacle hit along the ray: analytic for spheres and boxes, sphere tracing for metaballs.
+// Nearest obstacle hit along the ray: analytic for spheres and boxes, sphere tracing for metaballs
+// and any other analytic shape.
 // Meshes are not traced: liquid/render/mesh_draw.h rasterizes them into the frame's colour and
 // depth first, and this pass is depth-tested against them.
 float trace_obstacles(vec3 origin, vec3 dir, out int hit_index) {
@@ -112,11 +113,16 @@ float trace_obstacles(vec3 origin, vec3 dir, out int hit_index) {
       vec3 local_origin = quat_rotate_inverse(q, origin - c), local_dir = quat_rotate_inverse(q, dir);
       vec2 span = intersect_box(local_origin, 1.0 / local_dir, -o.box_half_extent, o.box_half_extent);
       if (span.x <= span.y && span.x > 0.0) t = span.x;
-    } else if (kind == LIQUID_OBSTACLE_METABALLS) {
-      float reach = 0.0;
-      for (int b = 0; b < o.ball_count; ++b) {
-        vec4 ball = u.balls[o.first_ball + b];
-        reach = max(reach, length(ball.xyz) + ball.w);
+    } else if (kind != LIQUID_OBSTACLE_MESH) {  // metaballs, and a shape with no ray test of its own
+      // Sphere tracing its distance within a sphere about its centre that holds it: the balls'
+      // reach, or a bound for a shape whose sphere_radius and box_half_extent are its sizes.
+      float reach = o.sphere_radius + length(o.box_half_extent);
+      if (kind == LIQUID_OBSTACLE_METABALLS) {
+        reach = 0.0;
+        for (int b = 0; b < o.ball_count; ++b) {
+          vec4 ball = u.balls[o.first_ball + b];
+          reach = max(reach, length(ball.xyz) + ball.w);
+        }
       }
       vec3 oc = origin - c;
       float bq = dot(oc, dir), disc = bq * bq - (dot(oc, oc) - reach * reach);
