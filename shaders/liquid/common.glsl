@@ -79,7 +79,7 @@ float density_ratio_power(float ratio) {
 #endif
 
 // A cell holds liquid when its summed splat weight is above this.
-const float k_fluid_epsilon = 1e-6;
+const float k_fluid_epsilon = LIQUID_FLUID_EPSILON;
 
 ivec3 grid_cells() { return u.grid_cells; }
 ivec2 atlas_tiles() { return ivec2(u.atlas_columns, u.atlas_rows); }

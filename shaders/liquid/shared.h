@@ -16,6 +16,8 @@
 // (one entry per whole cell a wall can be from a cell centre while the kernel still reaches it).
 #define LIQUID_MAX_KERNEL_RADIUS_CELLS 8
 #define LIQUID_WALL_TABLE_SIZE LIQUID_MAX_KERNEL_RADIUS_CELLS
+// A cell whose summed kernel weight is below this holds no liquid (its velocity is not sampled).
+#define LIQUID_FLUID_EPSILON 1e-6
 
 // ---- Obstacle kinds (the OBSTACLE_KIND_i specialization constants) ------------------------------
 // ObstacleShape's values (include/liquid/scene.h); a new shape's distance goes in common.glsl's
@@ -142,6 +144,7 @@ constexpr int k_max_brushes = LIQUID_MAX_BRUSHES;
 constexpr int k_max_emitters = LIQUID_MAX_EMITTERS;
 constexpr int k_max_kernel_radius_cells = LIQUID_MAX_KERNEL_RADIUS_CELLS;
 constexpr int k_wall_table_size = LIQUID_WALL_TABLE_SIZE;
+constexpr float k_fluid_epsilon = float(LIQUID_FLUID_EPSILON);
 
 constexpr int k_obstacle_dynamic = LIQUID_OBSTACLE_DYNAMIC;
 constexpr int k_body_texels = LIQUID_BODY_TEXELS;

@@ -6,8 +6,11 @@
 // series to a JSON file that tools/liquid_validate/plot_validation.py turns into SVG plots.
 #include "engine/io/atomic_file.h"
 #include "engine/vk/context.h"
+#include "liquid/analysis/energy_budget.h"
+#include "liquid/analysis/oscillation.h"
 #include "liquid/analysis/validation.h"
 #include "liquid/node.h"
+#include "liquid/physics/pic_blend.h"
 #include "liquid/physics/time_step.h"
 #include "liquid/scene.h"
 #include "liquid/scene/override.h"
@@ -58,6 +61,7 @@ liquid::Scene load(const Options& o, const char* file) {
 struct Sample {
   double t = 0.0, kinetic = 0.0, potential = 0.0, mechanical = 0.0, volume = 0.0, front = 0.0;
   double surface_spread = 0.0;  // largest |surface height - mean| over the grid's columns, m
+  double centre_x = 0.0;        // the particles' centre of mass along x, m
 };
 
 struct Run {
@@ -121,6 +125,7 @@ Run run_scene(engine::vk::Context& context, const Options& o, const liquid::Scen
     s.volume = liquid::volume_under_surface(heights, run.setup);
     s.front = liquid::surge_front(particles);
     s.surface_spread = spread(heights);
+    s.centre_x = liquid::centre_of_mass_x(particles);
     run.samples.push_back(s);
   };
   while (done < total) {
@@ -142,7 +147,7 @@ void print_check(const Check& c) {
 nlohmann::json json_series(const Run& run) {
   nlohmann::json samples = nlohmann::json::array();
   for (const Sample& x : run.samples)
-    samples.push_back({x.t, x.kinetic, x.potential, x.mechanical, x.volume, x.front, x.surface_spread});
+    samples.push_back({x.t, x.kinetic, x.potential, x.mechanical, x.volume, x.front, x.surface_spread, x.centre_x});
   return {{"name", run.name},
           {"cell_size", run.setup.cell_size},
           {"particle_spacing", run.setup.particle_spacing},
@@ -322,6 +327,95 @@ void column(engine::vk::Context& context, const Options& o, const char* file, st
   }
 }
 
+// The first sloshing mode of a tank (L = 0.5 m, h = 0.1 m, A = 1 cm: h / L = 0.2, A / h = 0.1) in
+// the rest pool's regime: its period against linear theory and its damping ratio, from the centre
+// of mass's oscillation over four periods. Water in a tank this size damps with zeta of a few
+// thousandths (its viscous boundary layers); the targets allow the method's numerical viscosity.
+void sloshing(engine::vk::Context& context, const Options& o, std::vector<Check>& checks, std::vector<Run>& runs) {
+  const liquid::Scene physics = load(o, "rest_pool_2d.json");
+  struct Case {
+    int dimension, cells;
+    double period_bound, zeta_bound;
+    bool target;
+  };
+  const std::vector<Case> cases = o.quick ? std::vector<Case>{{2, 64, 0.02, 0.02, false}}
+                                          : std::vector<Case>{{2, 64, 0.02, 0.02, false},
+                                                              {2, 128, 0.02, 0.02, true},
+                                                              {3, 64, 0.03, 0.03, true}};
+  for (const Case& c : cases) {
+    liquid::SloshingTank tank;
+    tank.dimension = c.dimension;
+    tank.cells_along = c.cells;
+    tank.width = 6.0 * tank.length / c.cells;  // six cells across: the mode is uniform along z
+    liquid::Scene scene = liquid::sloshing_scene(physics, tank);
+    scene.name = "sloshing " + std::to_string(c.dimension) + "D, " + std::to_string(c.cells) + " cells along L";
+    const double g = glm::length(scene.gravity);
+    const double theory = liquid::sloshing_period(tank.length, tank.depth, g);
+    const double seconds = (o.quick ? 2.0 : 4.0) * theory;
+    std::printf("%s, %.2f s...\n", scene.name.c_str(), seconds);
+    const int every = std::max(1, int(std::lround(theory / 60.0 / liquid::scene_time_step(scene))));
+    Run run = run_scene(context, o, scene, seconds, every);
+    std::vector<double> t, x;
+    for (const Sample& s : run.samples) t.push_back(s.t), x.push_back(s.centre_x);
+    const liquid::Oscillation m = liquid::measure_oscillation(t, x, 0.5 * tank.length);
+    const double error = m.period / theory - 1.0;
+    checks.push_back({scene.name + ": period / linear theory - 1", error,
+                      "|x| < " + tools::format_cli_number(c.period_bound), std::abs(error) < c.period_bound, c.target});
+    checks.push_back({scene.name + ": damping ratio zeta", m.damping_ratio,
+                      "< " + tools::format_cli_number(c.zeta_bound), m.damping_ratio < c.zeta_bound, c.target});
+    run.name = scene.name;
+    runs.push_back(run);
+  }
+}
+
+// The sloshing tank's energy budget (liquid/analysis/energy_budget.h): a step at a time for two
+// periods, each term of the particle pass's update added up and printed per period as a share of
+// the mode's energy (its largest kinetic energy in the first period). Figures, not targets: they
+// say which part of the method removes the motion (docs/physics.md, "Where sloshing loses its
+// energy").
+void budget(engine::vk::Context& context, const Options& o, std::vector<Check>& checks) {
+  const liquid::Scene physics = load(o, "rest_pool_2d.json");
+  for (int dimension : o.quick ? std::vector<int>{2} : std::vector<int>{2, 3}) {
+    liquid::SloshingTank tank;
+    tank.dimension = dimension;
+    tank.cells_along = 64;
+    tank.width = 6.0 * tank.length / tank.cells_along;
+    liquid::Scene scene = liquid::sloshing_scene(physics, tank);
+    const std::string name = "budget " + std::to_string(dimension) + "D sloshing, 64 cells";
+    const double period = liquid::sloshing_period(tank.length, tank.depth, glm::length(scene.gravity));
+    liquid::LiquidOptions node_options;
+    node_options.grid_path = tools::grid_path_from_flag(o.grid_path);
+    liquid::LiquidNode node(context, scene, node_options);
+    const liquid::SimulationSetup& setup = simulation_of(node).setup();
+    const double pic_step =
+        liquid::pic_blend_for_step(setup.pic_ratio, setup.pic_ratio_reference_step, setup.time_step);
+    const int steps = int(std::ceil(2.0 * period / setup.time_step));
+    std::printf("%s: %d steps of %.3g ms, PIC share %.3g per step...\n", name.c_str(), steps, 1e3 * setup.time_step,
+                pic_step);
+    tools::FrameLoop loop(context);
+    liquid::EnergyBudget total;
+    liquid::ParticleSnapshot before = node.read_particles();
+    double mode_energy = 0.0;
+    for (int step = 0; step < steps; ++step) {
+      loop.run([&](engine::graph::RenderGraph& graph) { node.add_to(graph, 1); });
+      liquid::ParticleSnapshot after = node.read_particles();
+      total.add(liquid::step_energy_budget(setup, pic_step, before, after, node.read_splat(), node.read_grid_velocity()));
+      if (node.time() < period) mode_energy = std::max(mode_energy, node.diagnose(after).kinetic_energy);
+      before = std::move(after);
+    }
+    tools::fail_on_validation_messages(context.validation_message_count());
+    const double per_period = 1.0 / (mode_energy * steps * setup.time_step / period);
+    const std::pair<const char*, double> terms[] = {
+        {"kinetic + potential", total.kinetic + total.potential},
+        {"grid increment: pressure and the grid's walls", total.pressure_and_grid_walls},
+        {"PIC share", total.pic},
+        {"particle pass: walls and obstacles", total.particle_walls},
+        {"advection (potential change + gravity's work)", total.advection()}};
+    for (const auto& [what, joules] : terms)
+      checks.push_back({name + ": " + what + ", per period / mode energy", joules * per_period, "", true, false});
+  }
+}
+
 bool wanted(const Options& o, const std::string& name) {
   return o.only.empty() || std::find(o.only.begin(), o.only.end(), name) != o.only.end();
 }
@@ -333,6 +427,7 @@ int run(const Options& o) {
   const std::pair<const char*, bool> scenes[] = {
       {"rest_pool_2d.json", wanted(o, "rest_pool")},
       {"dam_break_2d.json", wanted(o, "energy")},
+      {"rest_pool_2d.json", wanted(o, "sloshing") || (!o.only.empty() && wanted(o, "budget"))},
       {"column_2d.json", wanted(o, "column") || wanted(o, "column_2d")},
       {"column_3d.json", wanted(o, "column") || wanted(o, "column_3d")}};
   for (const auto& [file, runs] : scenes)
@@ -344,6 +439,9 @@ int run(const Options& o) {
   std::vector<Run> runs;
   if (wanted(o, "rest_pool")) rest_pool(context, o, checks, runs);
   if (wanted(o, "energy")) energy(context, o, checks, runs);
+  if (wanted(o, "sloshing")) sloshing(context, o, checks, runs);
+  // Not run by default: a read-back every step.
+  if (!o.only.empty() && wanted(o, "budget")) budget(context, o, checks);
   // --quick: the 2D column at its own spacing (a target), the 3D one at twice it (a figure).
   const std::vector<double> default_2d = o.quick ? std::vector<double>{0.002} : std::vector<double>{0.004, 0.002, 0.001};
   const std::vector<double> default_3d = o.quick ? std::vector<double>{0.004} : std::vector<double>{0.004, 0.002};
@@ -382,8 +480,10 @@ int main(int argc, char** argv) {
   app.add_option("--scenes", scenes, "folder holding rest_pool_2d, dam_break_2d, column_2d and column_3d");
   app.add_option("-o,--out", out, "output folder (validation.json)");
   app.add_flag("--quick", o.quick, "shorter runs (2 s pool, 3 s dam break, one spacing of each column)");
-  app.add_option("--only", o.only, "rest_pool, energy, column, or one column: column_2d, column_3d (repeatable)")
-      ->check(CLI::IsMember({"rest_pool", "energy", "column", "column_2d", "column_3d"}));
+  app.add_option("--only", o.only,
+                 "rest_pool, energy, sloshing, column, one column (column_2d, column_3d), or budget (the sloshing "
+                 "tank's energy budget, run only when named; repeatable)")
+      ->check(CLI::IsMember({"rest_pool", "energy", "sloshing", "budget", "column", "column_2d", "column_3d"}));
   app.add_flag("--validation", o.validation, "enable the Vulkan validation layer");
   std::vector<std::string> sets;
   app.add_option("--set", sets, "override a field of every scene run, checked like the file (key=value, repeatable)")

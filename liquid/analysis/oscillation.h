@@ -1,0 +1,53 @@
+// Standing waves, the motion games and shots are made of: a tank's first sloshing mode against
+// linear theory, and the period and damping ratio of a measured oscillation. Pure CPU code, used by
+// the validation tool (tools/liquid_validate/main.cpp) and the physics tests.
+#pragma once
+
+#include "liquid/scene.h"
+#include "liquid/types.h"
+
+#include <span>
+
+namespace liquid {
+
+// A rectangular tank of length L and still depth h whose surface starts as the first mode,
+// eta(x) = A cos(pi x / L): the liquid rises at x = 0 and falls at x = L. 3D: the tank is `width`
+// deep along z and the mode uniform across it.
+struct SloshingTank {
+  int dimension = 2;
+  double length = 0.5;      // L, m
+  double depth = 0.1;       // h, m
+  double amplitude = 0.01;  // A, m
+  double width = 0.05;      // 3D only: along z, m
+  int cells_along = 128;    // grid cells along L
+};
+
+// The first mode's period by linear theory: omega^2 = g k tanh(k h), k = pi / L (s).
+double sloshing_period(double length, double depth, double gravity);
+
+// `physics` (its regime: stiffness, gamma, pressure, splat, PIC blend; its blocks and obstacles are
+// dropped) filling `tank`: one fluid block a particle column wide per column of the lattice, each
+// as tall as the mode's surface over its centre, on a grid of tank.cells_along cells along L, with
+// headroom of twice the depth, the particle spacing half a cell and the steps scaled to the cell
+// (scene_at_spacing()).
+Scene sloshing_scene(const Scene& physics, const SloshingTank& tank);
+
+// The liquid's centre of mass along x, m: the first mode moves it 2 A L / (pi^2 h) from L / 2, so
+// its oscillation is the mode's.
+double centre_of_mass_x(const ParticleSnapshot& particles);
+
+// Of samples (t, y) of a decaying oscillation about `rest`: the period (twice the mean time between
+// successive crossings of `rest`), the damping ratio zeta from a least-squares fit of ln |peak| over
+// time (each peak the extreme between two crossings, the first the one before the first crossing),
+// and how many half cycles between crossings were measured: those
+// up to the first whose peak is below `floor` times the first one's (past it, a strongly damped
+// motion's crossings are its noise). No half cycle measured: period and zeta are NaN.
+struct Oscillation {
+  double period = 0.0;
+  double damping_ratio = 0.0;
+  int half_cycles = 0;
+};
+Oscillation measure_oscillation(std::span<const double> times, std::span<const double> values, double rest,
+                               double floor = 0.1);
+
+}  // namespace liquid
