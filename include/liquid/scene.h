@@ -46,6 +46,14 @@ enum class PressureForce { Chapter, SplatAdjoint };
 // tensor-product kernel instead of the radial one (docs/physics.md, "The separable splat").
 enum class SplatMode { PointSprite, Separable };
 
+// How velocity goes from the particles to the grid and back (section 5). PicFlip: the chapter's
+// splat of u_p and its PIC/FLIP blend. Affine: each particle also carries its velocity's gradient
+// C_p (APIC, Jiang et al. 2015), read back from the grid each step, and deposits
+// u_p + C_p (x_i - x_p): a linear field goes through the transfer unchanged, also where the kernel
+// is cut by the free surface, so the PIC share damps less of the waves (docs/physics.md, "Where
+// sloshing loses its energy"). Needs the point-sprite splat.
+enum class Transfer { PicFlip, Affine };
+
 // A box of liquid filled with particles on a lattice of the scene's particle spacing.
 struct FluidBlock {
   glm::vec3 min{0.0f};       // m (z ignored in 2D)
@@ -178,6 +186,7 @@ struct Scene {
   SplatFormat splat_format = SplatFormat::Auto;
   PressureForce pressure_force = PressureForce::Chapter;
   SplatMode splat = SplatMode::PointSprite;
+  Transfer transfer = Transfer::PicFlip;
   float rest_depth = 0.1f;          // m, shallow water: water height where rho = rho0
   std::vector<FluidBlock> fluid_blocks;
   std::vector<Emitter> emitters;

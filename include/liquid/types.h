@@ -156,6 +156,7 @@ struct Checkpoint {
   std::vector<int> emitted;                      // per emitter
   std::vector<Pose> poses;                       // per obstacle
   std::vector<glm::vec4> positions, velocities;  // the whole particle textures, inactive texels too
+  std::vector<glm::vec4> affine;                 // the affine transfer's C_p textures, one after another
   std::vector<glm::vec4> bodies;                 // the body-state texture (dynamic obstacles' state)
 };
 

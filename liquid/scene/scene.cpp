@@ -45,7 +45,7 @@ const NumberKey k_number_keys[] = {
 // The keys read by code of their own (vectors, choices, objects, arrays, cross-checked numbers).
 constexpr const char* k_structured_keys[] = {
     "name", "dimension", "mode", "domain", "gravity", "particle_spacing", "rest_density", "adaptive_time_step",
-    "splat_format", "pressure_force", "splat", "rest_depth", "fluid_blocks", "emitters", "obstacles", "ground",
+    "splat_format", "pressure_force", "splat", "transfer", "rest_depth", "fluid_blocks", "emitters", "obstacles", "ground",
     "camera"};
 
 void read_number_key(const Reader& r, const Json& value, const NumberKey& row, Scene& scene) {
@@ -353,6 +353,13 @@ void read_physics(const Reader& r, const Json& doc, Scene& scene) {
   if (const Json* v = Reader::find(doc, "splat"))
     scene.splat = r.choice(*v, "splat", {"point_sprite", "separable"}) == 0 ? SplatMode::PointSprite
                                                                             : SplatMode::Separable;
+  if (const Json* v = Reader::find(doc, "transfer")) {
+    if (shallow) r.fail("transfer", "not used in shallow_water mode");
+    scene.transfer = r.choice(*v, "transfer", {"pic_flip", "affine"}) == 0 ? Transfer::PicFlip : Transfer::Affine;
+    if (scene.transfer == Transfer::Affine && scene.splat == SplatMode::Separable)
+      r.fail("transfer", "\"affine\" needs \"splat\": \"point_sprite\" (the separable splat does not yet carry the "
+                         "velocity gradient through its spreads)");
+  }
   if (const Json* v = Reader::find(doc, "rest_depth")) {
     if (!shallow) r.fail("rest_depth", "only allowed in shallow_water mode");
     scene.rest_depth = float(r.number_in(*v, "rest_depth", 0.0, k_max_length, true));

@@ -21,6 +21,10 @@ void check_step_images(const StepImages& images, const SolverVariant& variant) {
   expect(images.particles.velocities, true, "particles.velocities");
   expect(images.particle_targets.positions, true, "particle_targets.positions");
   expect(images.particle_targets.velocities, true, "particle_targets.velocities");
+  for (int i = 0; i < 3; ++i) {
+    expect(images.particles.affine[size_t(i)], i < variant.affine_textures(), "particles.affine");
+    expect(images.particle_targets.affine[size_t(i)], i < variant.affine_textures(), "particle_targets.affine");
+  }
   expect(images.splat, true, "splat");
   expect(images.grids.velocity, true, "grids.velocity");
   expect(images.grids.density, true, "grids.density");

@@ -5,6 +5,8 @@
 #include "engine/graph/render_graph.h"
 #include "engine/vk/pipeline.h"
 
+#include <array>
+
 namespace liquid {
 
 using engine::graph::Access;
@@ -18,6 +20,8 @@ struct SolverVariant;
 struct ParticleImages {
   ImageHandle positions;   // RGBA32F, xyz m, w 1 when active
   ImageHandle velocities;  // RGBA32F, xyz m/s
+  // The affine transfer's C_p (RGBA32F, 1/s): variant.affine_textures() of them, the rest invalid.
+  std::array<ImageHandle, 3> affine{};
 };
 
 struct GridImages {

@@ -26,6 +26,11 @@ std::vector<engine::vk::DescriptorBinding> particle_bindings(const SolverVariant
   return bindings;
 }
 
+// Position and velocity, and C_p under the affine transfer.
+std::vector<VkFormat> particle_formats(const SolverVariant& variant) {
+  return std::vector<VkFormat>(size_t(2 + variant.affine_textures()), k_particle_format);
+}
+
 }  // namespace
 
 ParticleUpdatePass::ParticleUpdatePass(engine::vk::Context& context, const SolverVariant& variant,
@@ -33,7 +38,7 @@ ParticleUpdatePass::ParticleUpdatePass(engine::vk::Context& context, const Solve
     : pipeline_(context, engine::vk::GraphicsPipelineDesc{.name = "liquid.particle",
                                                           .vertex = engine::passes::fullscreen_vertex_shader(),
                                                           .fragment = variant.shader(shaders::particle_frag),
-                                                          .color_formats = {k_particle_format, k_particle_format},
+                                                          .color_formats = particle_formats(variant),
                                                           .bindings = particle_bindings(variant),
                                                           .specialization = specialization}),
       nearest_(context, VK_FILTER_NEAREST),
@@ -52,8 +57,12 @@ void ParticleUpdatePass::add_to(engine::graph::RenderGraph& graph, const engine:
         bindings.bind_image(b, LIQUID_BINDING_BODIES, step.bodies, s);
         bind_body_shapes(bindings, b, step.body_shapes, linear_);
         bind_mesh_field(bindings, b, step.mesh_field, linear_);
-        return ParticleImages{b.write(step.particle_targets.positions, Access::ColorAttachmentWrite),
-                              b.write(step.particle_targets.velocities, Access::ColorAttachmentWrite)};
+        ParticleImages written{b.write(step.particle_targets.positions, Access::ColorAttachmentWrite),
+                               b.write(step.particle_targets.velocities, Access::ColorAttachmentWrite)};
+        for (size_t a = 0; a < written.affine.size(); ++a)
+          if (step.particle_targets.affine[a].valid())
+            written.affine[a] = b.write(step.particle_targets.affine[a], Access::ColorAttachmentWrite);
+        return written;
       },
       [active_after](const PassContext& ctx) {
         if (active_after == 0) return;

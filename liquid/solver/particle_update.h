@@ -1,6 +1,7 @@
 // Section 5, the particle update: one fragment per particle texel writes the new position and
-// velocity (two render targets): velocity by the PIC/FLIP blend of the grid's u and u', position
-// by RK2 through u'; texels in an emitter's range are spawned at its nozzle.
+// velocity (two render targets, and C_p's under the affine transfer): velocity by the PIC/FLIP
+// blend of the grid's u and u', position by RK2 through u'; texels in an emitter's range are
+// spawned at its nozzle.
 // Shader: shaders/liquid/solver/particle.frag.
 #pragma once
 

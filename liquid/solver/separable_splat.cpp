@@ -12,7 +12,7 @@ namespace {
 engine::vk::GraphicsPipelineDesc deposit_pipeline(const SolverVariant& variant, VkFormat format,
                                                   const std::vector<int32_t>& specialization) {
   engine::vk::GraphicsPipelineDesc d =
-      particle_points_pipeline("liquid.deposit", variant.layout, variant.shader(shaders::deposit_vert),
+      particle_points_pipeline("liquid.deposit", variant, variant.shader(shaders::deposit_vert),
                                variant.shader(shaders::deposit_frag), format, specialization);
   if (variant.layout.dimension == 3) {
     d.color_formats.push_back(format);

@@ -28,6 +28,7 @@ constexpr uint32_t SPLAT_ADJOINT = 1u << 0;  // the grid pass takes the potentia
 constexpr uint32_t MESH_FIELD = 1u << 1;     // the pass samples the static meshes' field
 constexpr uint32_t ATLAS = 1u << 2;          // the grid is an atlas, for a shader without layouts of its own
 constexpr uint32_t TRANSMIT = 1u << 3;       // the raymarch writes the liquid's transmittance
+constexpr uint32_t AFFINE = 1u << 4;         // the affine transfer: the particles carry C_p
 }  // namespace shader_feature
 
 struct ShaderFamily {

@@ -87,7 +87,7 @@ Simulation::Simulation(engine::vk::Context& context, const Scene& scene, const L
   }
   const std::vector<glm::vec4> body_texels = initial_body_texels(scene_, setup_);
   bodies_ = decode_bodies(scene_, setup_.dimension, body_texels);
-  state_ = std::make_unique<LiquidState>(context, setup_, layout, splat_format_, body_texels);
+  state_ = std::make_unique<LiquidState>(context, setup_, layout, splat_format_, body_texels, variant_.affine_textures());
   max_steps_per_frame_ = options.max_steps_per_frame > 0 ? options.max_steps_per_frame : scene.substeps;
   uniforms_ = std::make_unique<engine::vk::UniformArena>(
       context, engine::vk::UniformArena::frame_bytes({sizeof(gpu::SolverUniforms)}, max_steps_per_frame_),
@@ -158,8 +158,13 @@ LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
   LiquidState& s = *state_;
   const auto import = [&graph](engine::vk::Image& image) { return graph.import_image(image.name(), image); };
   StepImages step;
-  step.particles = {import(s.positions[s.current]), import(s.velocities[s.current])};
-  step.particle_targets = {import(s.positions[1 - s.current]), import(s.velocities[1 - s.current])};
+  const auto particles = [&](int pair) {
+    ParticleImages images{import(s.positions[pair]), import(s.velocities[pair])};
+    for (size_t a = 0; a < s.affine[pair].size(); ++a) images.affine[a] = import(s.affine[pair][a]);
+    return images;
+  };
+  step.particles = particles(s.current);
+  step.particle_targets = particles(1 - s.current);
   step.splat = import(s.splat);
   step.grids = {import(s.grid_velocity), import(s.density)};
   if (pressure_) step.pressure = pressure_->create_images(graph);
@@ -197,6 +202,7 @@ LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
     slot.frame = frames_declared_;
     slot.readback = engine::graph::add_readback(graph, step.bodies, "liquid.bodies_readback");
   }
+  affine_handles_ = step.particles.affine;
   return {step.particles.positions, step.particles.velocities, step.splat, step.grids.velocity, step.grids.density,
           step.bodies, step.mesh_field};
 }
@@ -210,7 +216,7 @@ LiquidImages Simulation::add_grids_to(engine::graph::RenderGraph& graph, const L
   if (mesh_field_ && !images.mesh_field.valid())
     throw UsageError("liquid: add_grids_to needs the images of add_to()");
   StepImages step;
-  step.particles = {images.positions, images.velocities};
+  step.particles = {images.positions, images.velocities, affine_handles_};
   step.splat = images.splat;
   step.grids = {images.grid_velocity, images.density};
   if (pressure_) step.pressure = pressure_->create_images(graph);

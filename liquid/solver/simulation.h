@@ -26,6 +26,7 @@
 #include "liquid/types.h"
 #include "liquid/node.h"
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -127,6 +128,9 @@ class Simulation {
   // without them), and its handle in the graph add_to() last declared (add_grids_to() reads it too).
   engine::vk::Image body_shapes_;
   ImageHandle body_shapes_handle_;
+  // The latest particles' C_p (the affine transfer) in the graph add_to() last declared, for
+  // add_grids_to()'s splat.
+  std::array<ImageHandle, 3> affine_handles_{};
   std::unique_ptr<LiquidState> state_;
   std::unique_ptr<engine::vk::UniformArena> uniforms_;
   std::unique_ptr<engine::vk::UniformArena> grid_uniforms_;  // add_grids_to()'s block, one per frame

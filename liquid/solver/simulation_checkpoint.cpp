@@ -23,6 +23,10 @@ Checkpoint Simulation::save_checkpoint() {
   c.positions = texels_as<glm::vec4>(engine::graph::download_image(context_, state_->positions[state_->current]), texels);
   c.velocities =
       texels_as<glm::vec4>(engine::graph::download_image(context_, state_->velocities[state_->current]), texels);
+  for (engine::vk::Image& image : state_->affine[state_->current]) {
+    const auto affine = texels_as<glm::vec4>(engine::graph::download_image(context_, image), texels);
+    c.affine.insert(c.affine.end(), affine.begin(), affine.end());
+  }
   engine::vk::Image& bodies = state_->bodies[state_->body_current];
   c.bodies = texels_as<glm::vec4>(engine::graph::download_image(context_, bodies),
                                   size_t(bodies.desc().width) * bodies.desc().height);
@@ -49,6 +53,11 @@ void Simulation::check_checkpoint_values(const Checkpoint& c) const {
   for (size_t i = 0; i < c.bodies.size(); ++i)
     if (!finite(glm::vec3(c.bodies[i])) || !std::isfinite(c.bodies[i].w))
       refuse("body state holds a non-finite value (texel " + std::to_string(i) + ")");
+  // The active particles' C_p (the texels past them are never read).
+  const size_t texels = c.positions.size();
+  for (size_t i = 0; i < c.affine.size(); ++i)
+    if (int(i % texels) < c.active && (!finite(glm::vec3(c.affine[i])) || !std::isfinite(c.affine[i].w)))
+      refuse("velocity gradients hold a non-finite value (particle " + std::to_string(i % texels) + ")");
   for (int i = 0; i < c.active; ++i) {
     const glm::vec4 p = c.positions[size_t(i)], v = c.velocities[size_t(i)];
     if (!finite(glm::vec3(p)) || !finite(glm::vec3(v)))
@@ -67,7 +76,8 @@ void Simulation::restore_checkpoint(const Checkpoint& c) {
                         " active particles, outside the scene's capacity of 0 to " + std::to_string(setup_.capacity));
   const engine::vk::ImageDesc& body_desc = state_->bodies[0].desc();
   if (c.positions.size() != texels || c.velocities.size() != texels || c.emitted.size() != scene_.emitters.size() ||
-      c.poses.size() != scene_.obstacles.size() || c.bodies.size() != size_t(body_desc.width) * body_desc.height)
+      c.poses.size() != scene_.obstacles.size() || c.bodies.size() != size_t(body_desc.width) * body_desc.height ||
+      c.affine.size() != texels * state_->affine[0].size())
     throw ArgumentError("liquid: the checkpoint does not match this scene (" + std::to_string(c.positions.size()) +
                         " particle texels, " + std::to_string(c.emitted.size()) + " emitters, " +
                         std::to_string(c.poses.size()) + " obstacles; the scene has " + std::to_string(texels) +
@@ -76,6 +86,9 @@ void Simulation::restore_checkpoint(const Checkpoint& c) {
   check_checkpoint_values(c);
   engine::graph::upload_image(context_, state_->positions[state_->current], std::as_bytes(std::span(c.positions)));
   engine::graph::upload_image(context_, state_->velocities[state_->current], std::as_bytes(std::span(c.velocities)));
+  for (size_t a = 0; a < state_->affine[state_->current].size(); ++a)
+    engine::graph::upload_image(context_, state_->affine[state_->current][a],
+                                std::as_bytes(std::span(c.affine).subspan(a * texels, texels)));
   engine::graph::upload_image(context_, state_->bodies[state_->body_current], std::as_bytes(std::span(c.bodies)));
   bodies_ = decode_bodies(scene_, setup_.dimension, c.bodies);
   for (BodyReadback& r : body_readbacks_) r.readback = {};

@@ -19,15 +19,17 @@ uint32_t instances_per_particle(const SimulationSetup& setup) {
 
 }  // namespace
 
-engine::vk::GraphicsPipelineDesc particle_points_pipeline(const char* name, const GridLayout& layout,
+engine::vk::GraphicsPipelineDesc particle_points_pipeline(const char* name, const SolverVariant& variant,
                                                           std::span<const uint32_t> vertex,
                                                           std::span<const uint32_t> fragment, VkFormat format,
                                                           const std::vector<int32_t>& specialization) {
-  return engine::vk::GraphicsPipelineDesc{
+  const GridLayout& layout = variant.layout;
+  engine::vk::GraphicsPipelineDesc desc{
       .name = name,
       .vertex = vertex,
-      .geometry = layout.layered() && layout.path == GridPath::GeometryShader ? shader_variant(shaders::splat_geom)
-                                                                              : std::span<const uint32_t>{},
+      .geometry = layout.layered() && layout.path == GridPath::GeometryShader
+                      ? shader_variant(shaders::splat_geom, variant.shader_features())
+                      : std::span<const uint32_t>{},
       .fragment = fragment,
       .topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST,
       .color_formats = {format},
@@ -36,17 +38,23 @@ engine::vk::GraphicsPipelineDesc particle_points_pipeline(const char* name, cons
                    {LIQUID_BINDING_SPLAT_POSITIONS, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT},
                    {LIQUID_BINDING_SPLAT_VELOCITIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
       .specialization = specialization};
+  for (int a = 0; a < variant.affine_textures(); ++a)
+    desc.bindings.push_back({uint32_t(LIQUID_BINDING_SPLAT_AFFINE + a), DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT});
+  return desc;
 }
 
 void bind_particle_points(engine::passes::PassBindings& bindings, PassBuilder& builder, const ParticleImages& particles,
                           const engine::vk::Sampler& nearest) {
   bindings.bind_image(builder, LIQUID_BINDING_SPLAT_POSITIONS, particles.positions, nearest.handle());
   bindings.bind_image(builder, LIQUID_BINDING_SPLAT_VELOCITIES, particles.velocities, nearest.handle());
+  for (size_t a = 0; a < particles.affine.size(); ++a)
+    if (particles.affine[a].valid())
+      bindings.bind_image(builder, uint32_t(LIQUID_BINDING_SPLAT_AFFINE + int(a)), particles.affine[a], nearest.handle());
 }
 
 SplatPass::SplatPass(engine::vk::Context& context, const SolverVariant& variant, const SimulationSetup& setup,
                      VkFormat splat_format, const std::vector<int32_t>& specialization)
-    : pipeline_(context, particle_points_pipeline("liquid.splat", variant.layout, variant.shader(shaders::splat_vert),
+    : pipeline_(context, particle_points_pipeline("liquid.splat", variant, variant.shader(shaders::splat_vert),
                                                   variant.shader(shaders::splat_frag), splat_format, specialization)),
       nearest_(context, VK_FILTER_NEAREST),
       instances_(instances_per_particle(setup)) {

@@ -22,8 +22,9 @@ namespace liquid {
 
 // A pipeline that draws one point per particle from the particle textures (the vertex stage reads
 // them) and blends additively into `format`: the chapter's splat and the separable splat's deposit.
-// On the geometry-shader path splat.geom routes each point to its slice.
-engine::vk::GraphicsPipelineDesc particle_points_pipeline(const char* name, const GridLayout& layout,
+// On the geometry-shader path splat.geom routes each point to its slice. Under the affine transfer
+// the vertex stage also reads the particles' C_p.
+engine::vk::GraphicsPipelineDesc particle_points_pipeline(const char* name, const SolverVariant& variant,
                                                           std::span<const uint32_t> vertex,
                                                           std::span<const uint32_t> fragment, VkFormat format,
                                                           const std::vector<int32_t>& specialization);

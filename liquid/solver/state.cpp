@@ -40,12 +40,14 @@ SplatFormatChoice choose_splat_format(SplatFormat requested, bool rgba32f_blenda
 }
 
 LiquidState::LiquidState(engine::vk::Context& context, const SimulationSetup& setup, const GridLayout& layout,
-                         VkFormat splat_format, const std::vector<glm::vec4>& body_texels) {
+                         VkFormat splat_format, const std::vector<glm::vec4>& body_texels, int affine_textures) {
   const ImageDesc particles{ImageKind::Image2D, uint32_t(setup.particle_texture.x), uint32_t(setup.particle_texture.y), 1,
                             k_particle_format, k_usage};
   for (int i = 0; i < 2; ++i) {
     positions[i] = Image(context, particles, "liquid.positions" + std::to_string(i));
     velocities[i] = Image(context, particles, "liquid.velocities" + std::to_string(i));
+    for (int a = 0; a < affine_textures; ++a)
+      affine[i].emplace_back(context, particles, "liquid.affine" + std::to_string(a) + "_" + std::to_string(i));
   }
   splat = Image(context, layout.image_desc(splat_format, k_usage), "liquid.splat");
   grid_velocity = Image(context, layout.image_desc(k_grid_velocity_format, k_usage), "liquid.grid_velocity");
@@ -62,6 +64,9 @@ LiquidState::LiquidState(engine::vk::Context& context, const SimulationSetup& se
   const auto v = padded(setup.velocities, setup);
   engine::graph::upload_image(context, positions[0], std::as_bytes(std::span(p)));
   engine::graph::upload_image(context, velocities[0], std::as_bytes(std::span(v)));
+  const std::vector<glm::vec4> zero_affine(p.size(), glm::vec4(0.0f));
+  for (auto& pair : affine)
+    for (engine::vk::Image& image : pair) engine::graph::upload_image(context, image, std::as_bytes(std::span(zero_affine)));
   // Grids start empty (not undefined) so a host may render or read them before the first step.
   for (Image* grid : {&splat, &grid_velocity, &density}) {
     const ImageDesc& d = grid->desc();

@@ -38,11 +38,13 @@ SplatFormatChoice choose_splat_format(SplatFormat requested, bool rgba32f_blenda
 struct LiquidState {
   // The grids are stored as `layout` says (3D images or atlases in 3D); `body_texels` is the
   // body-state texture's first contents (liquid/solver/bodies.h).
+  // `affine_textures` C_p textures per particle texture (SolverVariant::affine_textures()).
   LiquidState(engine::vk::Context& context, const SimulationSetup& setup, const GridLayout& layout,
-              VkFormat splat_format, const std::vector<glm::vec4>& body_texels);
+              VkFormat splat_format, const std::vector<glm::vec4>& body_texels, int affine_textures);
 
   std::array<engine::vk::Image, 2> positions;   // xyz (m), w = 1 active
   std::array<engine::vk::Image, 2> velocities;  // xyz (m/s)
+  std::array<std::vector<engine::vk::Image>, 2> affine;  // the affine transfer's C_p (1/s), zero at first
   engine::vk::Image splat;                      // (sum w u, sum w)
   engine::vk::Image grid_velocity;              // (u', fluid flag)
   engine::vk::Image density;                    // rho / rho0

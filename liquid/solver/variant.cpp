@@ -8,7 +8,7 @@ namespace liquid {
 
 uint32_t SolverVariant::shader_features() const {
   return (splat_adjoint() ? shader_feature::SPLAT_ADJOINT : 0u) | (meshes ? shader_feature::MESH_FIELD : 0u) |
-         (layout.atlas() ? shader_feature::ATLAS : 0u);
+         (layout.atlas() ? shader_feature::ATLAS : 0u) | (affine ? shader_feature::AFFINE : 0u);
 }
 
 std::string SolverVariant::description() const {
@@ -18,6 +18,7 @@ std::string SolverVariant::description() const {
   if (meshes) out += ", meshes";
   if (bodies) out += ", bodies";
   if (active_region) out += ", active region";
+  if (affine) out += ", affine transfer";
   return out;
 }
 
@@ -30,6 +31,7 @@ SolverVariant solver_variant(const Scene& scene, const SimulationSetup& setup, c
   v.meshes = has_mesh_obstacles(scene);
   v.bodies = std::any_of(scene.obstacles.begin(), scene.obstacles.end(), [](const Obstacle& o) { return o.dynamic; });
   v.active_region = active_region && layout.dimension == 3;
+  v.affine = scene.transfer == Transfer::Affine;
   return v;
 }
 

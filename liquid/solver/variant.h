@@ -26,12 +26,16 @@ struct SolverVariant {
   bool meshes = false;         // static mesh obstacles: the grid, pressure and particle passes sample their field
   bool bodies = false;         // dynamic obstacles: the body force and integration passes run
   bool active_region = false;  // 3D: the grid passes draw the step's active region only
+  bool affine = false;         // the affine transfer: the particles carry C_p (affine_textures() of them)
 
   bool splat_adjoint() const { return pressure == PressureMode::SplatAdjoint; }
   // The splat-adjoint pressure needs a third grid when bodies read P after the separable spread,
   // which otherwise alternates between P's image and Phi's (PressureImages::scratch).
   bool pressure_scratch() const { return splat_adjoint() && bodies && splat == SplatMode::Separable; }
-  // The shader_feature bits of the variant (SPLAT_ADJOINT, MESH_FIELD, ATLAS).
+  // The particle textures of C_p under the affine transfer: its columns d u / d x_a, packed into one
+  // texture in 2D (xy the x column, zw the y column), one per axis in 3D; none otherwise.
+  int affine_textures() const { return affine ? (layout.dimension == 2 ? 1 : 3) : 0; }
+  // The shader_feature bits of the variant (SPLAT_ADJOINT, MESH_FIELD, ATLAS, AFFINE).
   uint32_t shader_features() const;
   // A solver shader for this variant: the family's code for the layout, with the features it has.
   std::span<const uint32_t> shader(const ShaderFamily& family) const {

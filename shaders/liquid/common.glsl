@@ -72,6 +72,12 @@ float density_ratio_power(float ratio) {
 #endif
 #include "liquid/grid_atlas.glsl"
 
+// AFFINE: the affine transfer (the scene's "transfer": "affine"): the particles carry C_p, the
+// splat deposits u_p + C_p (x_i - x_p) and the particle pass reads C_p back from the grid.
+#ifndef AFFINE
+#define AFFINE 0
+#endif
+
 #if DIM == 3 && !ATLAS
 #define GRID_SAMPLER sampler3D
 #else

@@ -68,6 +68,8 @@
 // Splat: the particle textures, read by the vertex stage.
 #define LIQUID_BINDING_SPLAT_POSITIONS 1
 #define LIQUID_BINDING_SPLAT_VELOCITIES 2
+// The affine transfer's C_p textures (variant.affine_textures() of them, from this binding on).
+#define LIQUID_BINDING_SPLAT_AFFINE 3
 // Grid pass: the splatted grid; with the splat-adjoint pressure, the smoothed pressure Phi.
 #define LIQUID_BINDING_GRID_SPLAT 1
 #define LIQUID_BINDING_GRID_POTENTIAL 2

@@ -227,6 +227,20 @@ TEST_CASE("the README's scene table has a row for every top-level key", "[scene]
   }
 }
 
+TEST_CASE("the transfer is the chapter's unless the affine one is asked for with point sprites", "[scene]") {
+  CHECK(parse(valid_2d()).transfer == Transfer::PicFlip);
+  Json j = valid_2d();
+  j["transfer"] = "affine";
+  CHECK(parse(j).transfer == Transfer::Affine);
+  refused_with("/transfer", "\"apic\"", "dam.json: transfer: must be one of \"pic_flip\", \"affine\", got \"apic\"");
+  j["splat"] = "separable";
+  REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: transfer: \"affine\" needs \"splat\": \"point_sprite\""));
+  j = valid_2d();
+  j["mode"] = "shallow_water";
+  j["transfer"] = "pic_flip";
+  REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: transfer: not used in shallow_water mode"));
+}
+
 TEST_CASE("rest_density \"auto\" leaves it to the setup", "[scene]") {
   Json j = valid_2d();
   j["rest_density"] = "auto";

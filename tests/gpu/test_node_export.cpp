@@ -21,6 +21,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <string>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -107,6 +108,41 @@ TEST_CASE("a node restored from a checkpoint continues the run bit for bit", "[g
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
+
+TEST_CASE("under the affine transfer a checkpoint carries the velocity gradients and continues bit for bit",
+          "[gpu][liquid][export][affine]") {
+  std::string text = k_scene;
+  text.replace(text.find("\"substeps\": 5,"), 14, "\"substeps\": 5, \"transfer\": \"affine\",");
+  const liquid::Scene scene = liquid::parse_scene(text, "checkpoint.json");
+  liquid::LiquidNode first(test::gpu(), scene);
+  test::run_steps(first, 25);
+  const liquid::LiquidNode::Checkpoint saved = first.save_checkpoint();
+  REQUIRE(saved.affine.size() == saved.positions.size());  // one texture of C_p in 2D
+  REQUIRE(std::any_of(saved.affine.begin(), saved.affine.end(), [](glm::vec4 c) { return c != glm::vec4(0.0f); }));
+  test::run_steps(first, 25);
+  const liquid::ParticleSnapshot expected = first.read_particles();
+
+  liquid::LiquidNode second(test::gpu(), scene);
+  second.restore_checkpoint(saved);
+  test::run_steps(second, 25);
+  CHECK(same_bits(second.read_particles().velocities, expected.velocities));
+  // The gradients are state: restored as zero, the run differs.
+  liquid::LiquidNode::Checkpoint flat = saved;
+  std::fill(flat.affine.begin(), flat.affine.end(), glm::vec4(0.0f));
+  liquid::LiquidNode third(test::gpu(), scene);
+  third.restore_checkpoint(flat);
+  test::run_steps(third, 25);
+  CHECK_FALSE(same_bits(third.read_particles().velocities, expected.velocities));
+  // A checkpoint of the chapter's transfer does not fit.
+  liquid::LiquidNode::Checkpoint none = saved;
+  none.affine.clear();
+  CHECK_THROWS_WITH(second.restore_checkpoint(none), Catch::Contains("does not match this scene"));
+  liquid::LiquidNode::Checkpoint broken = saved;
+  broken.affine[2].y = std::nanf("");
+  CHECK_THROWS_WITH(second.restore_checkpoint(broken),
+                    Catch::StartsWith("liquid: the checkpoint's velocity gradients hold a non-finite value (particle 2)"));
+  REQUIRE_NO_VALIDATION_MESSAGES();
+}
 TEST_CASE("grids rebuilt from the particles read the rest density of the initial lattice", "[gpu][liquid][export]") {
   liquid::LiquidNode node(test::gpu(), test::shipped_scene("rest_pool_2d"));
   liquid::VolumeFrame before = liquid::read_volume(test::gpu(), node);

@@ -19,6 +19,7 @@ void sample_grid(GRID_SAMPLER velocity, GRID_SAMPLER splat, vec3 x, bool with_sp
   const int corners = 4;
   f.z = 0.0;
   base.z = 0;
+
 #endif
   for (int i = 0; i < corners; ++i) {
     ivec3 o = ivec3(i & 1, (i >> 1) & 1, (i >> 2) & 1);
@@ -39,5 +40,57 @@ void sample_grid(GRID_SAMPLER velocity, GRID_SAMPLER splat, vec3 x, bool with_sp
     u_old /= total;
   }
 }
+
+#if AFFINE
+// The affine transfer (APIC, Jiang et al. 2015) with the splat's own kernel: u' and u at the
+// particle and u''s gradient C_p, from a weighted least-squares fit of a linear field
+// u(x_p + d) = a + C d to the cells within the kernel's radius that hold liquid, weighted by the
+// splat's w(d). Both transfers then use the same weights, as APIC needs: the splat extrapolates
+// u_p + C_p d over that radius, and a gradient of the bilinear interpolant (two cells wide) carried
+// three cells out amplified the grid's shortest waves until the liquid blew up. A fit, not a mean,
+// so that a linear field comes back exactly also where the free surface cuts the kernel.
+// Returns false (and leaves the outputs) where too few cells hold liquid to fit.
+bool fit_grid_affine(GRID_SAMPLER velocity, GRID_SAMPLER splat, vec3 x, out vec3 u_new, out mat3 c_new,
+                     out vec3 u_old) {
+  float r = u.kernel_radius;
+  vec3 g = x / cell_size() - 0.5;  // in cells, cell centres at whole numbers
+  ivec3 n = grid_cells();
+  ivec3 lo = max(ivec3(ceil(g - r)), ivec3(0)), hi = min(ivec3(floor(g + r)), n - 1);
+#if DIM == 2
+  lo.z = 0;
+  hi.z = 0;
+  g.z = 0.0;
+#endif
+  mat4 normal = mat4(0.0);
+  mat3x4 fit_new = mat3x4(0.0), fit_old = mat3x4(0.0);  // per velocity component, sum w u b
+  for (int z = lo.z; z <= hi.z; ++z)
+    for (int y = lo.y; y <= hi.y; ++y)
+      for (int xi = lo.x; xi <= hi.x; ++xi) {
+        vec3 d = vec3(xi, y, z) - g;
+        float t = 1.0 - dot(d, d) / (r * r);
+        if (t <= 0.0) continue;
+        vec4 cell = fetch_grid(velocity, ivec3(xi, y, z));
+        if (cell.a < 0.5) continue;  // no liquid in this cell
+        vec4 s = fetch_grid(splat, ivec3(xi, y, z));
+        float w = t * t * t;
+        vec4 b = vec4(1.0, d);
+        normal += w * outerProduct(b, b);
+        fit_new += w * outerProduct(b, cell.rgb);
+        fit_old += w * outerProduct(b, s.rgb / max(s.a, k_fluid_epsilon));
+      }
+#if DIM == 2
+  normal[3][3] = 1.0;  // no z: its coefficient is zero
+#endif
+  if (abs(determinant(normal)) < 1e-6) return false;
+  mat4 solve = inverse(normal);
+  mat3x4 coefficients_new = solve * fit_new, coefficients_old = solve * fit_old;
+  for (int j = 0; j < 3; ++j) {
+    u_new[j] = coefficients_new[j][0];
+    u_old[j] = coefficients_old[j][0];
+    for (int a = 0; a < 3; ++a) c_new[a][j] = coefficients_new[j][a + 1] / cell_size();
+  }
+  return true;
+}
+#endif
 
 #endif

@@ -6,7 +6,8 @@
 // through u', clamped inside the domain at each stage:
 //   x_mid = x_p + dt/2 u'(x_p),  x_p' = x_p + dt u'(x_mid)
 // (the chapter's printed formula drops x_p from both lines). Texels past the active count are
-// inactive (w = 0); texels in an emitter's range this step are spawned at its nozzle.
+// inactive (w = 0); texels in an emitter's range this step are spawned at its nozzle. Under the
+// affine transfer (AFFINE) it also writes C_p, the gradient of u' at x_p.
 #extension GL_GOOGLE_include_directive : require
 #define LIQUID_BODIES
 #include "liquid/common.glsl"
@@ -20,6 +21,31 @@ layout(set = 0, binding = LIQUID_BINDING_PARTICLE_GRID_VELOCITY) uniform GRID_SA
 layout(location = 0) in vec2 v_uv;
 layout(location = 0) out vec4 out_position;
 layout(location = 1) out vec4 out_velocity;
+#if AFFINE
+// C_p's columns d u / d x_a (1/s): 2D packed as (x column xy, y column xy); 3D one per axis.
+layout(location = 2) out vec4 out_affine0;
+#if DIM == 3
+layout(location = 3) out vec4 out_affine1;
+layout(location = 4) out vec4 out_affine2;
+#endif
+#endif
+
+// The affine transfer's C_p of the new particle (zero for an inactive or new one); nothing without
+// the affine transfer, whose variants' code is then the chapter's alone.
+#if AFFINE
+void write_affine(mat3 columns) {
+#if DIM == 3
+  out_affine0 = vec4(columns[0], 0.0);
+  out_affine1 = vec4(columns[1], 0.0);
+  out_affine2 = vec4(columns[2], 0.0);
+#else
+  out_affine0 = vec4(columns[0].xy, columns[1].xy);
+#endif
+}
+#define WRITE_AFFINE(columns) write_affine(columns)
+#else
+#define WRITE_AFFINE(columns)
+#endif
 
 vec3 grid_velocity(vec3 x) {
   vec3 u_new, unused;
@@ -55,6 +81,7 @@ void emit(int index, EmitterRange e) {
 #endif
   out_position = vec4(clamp_to_domain(e.position + offset + axis * along), 1.0);
   out_velocity = vec4(e.velocity, 0.0);
+  WRITE_AFFINE(mat3(0.0));
 }
 
 // Obstacle i: a particle at x inside it or within `skin` of it is moved back to that distance from
@@ -78,6 +105,7 @@ void main() {
   if (index >= u.active_after) {  // inactive texel
     out_position = vec4(0.0);
     out_velocity = vec4(0.0);
+    WRITE_AFFINE(mat3(0.0));
     return;
   }
   if (HAS_EMITTERS && index >= u.active_before) {  // emitted this step
@@ -88,6 +116,7 @@ void main() {
       }
     out_position = vec4(0.0);
     out_velocity = vec4(0.0);
+    WRITE_AFFINE(mat3(0.0));
     return;
   }
 
@@ -99,6 +128,17 @@ void main() {
   // Section 5.1: PIC/FLIP blend.
   vec3 u_new, u_old;
   sample_grid(u_velocity, u_splat, x, true, u_new, u_old);
+#if AFFINE
+  // The affine transfer: u', u and C_p from the fit with the splat's kernel (grid_sample.glsl),
+  // C_p deposited with u_p by the next splat.
+  mat3 c_new = mat3(0.0);
+  vec3 fit_new, fit_old;
+  if (fit_grid_affine(u_velocity, u_splat, x, fit_new, c_new, fit_old)) {
+    u_new = fit_new;
+    u_old = fit_old;
+  }
+  write_affine(c_new);
+#endif
   v = pic * u_new + (1.0 - pic) * (v + u_new - u_old);
 
   // Section 5.2: RK2 (midpoint) through the updated grid, clamped inside the domain at each stage.

@@ -6,6 +6,10 @@
 
 layout(location = 0) flat in vec4 v_point;  // xy centre (pixels), z 1 - dz^2/r^2, w 1/r^2: no uniform read here
 layout(location = 1) flat in vec3 v_velocity;
+#if AFFINE
+layout(location = 3) flat in vec3 v_affine_x;  // C_p's x and y columns times h (splat.vert)
+layout(location = 4) flat in vec3 v_affine_y;
+#endif
 layout(location = 0) out vec4 out_splat;
 
 void main() {
@@ -19,5 +23,10 @@ void main() {
   vec2 cells = vec2(u.grid_cells.xy);
   w = floor(gl_FragCoord.xy / cells) == floor(v_point.xy / cells) ? w : 0.0;
 #endif
+#if AFFINE
+  // The affine transfer: u_p + C_p (x_i - x_p), x_i - x_p in cells here (its z part is in v_velocity).
+  out_splat = vec4(w * (v_velocity + d.x * v_affine_x + d.y * v_affine_y), w);
+#else
   out_splat = vec4(w * v_velocity, w);
+#endif
 }

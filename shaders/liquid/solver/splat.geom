@@ -11,6 +11,15 @@ layout(location = 1) flat in vec3 v_velocity_in[];
 layout(location = 2) flat in vec3 v_route_in[];
 layout(location = 0) flat out vec4 v_point;
 layout(location = 1) flat out vec3 v_velocity;
+#ifndef AFFINE
+#define AFFINE 0
+#endif
+#if AFFINE
+layout(location = 3) flat in vec3 v_affine_x_in[];
+layout(location = 4) flat in vec3 v_affine_y_in[];
+layout(location = 3) flat out vec3 v_affine_x;
+layout(location = 4) flat out vec3 v_affine_y;
+#endif
 
 void main() {
   if (v_route_in[0].x < 0.0) return;  // the slice is out of the kernel's reach
@@ -21,6 +30,10 @@ void main() {
     gl_Layer = int(v_route_in[0].x);
     v_point = v_point_in[0];
     v_velocity = v_velocity_in[0];
+#if AFFINE
+    v_affine_x = v_affine_x_in[0];
+    v_affine_y = v_affine_y_in[0];
+#endif
     EmitVertex();
   }
   EndPrimitive();

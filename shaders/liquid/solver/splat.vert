@@ -24,9 +24,20 @@ layout(set = 0, binding = LIQUID_BINDING_SPLAT_VELOCITIES) uniform sampler2D u_v
 layout(location = 0) flat out vec4 v_point;     // xy particle in target pixels (cells; the atlas's
                                                 // texels there), z 1 - dz^2/r^2 (dz: slice offset,
                                                 // 0 in 2D), w 1/r^2 (cells^-2)
-layout(location = 1) flat out vec3 v_velocity;  // m/s
+layout(location = 1) flat out vec3 v_velocity;  // m/s (with the affine transfer: at the point's slice)
 #if GEOMETRY_LAYER
 layout(location = 2) flat out vec3 v_route;     // x the slice (-1: dropped), yz the chord in clip units
+#endif
+#if AFFINE
+// The affine transfer: C_p's columns (1/s), and its x and y columns times h for the fragment, which
+// adds C_p (x_i - x_p) to the velocity it deposits (its z part is the slice's, added here).
+layout(set = 0, binding = LIQUID_BINDING_SPLAT_AFFINE) uniform sampler2D u_affine0;
+#if DIM == 3
+layout(set = 0, binding = LIQUID_BINDING_SPLAT_AFFINE + 1) uniform sampler2D u_affine1;
+layout(set = 0, binding = LIQUID_BINDING_SPLAT_AFFINE + 2) uniform sampler2D u_affine2;
+#endif
+layout(location = 3) flat out vec3 v_affine_x;  // m/s per cell
+layout(location = 4) flat out vec3 v_affine_y;
 #endif
 
 void main() {
@@ -35,6 +46,14 @@ void main() {
   vec3 position = texelFetch(u_positions, texel, 0).xyz;
   v_velocity = texelFetch(u_velocities, texel, 0).xyz;
   vec3 g = position / cell_size();  // cell c spans [c, c + 1), centre c + 0.5
+#if AFFINE && DIM == 3
+  v_affine_x = texelFetch(u_affine0, texel, 0).xyz * cell_size();
+  v_affine_y = texelFetch(u_affine1, texel, 0).xyz * cell_size();
+#elif AFFINE
+  vec4 affine = texelFetch(u_affine0, texel, 0);
+  v_affine_x = vec3(affine.xy, 0.0) * cell_size();
+  v_affine_y = vec3(affine.zw, 0.0) * cell_size();
+#endif
   float r = u.kernel_radius;
   float chord = r;
   float dz2 = 0.0;
@@ -63,6 +82,9 @@ void main() {
   gl_Layer = layer;
 #endif
   dz2 = dz * dz;
+#if AFFINE
+  v_velocity += texelFetch(u_affine2, texel, 0).xyz * (dz * cell_size());
+#endif
   chord = sqrt(r * r - dz2);
 #endif
   v_point = vec4(target, 1.0 - dz2 / (r * r), 1.0 / (r * r));
