@@ -15,6 +15,14 @@ double sloshing_period(double length, double depth, double gravity) {
   return 2.0 * std::numbers::pi / std::sqrt(gravity * k * std::tanh(k * depth));
 }
 
+SloshingTank sloshing_tank(int dimension, int cells_along) {
+  SloshingTank tank;
+  tank.dimension = dimension;
+  tank.cells_along = cells_along;
+  tank.width = 6.0 * tank.length / cells_along;
+  return tank;
+}
+
 Scene sloshing_scene(const Scene& physics, const SloshingTank& tank) {
   Scene base = physics;
   base.fluid_blocks.clear();

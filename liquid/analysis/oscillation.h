@@ -22,6 +22,10 @@ struct SloshingTank {
   int cells_along = 128;    // grid cells along L
 };
 
+// The tank of `dimension` on `cells_along` cells along L, in 3D six cells across (the mode is
+// uniform along z): the one liquid_validate and the tests run.
+SloshingTank sloshing_tank(int dimension, int cells_along);
+
 // The first mode's period by linear theory: omega^2 = g k tanh(k h), k = pi / L (s).
 double sloshing_period(double length, double depth, double gravity);
 

@@ -235,10 +235,7 @@ liquid::Oscillation sloshing_with(liquid::Transfer transfer, liquid::GridPath pa
   liquid::Scene physics = test::shipped_scene("rest_pool_2d");
   physics.splat = liquid::SplatMode::PointSprite;
   physics.transfer = transfer;
-  liquid::SloshingTank tank;
-  tank.dimension = dimension;
-  tank.cells_along = cells;
-  tank.width = 6.0 * tank.length / cells;
+  const liquid::SloshingTank tank = liquid::sloshing_tank(dimension, cells);
   const liquid::Scene scene = liquid::sloshing_scene(physics, tank);
   liquid::LiquidNode node(dimension == 3 ? test::gpu_for(path) : test::gpu(), scene,
                           dimension == 3 ? test::options_for(path) : liquid::LiquidOptions{});

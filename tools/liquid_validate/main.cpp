@@ -343,10 +343,7 @@ void sloshing(engine::vk::Context& context, const Options& o, std::vector<Check>
                                                               {2, 128, 0.02, 0.02, true},
                                                               {3, 64, 0.03, 0.03, true}};
   for (const Case& c : cases) {
-    liquid::SloshingTank tank;
-    tank.dimension = c.dimension;
-    tank.cells_along = c.cells;
-    tank.width = 6.0 * tank.length / c.cells;  // six cells across: the mode is uniform along z
+    const liquid::SloshingTank tank = liquid::sloshing_tank(c.dimension, c.cells);
     liquid::Scene scene = liquid::sloshing_scene(physics, tank);
     scene.name = "sloshing " + std::to_string(c.dimension) + "D, " + std::to_string(c.cells) + " cells along L";
     const double g = glm::length(scene.gravity);
@@ -381,10 +378,7 @@ void budget(engine::vk::Context& context, const Options& o, std::vector<Check>& 
     return;
   }
   for (int dimension : o.quick ? std::vector<int>{2} : std::vector<int>{2, 3}) {
-    liquid::SloshingTank tank;
-    tank.dimension = dimension;
-    tank.cells_along = 64;
-    tank.width = 6.0 * tank.length / tank.cells_along;
+    const liquid::SloshingTank tank = liquid::sloshing_tank(dimension, 64);
     liquid::Scene scene = liquid::sloshing_scene(physics, tank);
     const std::string name = "budget " + std::to_string(dimension) + "D sloshing, 64 cells";
     const double period = liquid::sloshing_period(tank.length, tank.depth, glm::length(scene.gravity));

@@ -49,7 +49,7 @@ void sample_grid(GRID_SAMPLER velocity, GRID_SAMPLER splat, vec3 x, bool with_sp
 // u_p + C_p d over that radius, and a gradient of the bilinear interpolant (two cells wide) carried
 // three cells out amplified the grid's shortest waves until the liquid blew up. A fit, not a mean,
 // so that a linear field comes back exactly also where the free surface cuts the kernel.
-// Returns false (and leaves the outputs) where too few cells hold liquid to fit.
+// Returns false (its outputs then unset) where too few cells hold liquid to fit.
 bool fit_grid_affine(GRID_SAMPLER velocity, GRID_SAMPLER splat, vec3 x, out vec3 u_new, out mat3 c_new,
                      out vec3 u_old) {
   float r = u.kernel_radius;

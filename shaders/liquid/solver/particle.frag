@@ -127,17 +127,18 @@ void main() {
 
   // Section 5.1: PIC/FLIP blend.
   vec3 u_new, u_old;
-  sample_grid(u_velocity, u_splat, x, true, u_new, u_old);
 #if AFFINE
   // The affine transfer: u', u and C_p from the fit with the splat's kernel (grid_sample.glsl),
-  // C_p deposited with u_p by the next splat.
-  mat3 c_new = mat3(0.0);
-  vec3 fit_new, fit_old;
-  if (fit_grid_affine(u_velocity, u_splat, x, fit_new, c_new, fit_old)) {
-    u_new = fit_new;
-    u_old = fit_old;
+  // C_p deposited with u_p by the next splat; the chapter's interpolation where too few cells
+  // hold liquid to fit.
+  mat3 c_new;
+  if (!fit_grid_affine(u_velocity, u_splat, x, u_new, c_new, u_old)) {
+    sample_grid(u_velocity, u_splat, x, true, u_new, u_old);
+    c_new = mat3(0.0);
   }
   write_affine(c_new);
+#else
+  sample_grid(u_velocity, u_splat, x, true, u_new, u_old);
 #endif
   v = pic * u_new + (1.0 - pic) * (v + u_new - u_old);
 
