@@ -43,8 +43,9 @@ engine::vk::GraphicsPipelineDesc raymarch_pipeline_desc(const LiquidNode& node, 
                                                                     (transmit ? shader_feature::TRANSMIT : 0u));
   return engine::vk::GraphicsPipelineDesc{
       .name = background_only ? "liquid.raymarch.background" : "liquid.raymarch",
-      .vertex = engine::passes::fullscreen_vertex_shader(),
+      .vertex = shader_variant(shaders::raymarch_tile_vert),
       .fragment = fragment,
+      .topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST,
       .color_formats = {color_format},
       .blend = {transmit    ? engine::vk::BlendMode::Transmit
                 : composite ? engine::vk::BlendMode::Alpha
@@ -54,49 +55,33 @@ engine::vk::GraphicsPipelineDesc raymarch_pipeline_desc(const LiquidNode& node, 
       .depth_write = true,
       .depth_compare = reversed_z ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL,
       .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
-                   {LIQUID_BINDING_VIEW_UNIFORMS, DescriptorKind::UniformBuffer, VK_SHADER_STAGE_FRAGMENT_BIT},
+                   {LIQUID_BINDING_VIEW_UNIFORMS, DescriptorKind::UniformBuffer,
+                    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
                    {LIQUID_BINDING_RAYMARCH_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
-                   {LIQUID_BINDING_RAYMARCH_OCCUPANCY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
+                   {LIQUID_BINDING_RAYMARCH_OCCUPANCY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
+                   {LIQUID_BINDING_RAYMARCH_COARSE, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
+                   {LIQUID_BINDING_RAYMARCH_TILES, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
       .specialization = raymarch_specialization(node, composite, background_only,
                                                 composite ? composite_output_encoding(color_format).value_or(0) : 0)};
 }
 
-// The pixels (half-open, clamped to the frame) that rays into the domain box can cover: the bounds
-// of its eight corners projected, a pixel wider each side for rounding; the whole frame when a
-// corner lies behind the camera. The pixel at (x, y) shows the ray through NDC 2 (x + 0.5) / width - 1
-// (fullscreen.vert and raymarch.frag).
-VkRect2D domain_screen_rect(const glm::mat4& view_projection, glm::vec3 domain, VkRect2D viewport) {
-  const VkRect2D frame = viewport;
-  const uint32_t width = viewport.extent.width, height = viewport.extent.height;
-  glm::vec2 lo(1e30f), hi(-1e30f);
-  for (int corner = 0; corner < 8; ++corner) {
-    const glm::vec3 p = domain * glm::vec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
-    const glm::vec4 clip = view_projection * glm::vec4(p, 1.0f);
-    if (clip.w <= 1e-6f) return frame;
-    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-    lo = glm::min(lo, ndc);
-    hi = glm::max(hi, ndc);
-  }
-  const glm::vec2 size{float(width), float(height)};
-  const glm::vec2 first = glm::clamp(glm::floor((lo * 0.5f + 0.5f) * size) - 1.0f, glm::vec2(0.0f), size);
-  const glm::vec2 end = glm::clamp(glm::ceil((hi * 0.5f + 0.5f) * size) + 1.0f, glm::vec2(0.0f), size);
-  if (end.x <= first.x || end.y <= first.y) return {{0, 0}, {0, 0}};
-  return {{viewport.offset.x + int32_t(first.x), viewport.offset.y + int32_t(first.y)},
-          {uint32_t(end.x - first.x), uint32_t(end.y - first.y)}};
+// The tank's frame (tank_frame.vert, .frag), drawn over the raymarched frame, depth-tested against it.
+engine::vk::GraphicsPipelineDesc tank_frame_pipeline_desc() {
+  return engine::vk::GraphicsPipelineDesc{
+      .name = "liquid.tank_frame",
+      .vertex = shader_variant(shaders::tank_frame_vert),
+      .fragment = shader_variant(shaders::tank_frame_frag),
+      .color_formats = {k_color_format},
+      .depth_format = k_depth_format,
+      .depth_test = true,
+      .depth_write = true,
+      .depth_compare = VK_COMPARE_OP_LESS,
+      .bindings = {{LIQUID_BINDING_SOLVER_UNIFORMS, DescriptorKind::UniformBuffer,
+                    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
+                   {LIQUID_BINDING_VIEW_UNIFORMS, DescriptorKind::UniformBuffer,
+                    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT}}};
 }
-
-// The frame outside `inner`, as up to four bands: above, below, left and right of it.
-std::vector<VkRect2D> frame_around(VkRect2D inner, uint32_t width, uint32_t height) {
-  if (inner.extent.width == 0 || inner.extent.height == 0) return {VkRect2D{{0, 0}, {width, height}}};
-  const uint32_t x0 = uint32_t(inner.offset.x), y0 = uint32_t(inner.offset.y);
-  const uint32_t x1 = x0 + inner.extent.width, y1 = y0 + inner.extent.height;
-  std::vector<VkRect2D> bands;
-  if (y0 > 0) bands.push_back({{0, 0}, {width, y0}});
-  if (y1 < height) bands.push_back({{0, int32_t(y1)}, {width, height - y1}});
-  if (x0 > 0) bands.push_back({{0, int32_t(y0)}, {x0, inner.extent.height}});
-  if (x1 < width) bands.push_back({{int32_t(x1), int32_t(y0)}, {width - x1, inner.extent.height}});
-  return bands;
-}
+constexpr uint32_t k_tank_frame_vertices = 12 * 6;  // tank_frame.vert: 12 bars
 
 }  // namespace
 
@@ -138,6 +123,7 @@ RaymarchPass::RaymarchPass(engine::vk::Context& context, const LiquidNode& node,
                               .color_formats = {VK_FORMAT_R16_SFLOAT},
                               .bindings = {{LIQUID_BINDING_OCCUPANCY_DENSITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}},
                               .push_constant_size = sizeof(gpu::OccupancyPush)}),
+      coarse_(context, node, bricks_),
       // Compositing takes a pipeline per host format instead (composite_pipelines_).
       raymarch_(output == ViewOutput::HostTargets
                     ? engine::vk::GraphicsPipeline()
@@ -147,8 +133,11 @@ RaymarchPass::RaymarchPass(engine::vk::Context& context, const LiquidNode& node,
       nearest_(context, VK_FILTER_NEAREST),
       uniforms_(context, node, sizeof(gpu::RaymarchUniforms)),
       composite_(output == ViewOutput::HostTargets) {
-  // Composited, pixels outside the box show the host's frame: nothing to draw there.
-  if (!composite_) background_ = engine::vk::GraphicsPipeline(context, raymarch_pipeline_desc(node, bricks_, false, true));
+  // Composited, the tiles without liquid show the host's frame: nothing to draw there.
+  if (!composite_) {
+    background_ = engine::vk::GraphicsPipeline(context, raymarch_pipeline_desc(node, bricks_, false, true));
+    tank_frame_ = engine::vk::GraphicsPipeline(context, tank_frame_pipeline_desc());
+  }
   if (!composite_) {
     meshes_ = std::make_unique<MeshDrawPass>(context, node, k_color_format, k_depth_format);
     if (meshes_->empty()) meshes_.reset();
@@ -202,6 +191,13 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
   render.brick_cells = float(k_brick_cells);
   render.brick_columns = bricks_.tiles.x;
   render.brick_rows = bricks_.tiles.y;
+  const CoarseMarch::Sizes sizes = CoarseMarch::sizes(viewport.extent);
+  render.viewport_width = float(viewport.extent.width);
+  render.viewport_height = float(viewport.extent.height);
+  render.coarse_width = int(sizes.rays.width);
+  render.coarse_height = int(sizes.rays.height);
+  render.tiles_x = int(sizes.tiles.width);
+  render.tiles_y = int(sizes.tiles.height);
   const engine::vk::UniformSlice view = uniforms_.push(render);
 
   // Occupancy: one texel per brick, the brick's largest density.
@@ -238,35 +234,54 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
   if (meshes_)
     drawn = meshes_->add_to(graph, {graph.create_image("liquid.color", color_desc), graph.create_image("liquid.depth", depth_desc)},
                             vp, viewport, render.sun_direction);
-  // The march runs only where rays can reach the domain box; the rest of the frame, a cheaper
-  // specialization without the liquid (same image there: those rays miss the box).
+  const auto bind_march = [&](PassBuilder& b, const engine::vk::GraphicsPipeline& pipeline) {
+    engine::passes::PassBindings bindings(pipeline);
+    bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, solver);
+    bindings.bind_uniform(LIQUID_BINDING_VIEW_UNIFORMS, view);
+    bindings.bind_image(b, LIQUID_BINDING_RAYMARCH_DENSITY, density, linear_.handle());
+    bindings.bind_image(b, LIQUID_BINDING_RAYMARCH_OCCUPANCY, occupancy, nearest_.handle());
+    return bindings;
+  };
+  const CoarseMarch::Outputs coarse =
+      coarse_.add_to(graph, bind_march, view, nearest_.handle(), vp, setup.domain, viewport);
+
+  // The full-resolution raymarch, as tiles over the view: those with liquid with the whole shader,
+  // the others (not when compositing: they show the host's frame) with the specialization without
+  // the liquid.
   struct RaymarchData {
     engine::passes::PassBindings bindings;
     engine::passes::PassBindings background_bindings;
-    VkRect2D box{};
+    engine::passes::PassBindings tank_frame_bindings;
+    VkViewport tiles_viewport{};
     VkViewport viewport{};
-    std::vector<VkRect2D> around;
+    VkRect2D scissor{};
+    uint32_t vertices = 0;
     Outputs out;
   };
   return graph.add_pass<RaymarchData>(
       "liquid.raymarch",
       [&](PassBuilder& b, RaymarchData& d) {
         const auto bind = [&](const engine::vk::GraphicsPipeline& pipeline) {
-          engine::passes::PassBindings bindings(pipeline);
-          bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, solver);
-          bindings.bind_uniform(LIQUID_BINDING_VIEW_UNIFORMS, view);
-          bindings.bind_image(b, LIQUID_BINDING_RAYMARCH_DENSITY, density, linear_.handle());
-          bindings.bind_image(b, LIQUID_BINDING_RAYMARCH_OCCUPANCY, occupancy, nearest_.handle());
+          engine::passes::PassBindings bindings = bind_march(b, pipeline);
+          bindings.bind_image(b, LIQUID_BINDING_RAYMARCH_COARSE, coarse.crossings, nearest_.handle());
+          bindings.bind_image(b, LIQUID_BINDING_RAYMARCH_TILES, coarse.tile_kinds, nearest_.handle());
           return bindings;
         };
         d.bindings = bind(*pipeline);
-        d.box = domain_screen_rect(vp, setup.domain, viewport);
-        d.viewport = {float(viewport.offset.x), float(viewport.offset.y), float(viewport.extent.width),
-                      float(viewport.extent.height), 0.0f, 1.0f};
         if (!composite_) {
           d.background_bindings = bind(background_);
-          d.around = frame_around(d.box, settings.width, settings.height);
+          d.tank_frame_bindings = engine::passes::PassBindings(tank_frame_);
+          d.tank_frame_bindings.bind_uniform(LIQUID_BINDING_SOLVER_UNIFORMS, solver);
+          d.tank_frame_bindings.bind_uniform(LIQUID_BINDING_VIEW_UNIFORMS, view);
         }
+        // The tiles whole (raymarch_tile.vert), cut to the view by the scissor.
+        d.tiles_viewport = {float(viewport.offset.x), float(viewport.offset.y),
+                            float(sizes.tiles.width * LIQUID_RAYMARCH_TILE_PIXELS),
+                            float(sizes.tiles.height * LIQUID_RAYMARCH_TILE_PIXELS), 0.0f, 1.0f};
+        d.viewport = {float(viewport.offset.x), float(viewport.offset.y), float(viewport.extent.width),
+                      float(viewport.extent.height), 0.0f, 1.0f};
+        d.scissor = viewport;
+        d.vertices = sizes.tiles.width * sizes.tiles.height;  // a point each
         Outputs& out = d.out;
         if (targets) {  // over the host's colour, tested against and written into its depth
           out.color = b.write(targets->color, Access::ColorAttachmentBlend);
@@ -280,19 +295,18 @@ RaymarchPass::Outputs RaymarchPass::add_to(engine::graph::RenderGraph& graph, co
                               engine::graph::clear_depth(1.0f));
         }
       },
-      [](PassContext& ctx, const RaymarchData& d) {
-        if (d.box.extent.width > 0 && d.box.extent.height > 0) {
-          d.bindings.bind_and_push(ctx);
-          vkCmdSetViewport(ctx.cmd, 0, 1, &d.viewport);  // the full-screen triangle covers the view
-          vkCmdSetScissor(ctx.cmd, 0, 1, &d.box);
-          engine::passes::draw_fullscreen(ctx.cmd);
-        }
-        if (d.around.empty()) return;
-        d.background_bindings.bind_and_push(ctx);
-        for (const VkRect2D& band : d.around) {
-          vkCmdSetScissor(ctx.cmd, 0, 1, &band);
-          engine::passes::draw_fullscreen(ctx.cmd);
-        }
+      [composite = composite_](PassContext& ctx, const RaymarchData& d) {
+        const auto draw = [&](const engine::passes::PassBindings& bindings, const VkViewport& viewport,
+                              uint32_t vertices) {
+          bindings.bind_and_push(ctx);
+          vkCmdSetViewport(ctx.cmd, 0, 1, &viewport);
+          vkCmdSetScissor(ctx.cmd, 0, 1, &d.scissor);
+          vkCmdDraw(ctx.cmd, vertices, 1, 0, 0);
+        };
+        draw(d.bindings, d.tiles_viewport, d.vertices);
+        if (composite) return;
+        draw(d.background_bindings, d.tiles_viewport, d.vertices);
+        draw(d.tank_frame_bindings, d.viewport, k_tank_frame_vertices);
       }).out;
 }
 

@@ -1,5 +1,8 @@
 // The 3D view (section 7, figure 3): an occupancy pass (per-brick maximum density, for empty-space
-// skipping) and a full-screen raymarch of the density volume that writes colour and depth.
+// skipping), a coarse march (one ray per 2x2 pixels), a pass that sorts the screen's tiles by
+// whether the coarse rays around them met the liquid, and the full-resolution raymarch of the
+// density volume that writes colour and depth: tiles with liquid march from just before the coarse
+// crossings, the others draw without the liquid's code.
 #pragma once
 
 #include "engine/graph/render_graph.h"
@@ -7,6 +10,7 @@
 #include "engine/vk/sampler.h"
 #include "engine/vk/uniform_arena.h"
 #include "liquid/camera.h"
+#include "liquid/render/coarse_march.h"
 #include "liquid/node.h"
 #include "liquid/physics/setup.h"
 #include "liquid/render/mesh_draw.h"
@@ -59,6 +63,7 @@ class RaymarchPass {
   const LiquidNode& node_;
   GridLayout bricks_;  // the occupancy grid, stored like the node's grids
   engine::vk::GraphicsPipeline occupancy_;
+  CoarseMarch coarse_;
   engine::vk::GraphicsPipeline raymarch_;
   engine::vk::Context& context_;
   // Compositing: one pipeline per host colour format, depth format and depth convention, made on
@@ -70,7 +75,8 @@ class RaymarchPass {
     auto operator<=>(const CompositeKey&) const = default;
   };
   std::map<CompositeKey, std::unique_ptr<engine::vk::GraphicsPipeline>> composite_pipelines_;
-  engine::vk::GraphicsPipeline background_;  // BACKGROUND_ONLY, for pixels whose rays miss the box; not when compositing
+  engine::vk::GraphicsPipeline background_;  // BACKGROUND_ONLY, for the tiles without liquid; not when compositing
+  engine::vk::GraphicsPipeline tank_frame_;  // the domain box's edges over the frame; not when compositing
   engine::vk::Sampler linear_;
   engine::vk::Sampler nearest_;
   ViewUniforms uniforms_;

@@ -119,6 +119,8 @@
 #define LIQUID_BINDING_HEIGHT_FIELD_DENSITY 2
 #define LIQUID_BINDING_RAYMARCH_DENSITY 2
 #define LIQUID_BINDING_RAYMARCH_OCCUPANCY 3
+#define LIQUID_BINDING_RAYMARCH_COARSE 4    // the coarse march's crossings (raymarch_coarse.frag)
+#define LIQUID_BINDING_RAYMARCH_TILES 5     // the screen tiles' kinds (raymarch_tiles.frag)
 #define LIQUID_BINDING_OCCUPANCY_DENSITY 0
 #define LIQUID_BINDING_PARTICLES2D_POSITIONS 0
 

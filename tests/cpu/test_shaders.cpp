@@ -189,7 +189,11 @@ TEST_CASE("the views' uniform and push-constant blocks have the same layout in C
         MEMBER(RaymarchUniforms, fine_step_cells), MEMBER(RaymarchUniforms, bricks),
         MEMBER(RaymarchUniforms, brick_cells), MEMBER(RaymarchUniforms, brick_columns),
         MEMBER(RaymarchUniforms, brick_rows), MEMBER(RaymarchUniforms, near_depth),
-        MEMBER(RaymarchUniforms, exposure)}},
+        MEMBER(RaymarchUniforms, exposure), MEMBER(RaymarchUniforms, viewport_x),
+        MEMBER(RaymarchUniforms, viewport_y), MEMBER(RaymarchUniforms, viewport_width),
+        MEMBER(RaymarchUniforms, viewport_height), MEMBER(RaymarchUniforms, coarse_width),
+        MEMBER(RaymarchUniforms, coarse_height)}},
+      {"raymarch tiles", {MEMBER(RaymarchUniforms, tiles_x), MEMBER(RaymarchUniforms, tiles_y)}},
       {"raymarch atlas", {MEMBER(RaymarchUniforms, brick_columns), MEMBER(RaymarchUniforms, brick_rows)}},
       {"occupancy", {MEMBER(OccupancyPush, brick_cells)}},
       {"occupancy atlas",
@@ -213,6 +217,7 @@ TEST_CASE("the views' uniform and push-constant blocks have the same layout in C
   const std::map<std::string, std::span<const uint32_t>> modules{
       {"raymarch", liquid_shaders::raymarch_frag},           {"occupancy", liquid_shaders::occupancy_frag},
       {"raymarch atlas", liquid_shaders::raymarch_frag_atlas}, {"occupancy atlas", liquid_shaders::occupancy_frag_atlas},
+      {"raymarch tiles", liquid_shaders::raymarch_tile_vert},
       {"height field", liquid_shaders::height_field_vert},   {"height field fragment", liquid_shaders::height_field_frag},
       {"2D view", liquid_shaders::view2d_frag},              {"2D particles", liquid_shaders::particles2d_vert}};
   for (const auto& [module, members] : expected) check_layout(module, modules.at(module), members);

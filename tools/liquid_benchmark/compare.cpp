@@ -19,7 +19,8 @@ const std::vector<std::string>& pipeline_order() {
       "liquid.splat",          "liquid.deposit",        "liquid.splat_spread_x", "liquid.splat_spread_y",
       "liquid.splat_spread_z", "liquid.pressure",       "liquid.potential",      "liquid.potential_x",
       "liquid.potential_y",    "liquid.potential_z",    "liquid.grid",           "liquid.particle",
-      "liquid.occupancy",      "liquid.raymarch",       "liquid.view2d",         "liquid.height_field",
+      "liquid.occupancy",      "liquid.raymarch_coarse", "liquid.raymarch_tiles", "liquid.raymarch",
+      "liquid.view2d",         "liquid.height_field",
       "fxaa.mark",             "fxaa"};
   return order;
 }

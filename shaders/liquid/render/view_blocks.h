@@ -19,6 +19,17 @@
 #define LIQUID_OUTPUT_LINEAR 1
 #define LIQUID_OUTPUT_HDR 2
 
+// The raymarch's first pass marches one ray per LIQUID_RAYMARCH_COARSE_PIXELS^2 pixels (the ray
+// through the corner their block shares); a second classifies screen tiles of
+// LIQUID_RAYMARCH_TILE_PIXELS^2 pixels by whether any coarse ray around them met the liquid: tiles
+// that met none are drawn without the liquid's code, the others march from just before the nearest
+// crossing their coarse neighbours found (raymarch.cpp, raymarch_tiles.glsl).
+#define LIQUID_RAYMARCH_COARSE_PIXELS 4
+#define LIQUID_RAYMARCH_TILE_PIXELS 8
+#define LIQUID_RAYMARCH_NO_CROSSING 1e30  // a coarse ray's distance where it met no liquid
+#define LIQUID_RAYMARCH_TILE_MISS 0u
+#define LIQUID_RAYMARCH_TILE_LIQUID 1u
+
 // 2D view: the specialization constant that draws the liquid (and obstacles) alone, with alpha,
 // into a rectangle of a host's target (its id follows the scene's constants of common.glsl).
 #define LIQUID_VIEW2D_PANEL_ID 13
@@ -46,6 +57,12 @@ LIQUID_STRUCT(RaymarchUniforms) {
   float exposure;          // compositing into an HDR target: the liquid's radiance times this
   float viewport_x;        // the view's viewport origin, pixels: per-pixel noise is placed relative
   float viewport_y;        // to it, so a view draws the same pixels wherever its viewport lies
+  float viewport_width;    // the view's viewport size, pixels
+  float viewport_height;
+  int coarse_width;        // the coarse march's image, texels (LIQUID_RAYMARCH_COARSE_PIXELS)
+  int coarse_height;
+  int tiles_x;             // the screen tiles across the viewport (LIQUID_RAYMARCH_TILE_PIXELS)
+  int tiles_y;
 };
 
 // Occupancy (occupancy.frag), push constants.
