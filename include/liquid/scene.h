@@ -178,8 +178,9 @@ struct Scene {
   // s; when set, pic_ratio is the blend over a step of this length and steps of other lengths
   // blend at the same rate per second (liquid/physics/pic_blend.h); empty: r per step, as the chapter.
   std::optional<float> pic_ratio_reference_step;
-  // s, one simulation step (with adaptive_time_step, the largest); 0: the regime's step at the
-  // scene's cell size (the acoustic CFL the shipped scenes keep to; liquid/physics/time_step.h).
+  // s, one simulation step (with adaptive_time_step, the largest); 0, which a scene file cannot
+  // write (the key left out reads as 0): the regime's step at the scene's cell size (the acoustic
+  // CFL the shipped scenes keep to; liquid/physics/time_step.h).
   float time_step = 0.0f;
   int substeps = 8;                 // steps per rendered frame
   float wall_margin_cells = 0.5f;   // particles are clamped this many cells inside the walls (or where they started)
