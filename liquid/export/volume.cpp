@@ -50,14 +50,16 @@ void for_each_stencil_cell(const VolumeFrame& volume, const glm::vec3& position,
 
 }  // namespace
 
+float density_at(const VolumeFrame& volume, const glm::vec3& position) {
+  float value = 0.0f;
+  for_each_stencil_cell(volume, position, [&](size_t cell, float weight) { value += weight * volume.density[cell]; });
+  return value;
+}
+
 std::vector<float> sample_density(const VolumeFrame& volume, const std::vector<glm::vec4>& positions) {
   std::vector<float> out;
   out.reserve(positions.size());
-  for (const glm::vec4& p : positions) {
-    float value = 0.0f;
-    for_each_stencil_cell(volume, glm::vec3(p), [&](size_t cell, float weight) { value += weight * volume.density[cell]; });
-    out.push_back(value);
-  }
+  for (const glm::vec4& p : positions) out.push_back(density_at(volume, glm::vec3(p)));
   return out;
 }
 

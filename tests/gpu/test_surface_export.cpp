@@ -9,6 +9,7 @@
 #include "tests/support/gpu.h"
 
 #include <catch2/catch.hpp>
+#include <glm/gtc/epsilon.hpp>
 
 #include <chrono>
 #include <cmath>
@@ -122,6 +123,40 @@ TEST_CASE("the exported surface of a pool at rest holds its volume and closes on
     CHECK(std::filesystem::file_size(path) > 1000);
   }
   REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("the surface of a domain full of liquid is its box and of an empty one nothing", "[gpu][liquid][export]") {
+  liquid::VolumeFrame volume;
+  volume.cells = {6, 5, 4};
+  volume.cell_size = 0.1f;
+  volume.origin = {1.0f, 2.0f, 3.0f};
+  const size_t cells = 6 * 5 * 4;
+  volume.density.assign(cells, 1.0f);
+  volume.velocity.assign(cells, glm::vec4(0.5f, 0.0f, 0.0f, 1.0f));
+  const liquid::LiquidSurface full(volume, {});
+  const liquid::SurfaceMesh box = full.mesh(volume);
+  const EdgeCounts edges = count_edges(box);
+  CHECK(edges.not_shared_by_two == 0);
+  CHECK(edges.same_direction_twice == 0);
+  // The six walls' planes, the edges bevelled by the mesher (by about a voxel: 4 % of this small box).
+  glm::vec3 lo(1e9f), hi(-1e9f);
+  for (const glm::vec3& p : box.positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  CHECK(glm::all(glm::epsilonEqual(lo, volume.origin, 1e-4f)));
+  CHECK(glm::all(glm::epsilonEqual(hi, volume.origin + glm::vec3(0.6f, 0.5f, 0.4f), 1e-4f)));
+  INFO("enclosed " << enclosed_volume(box) << " m^3");
+  CHECK(enclosed_volume(box) < 0.6 * 0.5 * 0.4);
+  CHECK(enclosed_volume(box) > 0.95 * 0.6 * 0.5 * 0.4);
+  CHECK(full.signed_distance({1.3f, 2.25f, 3.2f}) == Approx(-0.15f).margin(0.01f));  // band's end: 3 voxels
+  CHECK(full.signed_distance({1.01f, 2.25f, 3.2f}) == Approx(-0.01f).margin(0.002f));
+  for (const glm::vec3& v : box.velocities) REQUIRE(v == glm::vec3(0.5f, 0.0f, 0.0f));
+
+  volume.density.assign(cells, 0.0f);
+  const liquid::LiquidSurface empty(volume, {});
+  CHECK(empty.mesh(volume).triangles.empty());
+  CHECK(empty.signed_distance({1.3f, 2.25f, 3.2f}) == Approx(0.15f));
 }
 
 TEST_CASE("the surface refuses a 2D volume and settings out of range", "[gpu][liquid][export]") {
