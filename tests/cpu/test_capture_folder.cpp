@@ -1,6 +1,6 @@
-// The capture tool's output folder under --overwrite: the replaced run's files are set aside whole
+// The capture tool's output folder: under --overwrite the replaced run's files are set aside whole
 // or not at all, and a run that cannot set them aside, or fails before it does, leaves them as they
-// were.
+// were; which files are a run's.
 #include "tools/liquid_capture/outputs.h"
 
 #include <catch2/catch.hpp>
