@@ -1,6 +1,7 @@
 #include "liquid/export/vdb.h"
 
 #include "liquid/error.h"
+#include "liquid/export/vdb_file.h"
 
 #include <openvdb/openvdb.h>
 
@@ -16,12 +17,6 @@
 
 namespace liquid {
 namespace {
-
-// OpenVDB's grid types must be registered once per process before any file is read or written.
-void initialize_once() {
-  static std::once_flag initialized;
-  std::call_once(initialized, [] { openvdb::initialize(); });
-}
 
 // OpenVDB writes a random UUID into every file's header (Archive::writeHeader: the magic number,
 // three version numbers and a grid-offsets flag, 21 bytes, then the UUID as 36 characters), so two
@@ -63,14 +58,53 @@ void stamp_content_uuid(const std::filesystem::path& path) {
 
 }  // namespace
 
-void write_vdb(const std::filesystem::path& path, const VolumeFrame& volume, const VdbFrame& frame) {
-  initialize_once();
+void initialize_openvdb_once() {
+  static std::once_flag initialized;
+  std::call_once(initialized, [] { openvdb::initialize(); });
+}
 
-  // Index (i, j, k) -> world: scale by the cell size, then shift by half a cell, so voxel centres
-  // land on cell centres (OpenVDB puts a voxel's value at its integer coordinate).
-  openvdb::math::Transform::Ptr transform = openvdb::math::Transform::createLinearTransform(volume.cell_size);
-  transform->postTranslate(openvdb::Vec3d(volume.origin.x, volume.origin.y, volume.origin.z) +
-                           openvdb::Vec3d(0.5 * volume.cell_size));
+openvdb::math::Transform::Ptr voxel_centre_transform(const glm::vec3& origin, double voxel_size) {
+  // Scale by the voxel size, then shift by half a voxel, so voxel centres land where cells' centres
+  // are (OpenVDB puts a voxel's value at its integer coordinate).
+  openvdb::math::Transform::Ptr transform = openvdb::math::Transform::createLinearTransform(voxel_size);
+  transform->postTranslate(openvdb::Vec3d(origin.x, origin.y, origin.z) + openvdb::Vec3d(0.5 * voxel_size));
+  return transform;
+}
+
+openvdb::MetaMap frame_metadata(const VdbFrame& frame, double cell_size) {
+  openvdb::MetaMap meta;
+  meta.insertMeta("time_s", openvdb::DoubleMetadata(frame.time_s));
+  meta.insertMeta("frame", openvdb::Int32Metadata(frame.frame));
+  meta.insertMeta("cell_size_m", openvdb::DoubleMetadata(cell_size));
+  meta.insertMeta("scene", openvdb::StringMetadata(frame.scene));
+  if (frame.fps > 0.0) meta.insertMeta("fps", openvdb::DoubleMetadata(frame.fps));
+  return meta;
+}
+
+void write_vdb_grids(const std::filesystem::path& path, const openvdb::GridPtrVec& grids, const openvdb::MetaMap& meta) {
+  std::filesystem::path temporary = path;
+  temporary += ".partial";
+  try {
+    openvdb::io::File file(temporary.string());
+    file.write(grids, meta);
+    file.close();
+    stamp_content_uuid(temporary);
+  } catch (const std::exception& e) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw liquid::Error(path.string() + ": cannot write (" + e.what() + ")");
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, path, error);
+  if (error) {
+    std::filesystem::remove(temporary, error);
+    throw liquid::Error(path.string() + ": cannot rename into place");
+  }
+}
+
+void write_vdb(const std::filesystem::path& path, const VolumeFrame& volume, const VdbFrame& frame) {
+  initialize_openvdb_once();
+  const openvdb::math::Transform::Ptr transform = voxel_centre_transform(volume.origin, volume.cell_size);
 
   openvdb::FloatGrid::Ptr density = openvdb::FloatGrid::create(0.0f);
   density->setName("density");
@@ -94,37 +128,13 @@ void write_vdb(const std::filesystem::path& path, const VolumeFrame& volume, con
         if (v.w >= 0.5f) u.setValue(c, openvdb::Vec3s(v.x, v.y, v.z));
       }
 
-  openvdb::MetaMap meta;
-  meta.insertMeta("time_s", openvdb::DoubleMetadata(frame.time_s));
-  meta.insertMeta("frame", openvdb::Int32Metadata(frame.frame));
-  meta.insertMeta("cell_size_m", openvdb::DoubleMetadata(volume.cell_size));
-  meta.insertMeta("scene", openvdb::StringMetadata(frame.scene));
-  if (frame.fps > 0.0) meta.insertMeta("fps", openvdb::DoubleMetadata(frame.fps));
   for (openvdb::GridBase* grid : {static_cast<openvdb::GridBase*>(density.get()), static_cast<openvdb::GridBase*>(velocity.get())})
     grid->insertMeta("time_s", openvdb::DoubleMetadata(frame.time_s));
-
-  std::filesystem::path temporary = path;
-  temporary += ".partial";
-  try {
-    openvdb::io::File file(temporary.string());
-    file.write({density, velocity}, meta);
-    file.close();
-    stamp_content_uuid(temporary);
-  } catch (const std::exception& e) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw liquid::Error(path.string() + ": cannot write (" + e.what() + ")");
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) {
-    std::filesystem::remove(temporary, error);
-    throw liquid::Error(path.string() + ": cannot rename into place");
-  }
+  write_vdb_grids(path, {density, velocity}, frame_metadata(frame, volume.cell_size));
 }
 
 VdbContents read_vdb(const std::filesystem::path& path) {
-  initialize_once();
+  initialize_openvdb_once();
   VdbContents out;
   try {
     openvdb::io::File file(path.string());

@@ -39,6 +39,21 @@ TEST_CASE("per-particle density is the grid interpolated between cell centres", 
   CHECK(rho[4] == Approx(7.0f));  // the last cell's centre
 }
 
+TEST_CASE("a surface vertex's velocity is the grid's over the cells that hold liquid", "[export]") {
+  liquid::VolumeFrame v;
+  v.cells = {2, 2, 2};
+  v.cell_size = 1.0f;
+  v.density.assign(8, 0.0f);
+  v.velocity.assign(8, glm::vec4(0.0f));       // air: no liquid, no velocity
+  v.velocity[0] = glm::vec4(1, 0, 0, 1);       // the liquid: cells (0, 0, 0) and (1, 0, 0)
+  v.velocity[1] = glm::vec4(3, 0, 0, 1);
+  const std::vector<glm::vec3> u = liquid::sample_velocity(v, {{0.75f, 1.0f, 1.0f}, {1.0f, 0.5f, 0.5f}, {1.5f, 0.75f, 0.75f}});
+  CHECK(u[0].x == Approx(1.5f));  // a quarter of the way from (0, 0, 0)'s centre to (1, 0, 0)'s; the air left out
+  CHECK(u[1].x == Approx(2.0f));
+  CHECK(u[2].x == Approx(3.0f));  // air and (1, 0, 0) in the stencil
+  CHECK(liquid::sample_velocity(v, {{0.5f, 1.5f, 1.5f}})[0] == glm::vec3(0.0f));  // no liquid: zero
+}
+
 TEST_CASE("scene overrides (the capture tool's --set) are applied to the document and checked like the file", "[scene]") {
   const std::filesystem::path path = scene_file(k_pool);
   using liquid::SceneOverride;

@@ -1,6 +1,6 @@
-// The capture tool's output folder under --overwrite: the replaced run's files are set aside whole
+// The capture tool's output folder: under --overwrite the replaced run's files are set aside whole
 // or not at all, and a run that cannot set them aside, or fails before it does, leaves them as they
-// were.
+// were; which files are a run's.
 #include "tools/liquid_capture/outputs.h"
 
 #include <catch2/catch.hpp>
@@ -92,4 +92,25 @@ TEST_CASE("an --overwrite run that ends well leaves only its own files", "[captu
     run.ended_well();
   }
   CHECK(contents(folder) == std::map<std::string, std::string>{{"frame_00001.png", "new"}});
+}
+
+TEST_CASE("a run's files include its surfaces and meshes and those of the run recorded in the folder", "[capture]") {
+  const fs::path folder = fs::path(LIQUID_TEST_OUTPUT_DIR) / "capture_surface_files";
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  // The recorded run wrote OBJ meshes under names of its own.
+  std::ofstream(folder / "capture.json") << R"({"names": {"frames": "frame_#####.png", "particles": null,
+    "volumes": null, "surfaces": "s_#####.vdb", "meshes": "m_####.obj"}})";
+  for (const char* name : {"s_00001.vdb", "m_0001.obj", "m_0002.obj.partial", "surface_00001.vdb", "mesh_00001.ply",
+                           "notes.txt", "m_0001.ply"})
+    std::ofstream(folder / name) << "x";
+  capture::RunSettings settings;
+  settings.folder = folder;
+  settings.frames = capture::NamePattern::parse("frame_#####.png", "-o", ".png");
+  settings.surfaces = capture::NamePattern::parse("surface_#####.vdb", "--surface-name", ".vdb");
+  settings.meshes = capture::NamePattern::parse("mesh_#####.ply", "--mesh-name", ".ply");
+  std::vector<std::string> names;
+  for (const fs::path& file : capture::run_files(settings)) names.push_back(file.filename().string());
+  CHECK(names == std::vector<std::string>{"capture.json", "m_0001.obj", "m_0002.obj.partial", "mesh_00001.ply",
+                                          "s_00001.vdb", "surface_00001.vdb"});
 }

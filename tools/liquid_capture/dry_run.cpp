@@ -40,7 +40,7 @@ double timed_frame(const RunSettings& settings, engine::vk::Context& context, li
                    liquid::LiquidRenderer* renderer, const liquid::CameraView& camera, tools::FrameLoop& loop,
                    const fs::path& scratch, int steps) {
   const auto begin = std::chrono::steady_clock::now();
-  const FrameResult result = run_frame(loop, node, renderer, camera, steps, settings.particles || settings.volumes);
+  const FrameResult result = run_frame(loop, node, renderer, camera, steps, settings.exports_grids());
   const liquid::ParticleSnapshot particles = node.read_particles();
   node.diagnose(particles);
   if (renderer) FrameWriter(settings, context, scratch, node.scene().name).write(1, node, particles, *result.image);
@@ -69,8 +69,8 @@ void dry_run(const RunSettings& settings, engine::vk::Context& context, liquid::
               settings.frames.name(plan.end).c_str());
   if (settings.particles)
     std::printf(", %s .. %s", settings.particles->name(plan.start).c_str(), settings.particles->name(plan.end).c_str());
-  if (settings.volumes)
-    std::printf(", %s .. %s", settings.volumes->name(plan.start).c_str(), settings.volumes->name(plan.end).c_str());
+  for (const std::optional<NamePattern>* p : {&settings.volumes, &settings.surfaces, &settings.meshes})
+    if (*p) std::printf(", %s .. %s", (*p)->name(plan.start).c_str(), (*p)->name(plan.end).c_str());
   std::printf(", stats.csv, summary.json, capture.json");
   if (settings.checkpoint_every > 0) std::printf(", checkpoint.bin every %d frames", settings.checkpoint_every);
   if (!settings.video.empty()) std::printf("; video %s", settings.video.c_str());

@@ -1,5 +1,6 @@
-// The files of one written frame: the PNG, and on request the particles (PLY) and the grids
-// (OpenVDB), all of one instant: the node's time after the frame's steps.
+// The files of one written frame: the PNG, and on request the particles (PLY), the grids (OpenVDB)
+// and the surface (a level-set VDB and a mesh), all of one instant: the node's time after the
+// frame's steps.
 #pragma once
 
 #include "engine/io/png.h"
@@ -25,7 +26,8 @@ class FrameWriter {
       : settings_(settings), context_(context), folder_(std::move(folder)), scene_name_(std::move(scene_name)) {}
 
   // Writes frame `frame` of `node` (with no frame in flight); each file through a temporary name.
-  void write(int frame, liquid::LiquidNode& node, const liquid::ParticleSnapshot& particles,
+  // Returns the wall time of the surface export (building and writing both files), ms; 0 without it.
+  double write(int frame, liquid::LiquidNode& node, const liquid::ParticleSnapshot& particles,
              const engine::vk::Rgba8Image& image) const;
 
  private:

@@ -1,9 +1,10 @@
 // liquid_capture: the offline frame-capture tool. Runs a scene and writes numbered PNG frames, a
 // statistics table (stats.csv: the solver's diagnostics and each pass's GPU time per frame), a
-// summary, and on request particles (PLY), grids (OpenVDB), a video and checkpoints to resume
-// from. It is a host like any engine: it builds its render graph through the liquid module's
-// public API (LiquidNode, LiquidRenderer); only its dry run and summary read the derived setup
-// (simulation_of(node)). The pieces live in tools/liquid_capture/.
+// summary, and on request particles (PLY), grids (OpenVDB), the surface (a level-set VDB and a
+// mesh), a video and checkpoints to resume from. It is a host like any engine: it builds its
+// render graph through the liquid module's public API (LiquidNode, LiquidRenderer); only its dry
+// run and summary read the derived setup (simulation_of(node)). The pieces live in
+// tools/liquid_capture/.
 #include "engine/io/atomic_file.h"
 #include "engine/vk/context.h"
 #include "liquid/node.h"
@@ -65,7 +66,9 @@ struct FrameStats {
   liquid::Diagnostics diagnostics;
   double wall_ms = 0.0;
   std::map<std::string, double> pass_ms;  // summed over the frame's passes of that name
+  double surface_ms = 0.0;                // the surface export's wall time (a column with --export-surface)
 };
+constexpr const char* k_surface_column = ",surface_ms";
 
 // Each dynamic obstacle's pose, velocity, force and torque in stats.csv (2D: per metre of depth):
 // the columns' names after "body<obstacle index>.", and their values.
@@ -80,13 +83,14 @@ std::vector<float> body_columns(const liquid::BodyState& b) {
 }
 
 // stats.csv's header names the passes of the first written frame (every frame declares the same).
-std::string stats_header(const FrameStats& first) {
+std::string stats_header(const FrameStats& first, bool surface) {
   std::string header =
       "frame,step,time_s,active_particles,outside_domain,inside_obstacles,non_finite,max_density_ratio,mass_kg,"
       "kinetic_energy_J,potential_energy_J,mechanical_energy_J,time_step_s,max_speed_m_s,wall_ms";
   for (const liquid::BodyState& b : first.diagnostics.bodies)
     for (const char* column : k_body_columns) header += ",body" + std::to_string(b.obstacle) + "." + column;
   for (const auto& [name, ms] : first.pass_ms) header += ",gpu_ms." + name;
+  if (surface) header += k_surface_column;
   return header + "\n";
 }
 
@@ -108,6 +112,7 @@ std::string stats_row(const FrameStats& row, const std::string& header) {
       const auto it = row.pass_ms.find(column.substr(7));
       out << ',' << (it == row.pass_ms.end() ? 0.0 : it->second);
     }
+  if (header.find(k_surface_column) != std::string::npos) out << ',' << row.surface_ms;
   out << "\n";
   return out.str();
 }
@@ -191,9 +196,14 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
     const tools::SetupStage stage("liquid_capture", "reading the scene and its meshes");
     return liquid::parse_scene(settings.scene_document, settings.scene_label());
   }();
-  if (settings.volumes && !capture::volume_export_available())
-    throw std::runtime_error("--export-volume: this build has no OpenVDB (install libopenvdb-dev and "
-                             "libboost-iostreams-dev, then configure again)");
+  for (const auto& [requested, flag] :
+       {std::pair{settings.volumes.has_value(), "--export-volume"}, {settings.surfaces.has_value(), "--export-surface"}})
+    if (requested && !capture::volume_export_available())
+      throw std::runtime_error(std::string(flag) + ": this build has no OpenVDB (install libopenvdb-dev and "
+                               "libboost-iostreams-dev, then configure again)");
+  if (settings.surfaces && scene.dimension != 3)
+    throw capture::UsageError("--export-surface: " + settings.scene_label() + " is a " +
+                              std::to_string(scene.dimension) + "D scene; the surface export needs a 3D one");
   check_video(settings, options.overwrite || resuming);
   // A video already there (a replaced run's, or the one a resumed run made) is replaced only by a
   // run that ends well: a failed one removes its own instead.
@@ -262,6 +272,7 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
 
   std::string header = stats.text().substr(0, stats.text().find('\n') + 1);
   int last_done = first_frame - 1;
+  double surface_ms_total = 0.0;  // over the frames this process wrote
   // Ends the run where it stands: stats.csv and summary.json for the frames written, the video closed.
   const auto conclude = [&](const std::string& status) {
     stats.finish();
@@ -299,14 +310,15 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
       // Frame f is the state after f frames of steps: frame 0 takes none.
       const int steps = frame == 0 ? 0 : capture::steps_for_frame(node, plan.steps_per_frame, plan.frame_seconds());
       const capture::FrameResult result = capture::run_frame(loop, node, written ? &renderer : nullptr, camera, steps,
-                                                             frame == 0 || settings.particles || settings.volumes);
+                                                             frame == 0 || settings.exports_grids());
       const liquid::ParticleSnapshot particles = node.read_particles();
       FrameStats row{frame, node.diagnose(particles), result.time.wall_ms, {}};  // throws on an unstable state
       node.adapt_time_step(row.diagnostics);
       if (written) {
         for (const auto& t : result.time.passes) row.pass_ms[t.name] += t.milliseconds;
-        writer.write(frame, node, particles, *result.image);
-        if (header.empty()) header = stats_header(row);
+        row.surface_ms = writer.write(frame, node, particles, *result.image);
+        surface_ms_total += row.surface_ms;
+        if (header.empty()) header = stats_header(row, settings.surfaces.has_value());
         stats.append(header, stats_row(row, header));
         folder.wrote_output();
       }
@@ -350,7 +362,11 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
   }
   conclude("finished");
   folder.ended_well();
-  std::printf("liquid_capture: wrote frames %d to %d to %s\n", plan.start, plan.end, settings.folder.string().c_str());
+  std::printf("liquid_capture: wrote frames %d to %d to %s", plan.start, plan.end, settings.folder.string().c_str());
+  const int written_here = plan.end - std::max(first_frame, plan.start) + 1;
+  if (settings.surfaces && written_here > 0)
+    std::printf("; the surface export took %.1f ms a frame", surface_ms_total / written_here);
+  std::printf("\n");
   return 0;
 }
 

@@ -2,6 +2,7 @@
 
 #include "tools/common/grid_path_flag.h"
 
+#include "liquid/export/surface.h"
 #include "liquid/physics/time_step.h"
 #include "liquid/scene.h"
 #include "liquid/scene/format.h"
@@ -59,6 +60,21 @@ void add_options(CLI::App& app, CaptureOptions& o) {
   app.add_flag("--export-volume", o.export_volume, "write each frame's density and velocity grids as OpenVDB");
   app.add_option("--volume-name", o.volume_name, "VDB name pattern (default volume_#####.vdb); implies --export-volume")
       ->check(non_empty("a name pattern"));
+  app.add_flag("--export-surface", o.export_surface,
+               "write each frame's liquid surface: a level-set VDB (grid 'surface') and a triangle mesh");
+  app.add_option("--surface-name", o.surface_name, "level-set VDB name pattern (default surface_#####.vdb); "
+                                                   "implies --export-surface")
+      ->check(non_empty("a name pattern"));
+  app.add_option("--mesh-name", o.mesh_name, "mesh name pattern (default mesh_#####.ply, .obj with "
+                                             "--surface-format obj); implies --export-surface")
+      ->check(non_empty("a name pattern"));
+  app.add_option("--surface-voxel", o.surface_voxel, "surface voxel size in density-grid cells: a cell divided by "
+                                                     "1 to 8 (1, 0.5, 0.333, 0.25, ..., 0.125; default 0.5)")
+      ->check(finite_range(1.0 / liquid::k_max_surface_voxels_per_cell, 1.0));
+  app.add_option("--surface-adaptivity", o.surface_adaptivity, "mesh adaptivity, 0 (every voxel) to 1 (default 0)")
+      ->check(finite_range(0.0, 1.0));
+  app.add_option("--surface-format", o.surface_format, "mesh file format: ply (with vertex velocities) or obj")
+      ->check(CLI::IsMember({"ply", "obj"}));
   app.add_option("--set", o.set, "override a scene field: key=value, dotted paths (fluid_blocks.0.max=[0.1,0.2,0.2])")
       ->take_all();
   app.add_option("--checkpoint-every", o.checkpoint_every, "save a checkpoint every N frames (for --resume)")
@@ -111,9 +127,36 @@ void check_name_lengths(const RunSettings& r) {
   check(r.frames, "-o");
   if (r.particles) check(*r.particles, "--particles-name");
   if (r.volumes) check(*r.volumes, "--volume-name");
+  if (r.surfaces) check(*r.surfaces, "--surface-name");
+  if (r.meshes) check(*r.meshes, "--mesh-name");
   if (!r.video.empty() && fs::path(r.video).filename().string().size() + k_temporary_suffix_bytes > k_max_file_name_bytes)
     throw std::invalid_argument("--video " + liquid::printable(r.video) + ": the file name is longer than " +
                                 std::to_string(k_max_file_name_bytes - k_temporary_suffix_bytes) + " bytes");
+}
+
+// --export-surface and the flags that shape it (which need it, or imply it by naming a file).
+void settle_surface(const CaptureOptions& o, RunSettings& r) {
+  const bool named = !o.surface_name.empty() || !o.mesh_name.empty();
+  if (!o.export_surface && !named) {
+    if (o.surface_voxel || o.surface_adaptivity || !o.surface_format.empty())
+      throw UsageError(std::string(o.surface_voxel ? "--surface-voxel" : o.surface_adaptivity ? "--surface-adaptivity"
+                                                                                                : "--surface-format") +
+                       " shapes the surface export: give --export-surface too");
+    return;
+  }
+  const std::string format = o.surface_format.empty() ? "ply" : o.surface_format;
+  r.surfaces = NamePattern::parse(o.surface_name.empty() ? "surface_#####.vdb" : o.surface_name, "--surface-name", ".vdb");
+  r.meshes = NamePattern::parse(o.mesh_name.empty() ? "mesh_#####." + format : o.mesh_name, "--mesh-name", "." + format);
+  r.surface_voxels_per_cell = liquid::SurfaceSettings{}.voxels_per_cell;
+  if (o.surface_voxel) {
+    // Voxel faces meet the walls only if a whole number of voxels fills a cell.
+    r.surface_voxels_per_cell = int(std::lround(1.0 / *o.surface_voxel));
+    if (std::abs(r.surface_voxels_per_cell * double(*o.surface_voxel) - 1.0) > 2e-3)
+      throw UsageError("--surface-voxel " + tools::format_cli_number(*o.surface_voxel) +
+                       ": must be a cell divided by a whole number from 1 to " +
+                       std::to_string(liquid::k_max_surface_voxels_per_cell) + " (1, 0.5, 0.333, 0.25, ..., 0.125)");
+  }
+  r.surface_adaptivity = float(o.surface_adaptivity.value_or(liquid::SurfaceSettings{}.adaptivity));
 }
 
 }  // namespace
@@ -167,9 +210,10 @@ RunSettings settle(const CaptureOptions& o, int max_steps_per_frame) {
                                        "--particles-name", ".ply");
     if (o.export_volume || !o.volume_name.empty())
       r.volumes = NamePattern::parse(o.volume_name.empty() ? "volume_#####.vdb" : o.volume_name, "--volume-name", ".vdb");
+    settle_surface(o, r);
     std::set<std::string> names{r.frames.text()};
-    if ((r.particles && !names.insert(r.particles->text()).second) || (r.volumes && !names.insert(r.volumes->text()).second))
-      throw UsageError("two outputs have the same name pattern");
+    for (const std::optional<NamePattern>* p : {&r.particles, &r.volumes, &r.surfaces, &r.meshes})
+      if (*p && !names.insert((*p)->text()).second) throw UsageError("two outputs have the same name pattern");
   } catch (const UsageError&) {
     throw;
   } catch (const std::invalid_argument& e) {
@@ -218,7 +262,9 @@ json to_json(const RunSettings& r) {
                       {"time_step_s", r.plan.time_step}, {"frame_seconds", r.plan.frame_seconds()},
                       {"fps", r.plan.frames_per_second()}, {"fps_exact", r.plan.fps > 0.0}}},
           {"names", {{"frames", r.frames.text()}, {"particles", optional_name(r.particles)},
-                     {"volumes", optional_name(r.volumes)}}},
+                     {"volumes", optional_name(r.volumes)}, {"surfaces", optional_name(r.surfaces)},
+                     {"meshes", optional_name(r.meshes)}}},
+          {"surface", {{"voxels_per_cell", r.surface_voxels_per_cell}, {"adaptivity", r.surface_adaptivity}}},
           {"view", {{"width", r.width}, {"height", r.height}, {"fxaa", r.fxaa}, {"draw_particles", r.draw_particles},
                     {"camera_position", r.camera_position}, {"camera_target", r.camera_target},
                     {"fov_y_degrees", r.fov_y_degrees}}},
@@ -260,6 +306,15 @@ RunSettings run_settings_from_json(const json& j, const fs::path& folder, const 
     r.frames = NamePattern::parse(n.at("frames").get<std::string>(), "frames", ".png");
     if (!n.at("particles").is_null()) r.particles = NamePattern::parse(n.at("particles"), "particles", ".ply");
     if (!n.at("volumes").is_null()) r.volumes = NamePattern::parse(n.at("volumes"), "volumes", ".vdb");
+    if (n.contains("surfaces") && !n.at("surfaces").is_null()) {  // a record from before the surface export has none
+      r.surfaces = NamePattern::parse(n.at("surfaces"), "surfaces", ".vdb");
+      const std::string mesh = n.at("meshes").get<std::string>();
+      r.meshes = NamePattern::parse(mesh, "meshes", fs::path(mesh).extension() == ".obj" ? ".obj" : ".ply");
+      const json& surface = j.at("surface");
+      r.surface_voxels_per_cell = int(number(surface.at("voxels_per_cell"), "surface.voxels_per_cell", 1,
+                                             liquid::k_max_surface_voxels_per_cell, true));
+      r.surface_adaptivity = float(number(surface.at("adaptivity"), "surface.adaptivity", 0.0, 1.0, false));
+    }
     const json& v = j.at("view");
     r.width = uint32_t(number(v.at("width"), "view.width", 1, k_max_pixels, true));
     r.height = uint32_t(number(v.at("height"), "view.height", 1, k_max_pixels, true));

@@ -43,8 +43,10 @@ struct CaptureOptions {
   std::vector<float> camera_position, camera_target;
   float fov_y_degrees = 0.0f;     // 0: the scene's
   bool fxaa = true, draw_particles = false;
-  bool export_particles = false, export_volume = false;
-  std::string particles_name, volume_name;
+  bool export_particles = false, export_volume = false, export_surface = false;
+  std::string particles_name, volume_name, surface_name, mesh_name;
+  std::optional<double> surface_voxel, surface_adaptivity;  // in cells; 0 to 1 (not given: the defaults)
+  std::string surface_format;     // "ply" or "obj" (empty: ply)
   int checkpoint_every = 0;
   std::string resume, video;
   bool overwrite = false, dry_run = false, validation = false;
@@ -64,6 +66,12 @@ struct RunSettings {
   std::filesystem::path folder;
   NamePattern frames;
   std::optional<NamePattern> particles, volumes;
+  // --export-surface: the level set (VDB) and the mesh (PLY or OBJ, by the pattern's extension).
+  std::optional<NamePattern> surfaces, meshes;
+  int surface_voxels_per_cell = 0;
+  float surface_adaptivity = 0.0f;
+  // Whether a written frame's files read the grids back (rebuilt first for the frame's instant).
+  bool exports_grids() const { return particles || volumes || surfaces; }
   uint32_t width = 0, height = 0;
   bool fxaa = true, draw_particles = false;
   std::vector<float> camera_position, camera_target;  // empty: the scene's camera

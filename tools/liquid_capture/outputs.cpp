@@ -35,11 +35,14 @@ std::vector<NamePattern> recorded_patterns(const fs::path& folder) {
   std::ifstream file(folder / k_record_name);
   const json record = json::parse(file, nullptr, /*allow_exceptions=*/false);
   if (!record.is_object() || !record.contains("names") || !record["names"].is_object()) return patterns;
-  for (const auto& [kind, extension] : {std::pair{"frames", ".png"}, {"particles", ".ply"}, {"volumes", ".vdb"}}) {
+  for (const auto& [kind, extension] : {std::pair{"frames", ".png"}, {"particles", ".ply"}, {"volumes", ".vdb"},
+                                        {"surfaces", ".vdb"}, {"meshes", ""}}) {
     const json& name = record["names"].value(kind, json());
     if (!name.is_string()) continue;
     try {
-      patterns.push_back(NamePattern::parse(name.get<std::string>(), kind, extension));
+      // A mesh is .ply or .obj: its pattern's own extension.
+      const std::string ending = *extension ? extension : fs::path(name.get<std::string>()).extension().string();
+      patterns.push_back(NamePattern::parse(name.get<std::string>(), kind, ending));
     } catch (const std::invalid_argument&) {
     }
   }
@@ -65,8 +68,8 @@ std::vector<fs::path> files_named(const fs::path& folder, const std::vector<Name
 // The run's own name patterns.
 std::vector<NamePattern> own_patterns(const RunSettings& settings) {
   std::vector<NamePattern> patterns{settings.frames};
-  if (settings.particles) patterns.push_back(*settings.particles);
-  if (settings.volumes) patterns.push_back(*settings.volumes);
+  for (const std::optional<NamePattern>* p : {&settings.particles, &settings.volumes, &settings.surfaces, &settings.meshes})
+    if (*p) patterns.push_back(**p);
   return patterns;
 }
 
@@ -366,6 +369,8 @@ std::string summary_json(const std::string& stats_csv, const json& facts) {
   for (const std::string& c : columns)
     if (c.rfind("gpu_ms.", 0) == 0) passes[c.substr(7)] = median(values[c]);
   summary["gpu_ms_median_per_frame"] = passes;
+  if (values.count("surface_ms"))
+    summary["surface_export_ms"] = {{"median", median(values["surface_ms"])}, {"max", most("surface_ms")}};
   summary["extremes"] = {{"max_density_ratio", most("max_density_ratio")},
                          {"max_speed_m_s", most("max_speed_m_s")},
                          {"max_kinetic_energy_J", most("kinetic_energy_J")},

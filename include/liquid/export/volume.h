@@ -29,5 +29,11 @@ VolumeFrame read_volume(engine::vk::Context& context, LiquidNode& node);
 // rho/rho0 at each position: trilinear (bilinear in 2D) between cell centres, clamped at the
 // outermost centres, as the solver's particle pass samples its grids.
 std::vector<float> sample_density(const VolumeFrame& volume, const std::vector<glm::vec4>& positions);
+float density_at(const VolumeFrame& volume, const glm::vec3& position);  // the same at one position
+
+// The grid velocity at each position, m/s: the same stencil over the cells that hold liquid only,
+// weights renormalised (a surface point has air cells in its stencil, whose velocity is zero and
+// would slow it down); zero where no cell of the stencil holds liquid.
+std::vector<glm::vec3> sample_velocity(const VolumeFrame& volume, const std::vector<glm::vec3>& positions);
 
 }  // namespace liquid
