@@ -26,7 +26,7 @@ constexpr VkFormat k_depth_format = VK_FORMAT_D32_SFLOAT;
 struct RenderSettings {
   uint32_t width = 1024;   // the paper's frame: 1024 x 768
   uint32_t height = 768;
-  float iso_level = 0.5f;  // surface where rho / rho0 crosses this value
+  float iso_level = k_default_iso_level;  // surface where rho / rho0 crosses this value
   // FXAA after the view. Empty: on for the renderer's own frame, off when compositing into a
   // host's targets (a host runs its own anti-aliasing after its whole scene, TAA for one); on when
   // compositing, its output lands in the host's colour target, which then needs

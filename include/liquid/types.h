@@ -18,6 +18,10 @@
 
 namespace liquid {
 
+// The liquid's surface: where rho / rho0 crosses this. The views draw it (RenderSettings::iso_level)
+// and the exported surface follows it (SurfaceSettings::iso_level).
+inline constexpr float k_default_iso_level = 0.5f;
+
 // How a node stores and renders into 3D grids (README, "Devices and 3D paths"): 3D images reached
 // through a geometry shader, 3D images whose vertex shaders write gl_Layer, or 2D atlases of the
 // slices for devices with neither feature. 2D scenes need none.

@@ -262,7 +262,7 @@ TEST_CASE("the affine transfer keeps a sloshing tank's period and damps it half 
           "[gpu][liquid][physics][affine]") {
   using liquid::Transfer;
   // 3D at half the cells (six across) on the atlas path, the one whose splat tiles need the most care.
-  for (const auto [dimension, cells, path] :
+  for (const auto& [dimension, cells, path] :
        {std::tuple{2, 64, liquid::GridPath::VertexLayer}, std::tuple{3, 32, liquid::GridPath::Atlas}}) {
     INFO(dimension << "D, " << cells << " cells");
     const liquid::Oscillation chapter = sloshing_with(Transfer::PicFlip, path, dimension, cells);

@@ -10,7 +10,7 @@
 #include "liquid/export/mesh_file.h"
 #include "liquid/export/vdb.h"
 #include "liquid/export/volume.h"
-#include "liquid/renderer.h"
+#include "liquid/types.h"
 
 #include <filesystem>
 #include <memory>
@@ -24,7 +24,7 @@ inline constexpr float k_surface_band_voxels = 3.0f;
 inline constexpr int k_max_surface_voxels_per_cell = 8;
 
 struct SurfaceSettings {
-  float iso_level = RenderSettings{}.iso_level;  // rho/rho0 at the surface, as the raymarch draws it
+  float iso_level = k_default_iso_level;  // rho/rho0 at the surface, as the raymarch draws it by default
   // Voxels of half a cell by default: the raymarch draws the trilinear density's crossing, which
   // curves between cell centres; at one voxel a cell the mesh would have one vertex a cell, facets a
   // cell wide, for an eighth of the voxels (the export's time in docs/caches.md).
