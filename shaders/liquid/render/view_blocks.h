@@ -8,7 +8,7 @@
 
 // Raymarch: the specialization constant that makes it draw the liquid alone over a host's targets
 // (its id follows the scene's constants of common.glsl; raymarch.cpp checks that), and the one that
-// leaves out the march for pixels whose rays miss the domain box.
+// leaves out the march and the liquid for the screen tiles no coarse ray saw liquid in.
 #define LIQUID_RAYMARCH_COMPOSITE_ID 13
 #define LIQUID_RAYMARCH_BACKGROUND_ONLY_ID 14
 // Compositing: how the colour is written for the host's target format (LIQUID_RAYMARCH_OUTPUT_ID):
