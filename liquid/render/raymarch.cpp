@@ -81,7 +81,7 @@ engine::vk::GraphicsPipelineDesc tank_frame_pipeline_desc() {
                    {LIQUID_BINDING_VIEW_UNIFORMS, DescriptorKind::UniformBuffer,
                     VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT}}};
 }
-constexpr uint32_t k_tank_frame_vertices = 12 * 6;  // tank_frame.vert: 12 bars
+constexpr uint32_t k_tank_frame_vertices = LIQUID_TANK_FRAME_BARS * LIQUID_TANK_FRAME_BAR_VERTICES;  // tank_frame.vert
 
 }  // namespace
 

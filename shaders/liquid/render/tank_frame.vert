@@ -1,5 +1,5 @@
 #version 450
-// The tank's frame (tank_frame.glsl), 6 vertices a bar (72 in all): for each, a screen-space quad
+// The tank's frame (tank_frame.glsl), LIQUID_TANK_FRAME_BAR_VERTICES a bar: for each, a screen-space quad
 // around the bar's projection, as wide as its radius seen from either side across it and half again,
 // plus a pixel, so that it holds every pixel whose ray meets the bar; tank_frame.frag then traces
 // the bar exactly. Drawn from gl_VertexIndex alone (no vertex buffer).
@@ -28,7 +28,7 @@ float radius_in_pixels(vec3 p, vec4 clip, vec3 across, vec3 across2, float radiu
 }
 
 void main() {
-  int edge = gl_VertexIndex / 6, corner = gl_VertexIndex % 6;
+  int edge = gl_VertexIndex / LIQUID_TANK_FRAME_BAR_VERTICES, corner = gl_VertexIndex % LIQUID_TANK_FRAME_BAR_VERTICES;
   v_edge = edge;
   vec3 a, along;
   tank_edge(edge, a, along);

@@ -30,6 +30,10 @@
 #define LIQUID_RAYMARCH_TILE_MISS 0u
 #define LIQUID_RAYMARCH_TILE_LIQUID 1u
 
+// The tank's frame (tank_frame.vert): the domain box's 12 edges, a quad of 6 vertices each.
+#define LIQUID_TANK_FRAME_BARS 12
+#define LIQUID_TANK_FRAME_BAR_VERTICES 6
+
 // 2D view: the specialization constant that draws the liquid (and obstacles) alone, with alpha,
 // into a rectangle of a host's target (its id follows the scene's constants of common.glsl).
 #define LIQUID_VIEW2D_PANEL_ID 13
