@@ -34,6 +34,9 @@ struct RenderSettings {
   // format (not HDR: anti-aliasing belongs after the host's tone map).
   std::optional<bool> fxaa;
   bool draw_particles = false;  // 2D views: the particles as points over the liquid
+  // 3D views of a scene with whitewater: spray, foam and bubbles drawn over the liquid (the
+  // simulation runs them either way).
+  bool whitewater = true;
   // 3D: draw into the host's own colour and depth targets (add_to with HostTargets) instead of a
   // frame of the renderer's own with its floor, sky and tank.
   bool composite = false;
@@ -99,6 +102,7 @@ struct RenderOutputs {
 class RaymarchPass;
 class View2dPass;
 class HeightFieldPass;
+class WhitewaterDraw;
 
 class LiquidRenderer {
  public:
@@ -134,6 +138,7 @@ class LiquidRenderer {
   std::unique_ptr<RaymarchPass> raymarch_;
   std::unique_ptr<View2dPass> view2d_;
   std::unique_ptr<HeightFieldPass> height_field_;
+  std::unique_ptr<WhitewaterDraw> whitewater_;  // 3D scenes with whitewater, RenderSettings::whitewater
   std::unique_ptr<engine::passes::FxaaPass> fxaa_;  // the renderer's own frame; whether FXAA is on
   std::map<VkFormat, std::unique_ptr<engine::passes::FxaaPass>> composite_fxaa_;  // per host colour format
 };

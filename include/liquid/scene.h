@@ -158,6 +158,27 @@ struct AdaptiveTimeStep {
   float velocity_cfl = 0.4f;
 };
 
+// Secondary particles: spray, foam and bubbles (Ihmsen et al. 2012, "Unified spray, foam and
+// bubbles for particle-based fluids"; docs/whitewater.md). Each liquid particle owns
+// `slots_per_particle` of them and spawns into its free ones at a rate set by its potentials for
+// trapped air (neighbours approaching it) and a wave crest (a convex surface moving outward), scaled
+// by its speed; each is then spray, foam or a bubble by the liquid's density where it is. One-way:
+// the liquid never reads them, so its results are the same with or without.
+struct Whitewater {
+  int slots_per_particle = 2;          // capacity, in secondary particles per liquid particle
+  float lifetime = 2.0f;               // s, mean life (each one's is 0.5 to 1.5 times it)
+  float trapped_air_rate = 60.0f;      // 1/s per liquid particle at full trapped-air potential
+  float crest_rate = 30.0f;            // 1/s per liquid particle at full crest potential
+  glm::vec2 trapped_air_range{0.3f, 1.5f};  // m/s: the weighted speed of approach mapped to 0..1
+  glm::vec2 crest_range{15.0f, 60.0f};      // 1/m: the surface's curvature mapped to 0..1
+  glm::vec2 speed_range{0.5f, 2.0f};        // m/s: the particle's speed mapped to 0..1 (scales both)
+  float spray_density = 0.25f;         // rho / rho0 below which a secondary particle is spray
+  float bubble_density = 0.75f;        // above which it is a bubble (foam between)
+  float spray_drag = 0.2f;             // 1/s: spray's air drag
+  float bubble_buoyancy = 2.0f;        // a bubble rises at this many times -gravity
+  float bubble_drag = 8.0f;            // 1/s: a bubble's pull toward the liquid's velocity
+};
+
 struct Scene {
   std::string name;                 // file stem unless "name" is given
   // Where it was read from (the file, or parse_scene's source_name): the prefix of every error
@@ -194,6 +215,7 @@ struct Scene {
   std::vector<Obstacle> obstacles;
   std::vector<GroundHill> ground;   // shallow water only
   std::optional<Camera> camera;     // 3D rendering; a default looks at the domain
+  std::optional<Whitewater> whitewater;  // secondary particles; none when empty
   // Steps sized from the state by CFL conditions (liquid/physics/time_step.h); empty: every step is
   // time_step (the chapter's fixed step).
   std::optional<AdaptiveTimeStep> adaptive_time_step;

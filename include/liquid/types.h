@@ -97,6 +97,23 @@ struct LiquidImages {
   // RGBA32F: the mesh obstacles' signed distance (m), one channel per mesh in scene order, exact
   // near their surfaces; invalid when the scene has no mesh obstacle.
   engine::graph::ImageHandle mesh_field;
+  // RGBA32F secondary particles (Scene::whitewater), one texel a slot: xyz m and w the kind
+  // (WhitewaterKind, 0 a free slot); xyz m/s and w the birth time (s). Invalid without whitewater.
+  engine::graph::ImageHandle whitewater_positions;
+  engine::graph::ImageHandle whitewater_velocities;
+};
+
+// What a secondary particle is, by the liquid's density where it is (Scene::whitewater).
+enum class WhitewaterKind : uint8_t { Spray = 1, Foam = 2, Bubble = 3 };
+
+// A live secondary particle read back from the GPU. `id` is unique over the run (its slot and its
+// birth), so a cache's points can be followed from frame to frame.
+struct WhitewaterParticle {
+  glm::vec3 position{0.0f};  // m
+  glm::vec3 velocity{0.0f};  // m/s
+  WhitewaterKind kind = WhitewaterKind::Foam;
+  float age = 0.0f;          // s
+  uint64_t id = 0;
 };
 
 // Particles read back from the GPU.

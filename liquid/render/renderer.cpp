@@ -5,6 +5,7 @@
 #include "liquid/render/height_field.h"
 #include "liquid/render/raymarch.h"
 #include "liquid/render/view2d.h"
+#include "liquid/render/whitewater_draw.h"
 #include "liquid/solver/node_view.h"
 #include "shaders/liquid/render/view_blocks.h"
 
@@ -27,6 +28,8 @@ LiquidRenderer::LiquidRenderer(engine::vk::Context& context, const LiquidNode& n
     raymarch_ = std::make_unique<RaymarchPass>(context, node, output);
   else
     view2d_ = std::make_unique<View2dPass>(context, node, output);
+  if (raymarch_ && settings.whitewater && node.scene().whitewater)
+    whitewater_ = std::make_unique<WhitewaterDraw>(context, node);
   if (settings.composite && height_field_)
     throw UsageError("liquid: shallow water is not composited into host targets (3D and 2D liquids are)");
   if (settings.fxaa.value_or(!settings.composite))
@@ -124,7 +127,13 @@ RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const Li
   const RaymarchView raymarch_view{view.projection * view.view * model, view.reversed_z,
                                    view.viewport.extent.width == 0 && view.viewport.extent.height == 0 ? whole
                                                                                                       : view.viewport};
-  const RaymarchPass::Outputs r = raymarch_->add_to(graph, images, settings_, raymarch_view, &targets);
+  RaymarchPass::Outputs r = raymarch_->add_to(graph, images, settings_, raymarch_view, &targets);
+  if (whitewater_ && images.whitewater_positions.valid()) {
+    const WhitewaterDraw::Targets drawn =
+        whitewater_->add_to(graph, images, {r.color, r.depth}, raymarch_view.view_projection, raymarch_view.reversed_z,
+                            raymarch_view.viewport, settings_.exposure);
+    r = {drawn.color, drawn.depth};
+  }
   RenderOutputs out{r.color, r.depth, r.color};
   if (fxaa_) {
     // FXAA reads what it writes around each pixel, so the composite is copied out and filtered
@@ -148,6 +157,12 @@ RenderOutputs LiquidRenderer::add_to(engine::graph::RenderGraph& graph, const Li
     const RaymarchPass::Outputs r = raymarch_->add_to(graph, images, settings_, own);
     out.color = r.color;
     out.depth = r.depth;
+    if (whitewater_ && images.whitewater_positions.valid()) {
+      const WhitewaterDraw::Targets drawn = whitewater_->add_to(graph, images, {r.color, r.depth}, own.view_projection,
+                                                                false, own.viewport, settings_.exposure);
+      out.color = drawn.color;
+      out.depth = drawn.depth;
+    }
   } else if (height_field_) {
     out.color = height_field_->add_to(graph, images, settings_, camera);
   } else {

@@ -46,7 +46,7 @@ const NumberKey k_number_keys[] = {
 constexpr const char* k_structured_keys[] = {
     "name", "dimension", "mode", "domain", "gravity", "particle_spacing", "rest_density", "adaptive_time_step",
     "splat_format", "pressure_force", "splat", "transfer", "rest_depth", "fluid_blocks", "emitters", "obstacles", "ground",
-    "camera"};
+    "camera", "whitewater"};
 
 void read_number_key(const Reader& r, const Json& value, const NumberKey& row, Scene& scene) {
   std::visit(
@@ -272,6 +272,44 @@ Camera read_camera(const Reader& r, const Json& value, const std::string& path) 
   return camera;
 }
 
+// A potential's range [lo, hi]: 0 <= lo < hi <= bound.
+glm::vec2 read_range(const Reader& r, const Json& value, const std::string& path, double bound) {
+  const glm::vec3 range = r.vector(value, path, 2, bound);
+  if (!(range.x >= 0.0f && range.x < range.y))
+    r.fail(path, "must be [lo, hi] with 0 <= lo < hi, got [" + format_number(range.x) + ", " + format_number(range.y) + "]");
+  return {range.x, range.y};
+}
+
+Whitewater read_whitewater(const Reader& r, const Json& value, const std::string& path) {
+  r.check_keys(value, path,
+               {"slots_per_particle", "lifetime", "trapped_air_rate", "crest_rate", "trapped_air_range", "crest_range",
+                "speed_range", "spray_density", "bubble_density", "spray_drag", "bubble_buoyancy", "bubble_drag"});
+  Whitewater w;
+  const auto number = [&](const char* key, float& member, double lo, double hi, bool lo_open = false) {
+    if (const Json* v = Reader::find(value, key)) member = float(r.number_in(*v, child(path, key), lo, hi, lo_open));
+  };
+  if (const Json* v = Reader::find(value, "slots_per_particle"))
+    w.slots_per_particle = r.integer_in(*v, child(path, "slots_per_particle"), 1, gpu::k_max_whitewater_slots);
+  number("lifetime", w.lifetime, 0.0, 1000.0, true);
+  number("trapped_air_rate", w.trapped_air_rate, 0.0, 1e6);
+  number("crest_rate", w.crest_rate, 0.0, 1e6);
+  if (const Json* v = Reader::find(value, "trapped_air_range"))
+    w.trapped_air_range = read_range(r, *v, child(path, "trapped_air_range"), k_max_speed);
+  if (const Json* v = Reader::find(value, "crest_range"))
+    w.crest_range = read_range(r, *v, child(path, "crest_range"), 1e6);
+  if (const Json* v = Reader::find(value, "speed_range"))
+    w.speed_range = read_range(r, *v, child(path, "speed_range"), k_max_speed);
+  number("spray_density", w.spray_density, 0.0, 1.0);
+  number("bubble_density", w.bubble_density, 0.0, 2.0);
+  if (!(w.spray_density < w.bubble_density))
+    r.fail(child(path, "bubble_density"), "must be greater than spray_density (" + format_number(w.spray_density) +
+                                              "), got " + format_number(w.bubble_density));
+  number("spray_drag", w.spray_drag, 0.0, 1000.0);
+  number("bubble_buoyancy", w.bubble_buoyancy, 0.0, 100.0);
+  number("bubble_drag", w.bubble_drag, 0.0, 1000.0);
+  return w;
+}
+
 AdaptiveTimeStep read_adaptive_time_step(const Reader& r, const Json& value, const std::string& path) {
   r.check_keys(value, path, {"acoustic_cfl", "velocity_cfl"});
   AdaptiveTimeStep a;
@@ -396,6 +434,10 @@ void read_contents(const Reader& r, const Json& doc, Scene& scene) {
   if (const Json* v = Reader::find(doc, "camera")) {
     if (scene.dimension != 3) r.fail("camera", "only allowed in 3D scenes (dimension 3)");
     scene.camera = read_camera(r, *v, "camera");
+  }
+  if (const Json* v = Reader::find(doc, "whitewater")) {
+    if (shallow) r.fail("whitewater", "not available in shallow_water mode");
+    scene.whitewater = read_whitewater(r, *v, "whitewater");
   }
   if (scene.fluid_blocks.empty() && scene.emitters.empty())
     r.fail("fluid_blocks", "the scene needs at least one fluid block or one emitter");

@@ -24,6 +24,12 @@ struct ParticleImages {
   std::array<ImageHandle, 3> affine{};
 };
 
+// The secondary particles' textures (liquid/solver/whitewater.h).
+struct WhitewaterImages {
+  ImageHandle positions;   // RGBA32F, xyz m, w the kind
+  ImageHandle velocities;  // RGBA32F, xyz m/s, w the birth time
+};
+
 struct GridImages {
   ImageHandle velocity;  // (u', fluid flag)
   ImageHandle density;   // rho / rho0

@@ -81,6 +81,8 @@ Simulation::Simulation(engine::vk::Context& context, const Scene& scene, const L
   particle_update_ = std::make_unique<ParticleUpdatePass>(context, variant_, specialization);
   if (variant_.meshes) mesh_field_ = std::make_unique<MeshField>(context, scene_, setup_, layout, specialization);
   body_shapes_ = make_body_shapes(context, scene_, setup_, layout.path);
+  if (scene_.whitewater)
+    whitewater_ = std::make_unique<WhitewaterPass>(context, variant_, scene_, setup_, specialization);
   if (variant_.bodies) {
     body_force_ = std::make_unique<BodyForcePass>(context, variant_, scene_, setup_, specialization);
     body_integration_ = std::make_unique<BodyIntegrationPass>(context, variant_, specialization);
@@ -175,6 +177,8 @@ LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
   body_shapes_handle_ = import(body_shapes_);
   step.body_shapes = body_shapes_handle_;
   check_step_images(step, variant_);
+  WhitewaterPass::Frame whitewater;
+  if (whitewater_) whitewater = whitewater_->import(graph);
 
   const float dt = float(time_step_);
   for (int k = 0; k < steps; ++k) {
@@ -193,6 +197,7 @@ LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
     }
     particle_update_->add_to(graph, slice, step, inputs.active_after);
     s.current = 1 - s.current;
+    if (whitewater_) whitewater_->add_to(graph, slice, step, whitewater, t1, dt, step_);
     active_ = inputs.active_after;
     time_ = t1;
     ++step_;
@@ -204,7 +209,15 @@ LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
   }
   affine_handles_ = step.particles.affine;
   return {step.particles.positions, step.particles.velocities, step.splat, step.grids.velocity, step.grids.density,
-          step.bodies, step.mesh_field};
+          step.bodies, step.mesh_field, whitewater.latest.positions, whitewater.latest.velocities};
+}
+
+std::vector<WhitewaterParticle> Simulation::read_whitewater() const {
+  return whitewater_ ? whitewater_->read(time_) : std::vector<WhitewaterParticle>{};
+}
+
+int Simulation::whitewater_capacity() const {
+  return whitewater_ ? whitewater_->texture_size().x * whitewater_->texture_size().y : 0;
 }
 
 LiquidImages Simulation::add_grids_to(engine::graph::RenderGraph& graph, const LiquidImages& images) {
@@ -224,8 +237,15 @@ LiquidImages Simulation::add_grids_to(engine::graph::RenderGraph& graph, const L
   step.body_shapes = body_shapes_handle_;
   step.mesh_field = update_mesh_field(graph, slice, inputs.obstacle_poses, images.mesh_field);
   add_grid_passes(graph, slice, step);
-  return {images.positions, images.velocities, step.splat, step.grids.velocity, step.grids.density, images.bodies,
-          step.mesh_field};
+  return {images.positions,
+          images.velocities,
+          step.splat,
+          step.grids.velocity,
+          step.grids.density,
+          images.bodies,
+          step.mesh_field,
+          images.whitewater_positions,
+          images.whitewater_velocities};
 }
 
 Diagnostics Simulation::diagnose() { return diagnose(read_particles()); }

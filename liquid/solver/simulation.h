@@ -23,6 +23,7 @@
 #include "liquid/solver/state.h"
 #include "liquid/solver/uniforms.h"
 #include "liquid/solver/variant.h"
+#include "liquid/solver/whitewater.h"
 #include "liquid/types.h"
 #include "liquid/node.h"
 
@@ -74,6 +75,10 @@ class Simulation {
   std::vector<float> read_density_ratio();
   std::vector<glm::vec4> read_splat();
   std::vector<glm::vec4> read_grid_velocity();
+  // The live secondary particles (Scene::whitewater; none without it), blocking.
+  std::vector<WhitewaterParticle> read_whitewater() const;
+  // Slots for secondary particles (0 without whitewater).
+  int whitewater_capacity() const;
   Diagnostics diagnose();
   Diagnostics diagnose(const ParticleSnapshot& particles);
   double energy_bound() const { return energy_bound_; }
@@ -124,6 +129,7 @@ class Simulation {
   std::unique_ptr<BodyForcePass> body_force_;              // only with dynamic obstacles
   std::unique_ptr<BodyIntegrationPass> body_integration_;
   std::unique_ptr<MeshField> mesh_field_;  // only with static mesh obstacles
+  std::unique_ptr<WhitewaterPass> whitewater_;  // only with Scene::whitewater
   // The dynamic meshes' distance in their own frames (liquid/solver/body_shapes.h; 1 x 1 x 1
   // without them), and its handle in the graph add_to() last declared (add_grids_to() reads it too).
   engine::vk::Image body_shapes_;

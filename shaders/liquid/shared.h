@@ -62,6 +62,16 @@
 // meshes' channels (MIN blending keeps the smaller); above any band.
 #define LIQUID_MESH_FAR 1.0e4
 
+// Secondary particles (liquid/solver/whitewater.h): the most slots a liquid particle owns, and the
+// kinds a slot's position.w holds (0: free).
+#define LIQUID_MAX_WHITEWATER_SLOTS 8
+#define LIQUID_WHITEWATER_FREE 0
+#define LIQUID_WHITEWATER_SPRAY 1
+#define LIQUID_WHITEWATER_FOAM 2
+#define LIQUID_WHITEWATER_BUBBLE 3
+// Steps between two spawning passes (the others only move what lives).
+#define LIQUID_WHITEWATER_SPAWN_INTERVAL 8
+
 // ---- Descriptor bindings (set 0, push descriptors) ----------------------------------------------
 // Every pipeline that includes common.glsl has the solver's uniform block at binding 0.
 #define LIQUID_BINDING_SOLVER_UNIFORMS 0
@@ -123,6 +133,12 @@
 #define LIQUID_BINDING_RAYMARCH_TILES 5     // the screen tiles' kinds (raymarch_tiles.frag)
 #define LIQUID_BINDING_OCCUPANCY_DENSITY 0
 #define LIQUID_BINDING_PARTICLES2D_POSITIONS 0
+// The whitewater pass (whitewater.frag) reads the liquid's particles and grids at the particle
+// pass's bindings, the bodies and meshes at theirs, and its own two textures here.
+#define LIQUID_BINDING_WHITEWATER_POSITIONS 10
+#define LIQUID_BINDING_WHITEWATER_VELOCITIES 11
+#define LIQUID_BINDING_WHITEWATER_DENSITY 12
+#define LIQUID_BINDING_WHITEWATER_DRAW_POSITIONS 0  // whitewater_draw.vert
 
 // ---- The solver's per-step uniform block (std140) ------------------------------------------------
 // Written once for both languages: in C++ the types are glm's and every struct is 16-byte aligned,
@@ -155,6 +171,7 @@ constexpr int k_body_texels = LIQUID_BODY_TEXELS;
 constexpr int k_max_mesh_obstacles = LIQUID_MAX_MESH_OBSTACLES;
 constexpr float k_mesh_field_margin_cells = float(LIQUID_MESH_FIELD_MARGIN_CELLS);
 constexpr float k_mesh_seed_cells = float(LIQUID_MESH_SEED_CELLS);
+constexpr int k_max_whitewater_slots = LIQUID_MAX_WHITEWATER_SLOTS;
 }  // namespace liquid::gpu
 #define LIQUID_STRUCT(name) struct alignas(16) name
 #define LIQUID_ALIGN16 alignas(16)
@@ -259,6 +276,31 @@ LIQUID_STRUCT(SolverUniforms) {
 // The textures of a mesh's triangles (3 texels per triangle: its corners in the mesh's frame) are
 // this many texels wide.
 #define LIQUID_MESH_TRIANGLE_TEXTURE_WIDTH 1024
+
+// The whitewater pass's push constants (liquid/solver/whitewater.cpp, whitewater.frag): the scene's
+// Whitewater settings and the step's time. Scalars only, so std430 and C++ agree without padding.
+LIQUID_PUSH(WhitewaterPush) {
+  float time;               // s, at the end of the step
+  float dt;                 // s
+  int step;                 // the step's number, which seeds the spawns' random numbers
+  int slots;                // per liquid particle
+  int owner_rows;           // rows of the liquid's particle texture (slot k's rows follow k of them)
+  float lifetime;           // s
+  float trapped_air_rate;   // 1/s
+  float crest_rate;         // 1/s
+  float trapped_air_lo;     // m/s
+  float trapped_air_hi;
+  float crest_lo;           // 1/m
+  float crest_hi;
+  float speed_lo;           // m/s
+  float speed_hi;
+  float spray_density;      // rho / rho0
+  float bubble_density;
+  float spray_drag;         // 1/s
+  float bubble_buoyancy;    // times -gravity
+  float bubble_drag;        // 1/s
+  float spawn_radius;       // m: new ones start within this of their liquid particle
+};
 
 // The mesh passes' push constants (liquid/solver/mesh_field.cpp, shaders/liquid/solver/mesh_raster.vert).
 LIQUID_PUSH(MeshRasterPush) {

@@ -27,7 +27,8 @@ const std::vector<std::string> k_shipped_scenes = {
     "paper_2d_64k.json", "paper_3d.json",     "shallow_water.json", "obstacles_2d.json",
     "rest_pool_2d.json", "symmetric_2d.json", "small_3d.json",      "jet_2d.json",
     "column_2d.json",    "column_3d.json",    "dam_break_tank_2d.json", "floating_box_2d.json",
-    "floating_boxes_3d.json", "mesh_pool_3d.json", "dam_break_3d_floating.json"};
+    "floating_boxes_3d.json", "mesh_pool_3d.json", "dam_break_3d_floating.json",
+    "dam_break_3d_whitewater.json"};
 
 // A small valid 2D scene; each malformed case changes one thing.
 Json valid_2d() {
@@ -239,6 +240,43 @@ TEST_CASE("the transfer is the chapter's unless the affine one is asked for with
   j["mode"] = "shallow_water";
   j["transfer"] = "pic_flip";
   REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: transfer: not used in shallow_water mode"));
+}
+
+TEST_CASE("whitewater is off unless asked for, and {} takes every default", "[scene][whitewater]") {
+  CHECK_FALSE(parse(valid_2d()).whitewater.has_value());
+  Json j = valid_3d();
+  j["whitewater"] = Json::object();
+  const Scene defaults = parse(j);
+  REQUIRE(defaults.whitewater.has_value());
+  CHECK(defaults.whitewater->slots_per_particle == Whitewater{}.slots_per_particle);
+  CHECK(defaults.whitewater->lifetime == Whitewater{}.lifetime);
+  j["whitewater"] = Json::parse(R"({"slots_per_particle": 3, "lifetime": 4.5, "crest_range": [5, 25],
+                                    "spray_density": 0.1, "bubble_density": 0.9, "bubble_buoyancy": 1.5})");
+  const Scene given = parse(j);
+  CHECK(given.whitewater->slots_per_particle == 3);
+  CHECK(given.whitewater->lifetime == 4.5f);
+  CHECK(given.whitewater->crest_range == glm::vec2(5.0f, 25.0f));
+  CHECK(given.whitewater->spray_density == 0.1f);
+  CHECK(given.whitewater->bubble_density == 0.9f);
+  CHECK(given.whitewater->bubble_buoyancy == 1.5f);
+  CHECK(load_scene(k_scene_dir / "dam_break_3d_whitewater.json").whitewater.has_value());
+}
+
+TEST_CASE("bad whitewater settings are refused naming the key", "[scene][whitewater]") {
+  refused_with("/whitewater", "true", "dam.json: whitewater: must be an object, got boolean");
+  refused_with("/whitewater", R"({"foam": 1})", "dam.json: whitewater.foam: unknown key");
+  refused_with("/whitewater", R"({"slots_per_particle": 0})", "dam.json: whitewater.slots_per_particle: must be in [1, 8], got 0");
+  refused_with("/whitewater", R"({"slots_per_particle": 1.5})", "whitewater.slots_per_particle: must be an integer");
+  refused_with("/whitewater", R"({"lifetime": 0})", "dam.json: whitewater.lifetime: must be in (0, 1000], got 0");
+  refused_with("/whitewater", R"({"crest_range": [20, 10]})",
+               "dam.json: whitewater.crest_range: must be [lo, hi] with 0 <= lo < hi, got [20, 10]");
+  refused_with("/whitewater", R"({"speed_range": [1]})", "dam.json: whitewater.speed_range: must have 2 components");
+  refused_with("/whitewater", R"({"spray_density": 0.8, "bubble_density": 0.5})",
+               "dam.json: whitewater.bubble_density: must be greater than spray_density (0.8), got 0.5");
+  refused_with("/whitewater", R"({"bubble_drag": -1})", "dam.json: whitewater.bubble_drag: must be in [0, 1000], got -1");
+  Json shallow = Json::parse(R"({"dimension": 2, "mode": "shallow_water", "domain": [1, 1], "particle_spacing": 0.01,
+                                 "fluid_blocks": [{"min": [0, 0], "max": [0.5, 0.5]}], "whitewater": {}})");
+  REQUIRE_THROWS_WITH(parse(shallow), Contains("whitewater: not available in shallow_water mode"));
 }
 
 TEST_CASE("rest_density \"auto\" leaves it to the setup", "[scene]") {

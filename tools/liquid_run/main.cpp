@@ -14,6 +14,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -34,6 +35,15 @@ double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   const size_t n = values.size();
   return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// The secondary particles by kind, when the scene has them.
+void print_whitewater(const liquid::Simulation& simulation) {
+  if (simulation.whitewater_capacity() == 0) return;
+  std::array<int, 4> count{};
+  for (const liquid::WhitewaterParticle& p : simulation.read_whitewater()) ++count[size_t(p.kind)];
+  std::printf("        whitewater: %d spray, %d foam, %d bubbles (capacity %d)\n", count[1], count[2], count[3],
+              simulation.whitewater_capacity());
 }
 
 void print_diagnostics(const liquid::Diagnostics& d) {
@@ -104,7 +114,10 @@ int run(const std::string& scene_path, int steps, double seconds, int report_eve
     done += n;
     const liquid::Diagnostics d = node.diagnose();
     last_printed = done == next_report;
-    if (last_printed) print_diagnostics(d);
+    if (last_printed) {
+      print_diagnostics(d);
+      print_whitewater(simulation_of(node));
+    }
     last = d;
     node.adapt_time_step(d);  // the scene's adaptive_time_step: the next batch's step from this state
   }

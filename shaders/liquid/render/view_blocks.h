@@ -81,6 +81,20 @@ LIQUID_PUSH(OccupancyPush) {
   int brick_rows;
 };
 
+// The secondary particles as point sprites over the 3D view (whitewater_draw.vert/.frag), push
+// constants; the output encoding is the raymarch's constant (LIQUID_RAYMARCH_OUTPUT_ID's value,
+// at id 0 here).
+LIQUID_PUSH(WhitewaterDrawPush) {
+  mat4 view_projection;
+  vec3 toward_camera;      // unit, world: a bubble is drawn this way by bubble_lift
+  float bubble_lift;       // m: bubbles this far under the surface show through it
+  float radius;            // m: a sprite's radius
+  float focal_pixels;      // pixels per metre at clip w = 1
+  float exposure;          // an HDR target's scale, as RenderSettings::exposure
+  int texture_width;       // the secondary particles' texture, texels
+};
+#define LIQUID_WHITEWATER_DRAW_OUTPUT_ID 0
+
 // Height field (height_field.vert/.frag), at LIQUID_BINDING_VIEW_UNIFORMS.
 LIQUID_STRUCT(HeightFieldUniforms) {
   mat4 view_projection;
