@@ -34,15 +34,15 @@ struct RenderSettings {
   // format (not HDR: anti-aliasing belongs after the host's tone map).
   std::optional<bool> fxaa;
   bool draw_particles = false;  // 2D views: the particles as points over the liquid
-  // 3D views of a scene with whitewater: spray, foam and bubbles drawn over the liquid (the
-  // simulation runs them either way).
-  bool whitewater = true;
   // 3D: draw into the host's own colour and depth targets (add_to with HostTargets) instead of a
   // frame of the renderer's own with its floor, sky and tank.
   bool composite = false;
   // Compositing into an HDR target (R16G16B16A16_SFLOAT, B10G11R11_UFLOAT_PACK32): the liquid's
   // linear radiance is multiplied by this, in the host's units before its tone mapping.
   float exposure = 1.0f;
+  // 3D views of a scene with whitewater: spray, foam and bubbles drawn over the liquid (the
+  // simulation runs them either way).
+  bool whitewater = true;
 };
 
 // A host's own targets for compositing (RenderSettings::composite): its colour and depth images at

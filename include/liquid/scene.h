@@ -167,12 +167,12 @@ struct AdaptiveTimeStep {
 struct Whitewater {
   int slots_per_particle = 2;          // capacity, in secondary particles per liquid particle
   float lifetime = 2.0f;               // s, mean life (each one's is 0.5 to 1.5 times it)
-  float trapped_air_rate = 60.0f;      // 1/s per liquid particle at full trapped-air potential
-  float crest_rate = 30.0f;            // 1/s per liquid particle at full crest potential
-  glm::vec2 trapped_air_range{0.3f, 1.5f};  // m/s: the weighted speed of approach mapped to 0..1
-  glm::vec2 crest_range{15.0f, 60.0f};      // 1/m: the surface's curvature mapped to 0..1
-  glm::vec2 speed_range{0.5f, 2.0f};        // m/s: the particle's speed mapped to 0..1 (scales both)
-  float spray_density = 0.25f;         // rho / rho0 below which a secondary particle is spray
+  float trapped_air_rate = 200.0f;      // 1/s per liquid particle at full trapped-air potential
+  float crest_rate = 100.0f;           // 1/s per liquid particle at full crest potential
+  glm::vec2 trapped_air_range{0.1f, 0.8f};  // m/s: the weighted speed of approach mapped to 0..1
+  glm::vec2 crest_range{10.0f, 40.0f};      // 1/m: the surface's curvature mapped to 0..1
+  glm::vec2 speed_range{0.3f, 1.5f};        // m/s: the particle's speed mapped to 0..1 (scales both)
+  float spray_density = 0.3f;          // rho / rho0 below which a secondary particle is spray
   float bubble_density = 0.75f;        // above which it is a bubble (foam between)
   float spray_drag = 0.2f;             // 1/s: spray's air drag
   float bubble_buoyancy = 2.0f;        // a bubble rises at this many times -gravity

@@ -9,6 +9,7 @@
 #include "liquid/renderer.h"
 #include "liquid/solver/simulation.h"
 #include "tests/gpu/liquid_helpers.h"
+#include "tests/gpu/whitewater_helpers.h"
 #include "tests/support/gpu.h"
 #include "tests/support/image_compare.h"
 
@@ -149,6 +150,7 @@ struct FrameOptions {
   std::optional<bool> fxaa = false;
   std::vector<liquid::HostView> views;  // the host's own views, one add_to each; none: the library's camera
   float far_depth = 1.0f;               // the host's depth clear: 0 for reversed Z
+  bool whitewater = true;               // RenderSettings::whitewater
 };
 
 Composite composite_frame(liquid::LiquidNode& node, HostTargets& targets, int steps, const FrameOptions& o = {},
@@ -157,7 +159,7 @@ Composite composite_frame(liquid::LiquidNode& node, HostTargets& targets, int st
   engine::vk::Context& context = node.context();
   liquid::LiquidRenderer renderer(context, node,
                                   {.width = k_width, .height = k_height, .fxaa = o.fxaa, .composite = true,
-                                   .exposure = o.exposure});
+                                   .exposure = o.exposure, .whitewater = o.whitewater});
   engine::graph::RenderGraph graph(&context);
   engine::vk::CommandBuffer cmd(context);
   VkCommandBuffer c = cmd.begin();
@@ -1168,5 +1170,28 @@ TEST_CASE("a host's own mesh, from its interleaved vertex buffer, is an obstacle
   CHECK_THROWS_AS(node.set_mesh_transform(boat, glm::quat(1, 0, 0, 0), 0.0f), liquid::ArgumentError);
   const liquid::Diagnostics d = node.diagnose();
   CHECK(d.inside_obstacles == 0);
+  REQUIRE_NO_VALIDATION_MESSAGES_ON(context);
+}
+
+TEST_CASE("whitewater is composited over a host's frame and hidden by the host's geometry", "[gpu][host][whitewater]") {
+  engine::vk::Context& context = test::gpu();
+  liquid::LiquidNode node(context, test::whitewater_dam_break());
+  test::run_steps(node, test::k_whitewater_impact_steps);
+  const auto frame = [&](bool whitewater, std::vector<std::array<float, 3>> bands) {
+    HostTargets targets(context);
+    return composite_frame(node, targets, 0, {.depth_bands = std::move(bands), .whitewater = whitewater}).color;
+  };
+  const glm::mat4 vp = liquid::LiquidRenderer(context, node, {.width = k_width, .height = k_height})
+                           .view_projection(liquid::default_camera(node));
+  const glm::vec3 impact_lo(0.2f, 0.0f, 0.0f), impact_hi = node.scene().domain;
+  // Over the host's empty frame, and behind host geometry just past the near plane everywhere.
+  const test::BrighterPixels open = test::brighter_pixels(frame(true, {}), frame(false, {}), vp, impact_lo, impact_hi);
+  const std::vector<std::array<float, 3>> wall{{0.0f, float(k_width), 1e-6f}};
+  const test::BrighterPixels covered = test::brighter_pixels(frame(true, wall), frame(false, wall), vp, impact_lo, impact_hi);
+  INFO(open.pixels << " pixels brighter over the host's frame (" << open.in_box << " where the impact is), "
+                   << covered.pixels << " behind its geometry");
+  CHECK(open.pixels > 50);
+  CHECK(open.in_box >= open.pixels * 9 / 10);
+  CHECK(covered.pixels == 0);
   REQUIRE_NO_VALIDATION_MESSAGES_ON(context);
 }

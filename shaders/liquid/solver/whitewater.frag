@@ -36,6 +36,7 @@ layout(push_constant) uniform WhitewaterPushBlock {
   WhitewaterPush pc;
 };
 
+layout(location = 0) in vec2 v_uv;  // the full-screen vertex stage's (unused: gl_FragCoord is the slot)
 layout(location = 0) out vec4 out_position;
 layout(location = 1) out vec4 out_velocity;
 
