@@ -5,7 +5,7 @@ checks what the node read back at exit (--report) against the same run without t
   viewer_test.py MODE --viewer PATH --with-xvfb PATH --scenes DIR --scripts DIR --out DIR [--compare PATH]
                 [--viewer-arg ARG ...]
 MODE: drag | obstacle | hit3d | shallow_water | camera_reset | resize | golden | bad_reload | no_panel |
-paused_reset | screenshots | overlay | panel_size | panel_drag | panel_wrap. Every run has --validation: any
+paused_reset | screenshots | overlay | panel_size | panel_drag | panel_wrap | whitewater. Every run has --validation: any
 validation message makes the viewer exit non-zero and the test fail.
 """
 import argparse
@@ -358,6 +358,32 @@ def screenshots(args):
         check((width, height) == (320, 240), f"{name} is a 320 x 240 PNG")
 
 
+def whitewater(args):
+    # The 3D dam break with whitewater: paused after its front has hit the box, a screenshot with
+    # the spray and foam drawn, W, and one without. The frames differ only where they are: bright
+    # pixels added around the box and the far wall (the right half of the view).
+    folder = os.path.join(args.out, "whitewater")
+    shutil.rmtree(folder, ignore_errors=True)
+    os.makedirs(folder)
+    run(args, "whitewater", [os.path.join(args.scenes, "dam_break_3d_whitewater.json"), "--frames", "36", *SIZE,
+                             "--steps-per-frame", "8", "--no-panel", "--no-overlay",
+                             "--script", os.path.join(args.scripts, "whitewater_toggle.json")], cwd=folder)
+    names = sorted(os.listdir(folder))
+    check(names == ["viewer_0000.png", "viewer_0001.png"], f"two screenshots: {names}")
+    width, height, drawn = read_png(os.path.join(folder, names[0]))
+    _, _, hidden = read_png(os.path.join(folder, names[1]))
+    brighter = [(x, y) for y in range(height) for x in range(width)
+                if sum(drawn[y][4 * x:4 * x + 3]) - sum(hidden[y][4 * x:4 * x + 3]) >= 36]
+    darker = [(x, y) for y in range(height) for x in range(width)
+              if sum(hidden[y][4 * x:4 * x + 3]) - sum(drawn[y][4 * x:4 * x + 3]) >= 36]
+    right = sum(1 for x, _ in brighter if x >= width // 2)
+    check(len(brighter) > 100, f"{len(brighter)} pixels brighter with whitewater drawn")
+    check(right >= len(brighter) * 9 // 10, f"{right} of them in the right half, where the front hit the box")
+    # A bluish bubble over a bright highlight of the surface can darken a pixel, but only there.
+    check(len(darker) <= len(brighter) // 20 and all(x >= width // 2 for x, _ in darker),
+          f"{len(darker)} pixels darker, all where the whitewater is: W changes nothing else")
+
+
 def overlay(args):
     # With the panel hidden an overlay shows the scene, the frame rate, the simulated time and
     # PAUSED when paused (tests/viewer/pause_overlay.json: Space at frame 2); it is display only,
@@ -430,7 +456,7 @@ def main():
     p = argparse.ArgumentParser()
     p.add_argument("mode", choices=["drag", "obstacle", "body", "hit3d", "shallow_water", "camera_reset", "resize", "golden",
                                    "bad_reload", "no_panel", "paused_reset", "screenshots", "overlay", "panel_size",
-                                   "panel_drag", "panel_wrap"])
+                                   "panel_drag", "panel_wrap", "whitewater"])
     p.add_argument("--viewer", required=True)
     p.add_argument("--with-xvfb", required=True)
     p.add_argument("--scenes", required=True)

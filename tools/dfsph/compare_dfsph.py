@@ -20,7 +20,7 @@ import statistics
 import subprocess
 import sys
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # the repository
 VENV = "/opt/dfsph-venv"
 DFSPH_RADIUS = 0.0029412  # 254 x 254 particles in the 1.5 m column: 64,516
 SCENE = os.path.join(ROOT, "assets", "scenes", "dam_break_tank_2d.json")
@@ -43,7 +43,7 @@ def install():
 
 def run_dfsph(seconds):
     env = dict(os.environ, LD_PRELOAD=gl_dispatch())
-    out = subprocess.run([os.path.join(VENV, "bin", "python"), os.path.join(ROOT, "tools", "dfsph_reference.py"),
+    out = subprocess.run([os.path.join(VENV, "bin", "python"), os.path.join(ROOT, "tools", "dfsph", "dfsph_reference.py"),
                           "--seconds", str(seconds), "--particle-radius", str(DFSPH_RADIUS)],
                          env=env, capture_output=True, text=True)
     m = re.search(r"dfsph particles=(\d+) simulated_s=(\S+) wall_s=(\S+) wall_per_simulated_s=(\S+) steps=(\d+)",
@@ -67,7 +67,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seconds", type=float, default=1.0, help="simulated time of each run (default 1)")
     parser.add_argument("--rounds", type=int, default=2, help="alternating rounds (default 2)")
-    parser.add_argument("--liquid-run", default=os.path.join(ROOT, "build", "tools", "liquid_run"))
+    parser.add_argument("--liquid-run", default=os.path.join(ROOT, "build", "bin", "liquid_run"))
     parser.add_argument("--install", action="store_true", help=f"create {VENV} with pysplishsplash first")
     args = parser.parse_args()
     if args.install:

@@ -16,6 +16,7 @@ Action apply_key(int key, Settings& s) {
     case GLFW_KEY_R: return Action::Reset;
     case GLFW_KEY_F: s.fxaa = !s.fxaa; return Action::None;
     case GLFW_KEY_P: s.particles = !s.particles; return Action::None;
+    case GLFW_KEY_W: s.whitewater = !s.whitewater; return Action::None;
     case GLFW_KEY_H: s.panel = !s.panel; return Action::None;
     case GLFW_KEY_O: s.overlay = !s.overlay; return Action::None;
     case GLFW_KEY_T:
@@ -45,6 +46,7 @@ const char* key_help() {
          "PgDn, PgUp next / previous scene of assets/scenes\n"
          "F          FXAA on / off\n"
          "P          particles over the liquid (2D)\n"
+         "W          spray, foam and bubbles drawn (3D scenes with whitewater)\n"
          "T          pacing: fixed steps per frame / wall time\n"
          "+, -       steps per frame\n"
          "S, F12     screenshot (viewer_NNNN.png)\n"

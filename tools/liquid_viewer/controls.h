@@ -13,6 +13,7 @@ struct Settings {
   bool step_once = false;  // one step while paused
   bool fxaa = true;
   bool particles = false;  // 2D: particles drawn over the liquid
+  bool whitewater = true;  // 3D scenes with whitewater: spray, foam and bubbles drawn
   bool panel = true;
   bool overlay = true;     // the small overlay while the panel is hidden
   Pacing pacing = Pacing::FixedSteps;

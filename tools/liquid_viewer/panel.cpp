@@ -116,6 +116,10 @@ PanelRequest draw_panel(Settings& s, MouseTools& mouse, liquid::LiquidNode& node
       same_line_if_fits("particles", ImGui::GetFrameHeight());
       ImGui::Checkbox("particles", &s.particles);
     }
+    if (node.scene().whitewater) {
+      same_line_if_fits("whitewater", ImGui::GetFrameHeight());
+      ImGui::Checkbox("whitewater", &s.whitewater);
+    }
   }
   if (ImGui::CollapsingHeader("Pacing and parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
     int pacing = int(s.pacing);

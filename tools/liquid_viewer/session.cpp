@@ -42,18 +42,20 @@ void Session::create(const liquid::Scene& scene) {
   camera_ = OrbitCamera::from(liquid::default_camera(*node_));
 }
 
-bool Session::needs_view(uint32_t width, uint32_t height, bool fxaa, bool particles) const {
-  return !renderer_ || width != view_.width || height != view_.height || fxaa != view_.fxaa ||
-         (particles && node_->dimension() == 2) != view_.draw_particles;
+bool Session::needs_view(uint32_t width, uint32_t height, const Settings& switches) const {
+  return !renderer_ || width != view_.width || height != view_.height || switches.fxaa != view_.fxaa ||
+         (switches.particles && node_->dimension() == 2) != view_.draw_particles ||
+         switches.whitewater != view_.whitewater;
 }
 
-void Session::set_view(uint32_t width, uint32_t height, bool fxaa, bool particles) {
-  if (!needs_view(width, height, fxaa, particles)) return;
+void Session::set_view(uint32_t width, uint32_t height, const Settings& switches) {
+  if (!needs_view(width, height, switches)) return;
   liquid::RenderSettings next = view_;
   next.width = width;
   next.height = height;
-  next.fxaa = fxaa;
-  next.draw_particles = particles && node_->dimension() == 2;
+  next.fxaa = switches.fxaa;
+  next.draw_particles = switches.particles && node_->dimension() == 2;
+  next.whitewater = switches.whitewater;
   view_ = next;
   renderer_.reset();
   renderer_ = std::make_unique<liquid::LiquidRenderer>(context_, *node_, view_);

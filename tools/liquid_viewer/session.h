@@ -6,6 +6,7 @@
 #include "liquid/node.h"
 #include "liquid/renderer.h"
 #include "liquid/scene.h"
+#include "tools/liquid_viewer/controls.h"
 #include "tools/liquid_viewer/input.h"
 
 #include <filesystem>
@@ -33,9 +34,10 @@ class Session {
   int dimension() const { return node_->dimension(); }
 
   // Whether set_view() with these values would create a new renderer.
-  bool needs_view(uint32_t width, uint32_t height, bool fxaa, bool particles) const;
-  // (Re)creates the renderer for this size and these switches (the device must be idle).
-  void set_view(uint32_t width, uint32_t height, bool fxaa, bool particles);
+  bool needs_view(uint32_t width, uint32_t height, const Settings& switches) const;
+  // (Re)creates the renderer for this size and the switches' FXAA, particles and whitewater (the
+  // device must be idle).
+  void set_view(uint32_t width, uint32_t height, const Settings& switches);
   // Back to the scene's first step and its default camera (the device must be idle); keeps the
   // live parameters.
   void reset();

@@ -259,9 +259,9 @@ int Viewer::run() {
       continue;
     }
     const VkExtent2D extent = swapchain_->extent();
-    if (session_->needs_view(extent.width, extent.height, settings_.fxaa, settings_.particles)) {
+    if (session_->needs_view(extent.width, extent.height, settings_)) {
       wait_all();
-      session_->set_view(extent.width, extent.height, settings_.fxaa, settings_.particles);
+      session_->set_view(extent.width, extent.height, settings_);
     }
     imgui_frame_ = draw_ui();
     FrameSlot& slot = *slots_[size_t(drawn_frames_) % k_frames_in_flight];
