@@ -122,7 +122,8 @@ void WhitewaterPass::add_to(engine::graph::RenderGraph& graph, const engine::vk:
         const VkSampler s = nearest_.handle();
         bindings.bind_image(b, LIQUID_BINDING_PARTICLE_POSITIONS, step.particles.positions, s);
         bindings.bind_image(b, LIQUID_BINDING_PARTICLE_VELOCITIES, step.particles.velocities, s);
-        bindings.bind_image(b, LIQUID_BINDING_PARTICLE_GRID_VELOCITY, step.grids.velocity, s);
+        // Linear: liquid_velocity() filters it (the potentials fetch its texels).
+        bindings.bind_image(b, LIQUID_BINDING_PARTICLE_GRID_VELOCITY, step.grids.velocity, linear_.handle());
         bindings.bind_image(b, LIQUID_BINDING_WHITEWATER_DENSITY, step.grids.density, linear_.handle());
         bindings.bind_image(b, LIQUID_BINDING_WHITEWATER_POSITIONS, frame.latest.positions, s);
         bindings.bind_image(b, LIQUID_BINDING_WHITEWATER_VELOCITIES, frame.latest.velocities, s);

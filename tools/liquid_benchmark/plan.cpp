@@ -254,6 +254,24 @@ std::vector<Configuration> mesh_configurations(const Options& o) {
   return out;
 }
 
+// The secondary particles' cost (liquid/solver/whitewater.h), simulation only: the shipped 3D dam
+// break hitting a box with "whitewater" as shipped (two slots per particle) and the same scene
+// without it, whose steps' ratio is what the whitewater adds.
+std::vector<Configuration> whitewater_configurations(const Options& o) {
+  std::vector<Configuration> out;
+  for (const bool on : {false, true}) {
+    liquid::Scene scene = load_named_scene(o, "dam_break_3d_whitewater");
+    const int slots = scene.whitewater ? scene.whitewater->slots_per_particle : 0;
+    if (!on) scene.whitewater.reset();
+    Configuration c = make_configuration(std::string("whitewater/dam_break_3d/") + (on ? "on" : "off") + "/sim",
+                                         "whitewater", "dam_break_3d_whitewater", scene, Mode::Simulation, o.runs);
+    c.note = "dam_break_3d_whitewater, " +
+             (on ? std::to_string(slots) + " secondary-particle slots per particle" : std::string("whitewater off"));
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
 // Simulation only, from paper_2d_64k: particle count 16k..256k on its 256^2 grid, then grid
 // 128^2..1024^2 at 64k particles (the 256^2 point is shared with the first curve).
 std::vector<Configuration> scaling_configurations(const Options& o) {
@@ -347,6 +365,8 @@ Plan make_plan(const Options& o) {
   if (!o.scaling_only) {
     auto meshes = mesh_configurations(o);
     all.insert(all.end(), meshes.begin(), meshes.end());
+    auto whitewater = whitewater_configurations(o);
+    all.insert(all.end(), whitewater.begin(), whitewater.end());
   }
   if (o.composite && !o.scaling_only) {
     auto composite = composite_configurations(o);

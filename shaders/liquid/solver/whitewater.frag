@@ -54,10 +54,15 @@ float ramp(float value, float lo, float hi) { return clamp((value - lo) / (hi - 
 
 float density_at(vec3 x) { return sample_grid_linear(u_density, x).r; }
 
+// The liquid's velocity at x, in one filtered fetch instead of the particle pass's eight: the linear
+// interpolation of (u', fluid flag) over the cells around x, less the empty cells' share, which the
+// grid pass accelerated from rest like any other cell (dt g), over the liquid cells' share. That is
+// the particle pass's interpolation over the cells that hold liquid, except beside a brush or an
+// obstacle, whose empty cells hold more than dt g: an error in the foam's path, never the liquid's.
 vec3 liquid_velocity(vec3 x) {
-  vec3 u_new, unused;
-  sample_grid(u_velocity, u_velocity, x, false, u_new, unused);
-  return u_new;
+  vec4 s = sample_grid_linear(u_velocity, x);
+  if (s.a < 1e-3) return vec3(0.0);
+  return (s.rgb - (1.0 - s.a) * u.dt * u.gravity) / s.a;
 }
 
 #if DIM == 3
