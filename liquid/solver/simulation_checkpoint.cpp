@@ -30,6 +30,7 @@ Checkpoint Simulation::save_checkpoint() {
   engine::vk::Image& bodies = state_->bodies[state_->body_current];
   c.bodies = texels_as<glm::vec4>(engine::graph::download_image(context_, bodies),
                                   size_t(bodies.desc().width) * bodies.desc().height);
+  if (whitewater_) c.whitewater = whitewater_->save();
   return c;
 }
 
@@ -84,6 +85,10 @@ void Simulation::restore_checkpoint(const Checkpoint& c) {
                         ", " + std::to_string(scene_.emitters.size()) + ", " +
                         std::to_string(scene_.obstacles.size()) + ")");
   check_checkpoint_values(c);
+  if (bool(whitewater_) != !c.whitewater.empty())
+    throw ArgumentError(std::string("liquid: the checkpoint ") + (whitewater_ ? "has no" : "has") +
+                        " whitewater; the scene " + (whitewater_ ? "has" : "has none"));
+  if (whitewater_) whitewater_->restore(c.whitewater);
   engine::graph::upload_image(context_, state_->positions[state_->current], std::as_bytes(std::span(c.positions)));
   engine::graph::upload_image(context_, state_->velocities[state_->current], std::as_bytes(std::span(c.velocities)));
   for (size_t a = 0; a < state_->affine[state_->current].size(); ++a)

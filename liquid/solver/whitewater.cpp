@@ -10,6 +10,7 @@
 #include "liquid/solver/texels.h"
 #include "liquid_shader_families.h"
 
+#include <cmath>
 #include <cstring>
 #include <string>
 #include <utility>
@@ -140,6 +141,36 @@ void WhitewaterPass::add_to(engine::graph::RenderGraph& graph, const engine::vk:
   frame.targets = frame.latest;
   frame.latest = written;
   current_ = 1 - current_;
+}
+
+std::vector<glm::vec4> WhitewaterPass::save() const {
+  const size_t texels = size_t(size_.x) * size_.y;
+  std::vector<glm::vec4> out = texels_as<glm::vec4>(engine::graph::download_image(context_, positions_[current_]), texels);
+  const auto velocities = texels_as<glm::vec4>(engine::graph::download_image(context_, velocities_[current_]), texels);
+  out.insert(out.end(), velocities.begin(), velocities.end());
+  return out;
+}
+
+void WhitewaterPass::restore(const std::vector<glm::vec4>& texels) {
+  const size_t slots = size_t(size_.x) * size_.y;
+  if (texels.size() != 2 * slots)
+    throw ArgumentError("liquid: the checkpoint's whitewater holds " + std::to_string(texels.size() / 2) +
+                        " slots; the scene has " + std::to_string(slots));
+  for (size_t i = 0; i < slots; ++i) {
+    const glm::vec4 p = texels[i], v = texels[slots + i];
+    const float kind = p.w;
+    if (!(kind == LIQUID_WHITEWATER_FREE || kind == LIQUID_WHITEWATER_SPRAY || kind == LIQUID_WHITEWATER_FOAM ||
+          kind == LIQUID_WHITEWATER_BUBBLE))
+      throw ArgumentError("liquid: the checkpoint's whitewater slot " + std::to_string(i) + " has no kind");
+    const auto finite = [](glm::vec4 t) {
+      return std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z) && std::isfinite(t.w);
+    };
+    if (kind != LIQUID_WHITEWATER_FREE && !(finite(p) && finite(v)))
+      throw ArgumentError("liquid: the checkpoint's whitewater slot " + std::to_string(i) + " holds a non-finite value");
+  }
+  const auto half = [&](size_t first) { return std::as_bytes(std::span(texels).subspan(first, slots)); };
+  engine::graph::upload_image(context_, positions_[current_], half(0));
+  engine::graph::upload_image(context_, velocities_[current_], half(slots));
 }
 
 std::vector<WhitewaterParticle> WhitewaterPass::read(double time) const {

@@ -42,6 +42,11 @@ class WhitewaterPass {
 
   // The live secondary particles (blocking), in slot order, their ages at `time` (s).
   std::vector<WhitewaterParticle> read(double time) const;
+  // Every slot's texels, positions then velocities (blocking): what a checkpoint keeps.
+  std::vector<glm::vec4> save() const;
+  // Puts back what save() gave; throws ArgumentError for texels no run makes (a wrong count, a kind
+  // outside LIQUID_WHITEWATER_*, a live slot's non-finite value).
+  void restore(const std::vector<glm::vec4>& texels);
   // The textures' size, for the capacity (texels).
   glm::ivec2 texture_size() const { return size_; }
 

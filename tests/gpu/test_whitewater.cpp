@@ -167,3 +167,35 @@ TEST_CASE("whitewater is drawn where the front hits the box and the wall", "[gpu
   CHECK(result.passed);
   REQUIRE_NO_VALIDATION_MESSAGES_ON(context);
 }
+
+TEST_CASE("a checkpoint carries the whitewater, which then continues bit for bit", "[gpu][whitewater][export]") {
+  engine::vk::Context& context = test::gpu();
+  liquid::LiquidNode first(context, dam_break(true));
+  test::run_steps(first, 150);
+  const liquid::LiquidNode::Checkpoint saved = first.save_checkpoint();
+  REQUIRE(saved.whitewater.size() == 2 * size_t(simulation_of(first).whitewater_capacity()));
+  test::run_steps(first, 45);
+  const auto expected = simulation_of(first).read_whitewater();
+  REQUIRE(!expected.empty());
+
+  liquid::LiquidNode second(context, dam_break(true));
+  second.restore_checkpoint(saved);
+  test::run_steps(second, 45);
+  const auto resumed = simulation_of(second).read_whitewater();
+  REQUIRE(resumed.size() == expected.size());
+  for (size_t i = 0; i < resumed.size(); ++i) {
+    REQUIRE(resumed[i].id == expected[i].id);
+    REQUIRE(resumed[i].position == expected[i].position);
+    REQUIRE(resumed[i].velocity == expected[i].velocity);
+  }
+  // Without the whitewater, or with a slot of no kind, the checkpoint is refused naming why.
+  liquid::LiquidNode::Checkpoint none = saved;
+  none.whitewater.clear();
+  CHECK_THROWS_WITH(second.restore_checkpoint(none), Catch::Contains("the checkpoint has no whitewater"));
+  liquid::LiquidNode::Checkpoint odd = saved;
+  odd.whitewater[7].w = 9.0f;
+  CHECK_THROWS_WITH(second.restore_checkpoint(odd), Catch::Contains("whitewater slot 7 has no kind"));
+  liquid::LiquidNode plain(context, dam_break(false));
+  CHECK_THROWS_WITH(plain.restore_checkpoint(saved), Catch::Contains("the checkpoint has whitewater; the scene has none"));
+  REQUIRE_NO_VALIDATION_MESSAGES_ON(context);
+}

@@ -13,8 +13,8 @@ namespace capture {
 namespace {
 
 // 02: the node's next time step follows its clock (adaptive steps). 03: a checksum of the content
-// closes the file.
-constexpr char k_magic[8] = {'L', 'Q', 'C', 'K', 'P', 'T', '0', '5'};
+// closes the file. 06: the secondary particles' textures (whitewater) follow the bodies'.
+constexpr char k_magic[8] = {'L', 'Q', 'C', 'K', 'P', 'T', '0', '6'};
 
 class Writer {
  public:
@@ -105,6 +105,7 @@ void save_checkpoint(const std::filesystem::path& path, const CaptureCheckpoint&
   w.put_vector(c.node.velocities);
   w.put_vector(c.node.affine);
   w.put_vector(c.node.bodies);
+  w.put_vector(c.node.whitewater);
   w.put_vector(std::vector<char>(c.stats_csv.begin(), c.stats_csv.end()));
   w.put(fingerprint(w.bytes_));  // over everything before it
   engine::io::write_file_atomically(path, w.bytes_);
@@ -151,6 +152,7 @@ CaptureCheckpoint load_checkpoint(const std::filesystem::path& path) {
   c.node.velocities = r.get_vector<glm::vec4>();
   c.node.affine = r.get_vector<glm::vec4>();
   c.node.bodies = r.get_vector<glm::vec4>();
+  c.node.whitewater = r.get_vector<glm::vec4>();
   const std::vector<char> stats = r.get_vector<char>();
   c.stats_csv.assign(stats.begin(), stats.end());
   r.get<uint64_t>();  // the checksum, checked above
