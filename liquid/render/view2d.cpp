@@ -83,6 +83,20 @@ engine::vk::GraphicsPipelineDesc view2d_pipeline_desc(const LiquidNode& node, bo
       .specialization = view2d_specialization(node, panel)};
 }
 
+
+// Points from a particle texture (particles2d.vert or whitewater2d.vert), alpha-blended.
+engine::vk::GraphicsPipelineDesc points_pipeline_desc(const char* name, const ShaderFamily& vertex,
+                                                      const ShaderFamily& fragment) {
+  return {.name = name,
+          .vertex = shader_variant(vertex),
+          .fragment = shader_variant(fragment),
+          .topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST,
+          .color_formats = {k_color_format},
+          .blend = {engine::vk::BlendMode::Alpha},
+          .bindings = {{LIQUID_BINDING_PARTICLES2D_POSITIONS, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
+          .push_constant_size = sizeof(Particles2dPush)};
+}
+
 }  // namespace
 
 View2dPass::View2dPass(engine::vk::Context& context, const LiquidNode& node, ViewOutput output)
@@ -100,15 +114,14 @@ View2dPass::View2dPass(engine::vk::Context& context, const LiquidNode& node, Vie
       opaque_panel_(output == ViewOutput::HostTargets
                         ? engine::vk::GraphicsPipeline(context, view2d_pipeline_desc(node, false, true))
                           : engine::vk::GraphicsPipeline()),
-      particles_(context, engine::vk::GraphicsPipelineDesc{
-                              .name = "liquid.view2d.particles",
-                              .vertex = shader_variant(shaders::particles2d_vert),
-                              .fragment = shader_variant(shaders::particles2d_frag),
-                              .topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST,
-                              .color_formats = {k_color_format},
-                              .blend = {engine::vk::BlendMode::Alpha},
-                              .bindings = {{LIQUID_BINDING_PARTICLES2D_POSITIONS, DescriptorKind::SampledImage, VK_SHADER_STAGE_VERTEX_BIT}},
-                              .push_constant_size = sizeof(Particles2dPush)}),
+      particles_(context, points_pipeline_desc("liquid.view2d.particles", shaders::particles2d_vert,
+                                               shaders::particles2d_frag)),
+      whitewater_(node.scene().whitewater
+                      ? engine::vk::GraphicsPipeline(context,
+                                                     points_pipeline_desc("liquid.view2d.whitewater",
+                                                                          shaders::whitewater2d_vert,
+                                                                          shaders::whitewater2d_frag))
+                      : engine::vk::GraphicsPipeline()),
       linear_(context, VK_FILTER_LINEAR),
       nearest_(context, VK_FILTER_NEAREST),
       uniforms_(context, node, 0) {}
@@ -172,29 +185,43 @@ ImageHandle View2dPass::add_to(engine::graph::RenderGraph& graph, const LiquidIm
                 engine::passes::draw_fullscreen(ctx.cmd);
               })
           .color;
-  if (!settings.draw_particles || node_.active_particles() == 0) return color;
-
   // Particles: points blended over the liquid, about 0.7 particle spacings wide (1 to 5 pixels).
   // Where the particles are packed closer than a few pixels, each point is fainter, so that the
   // liquid still shows through instead of a white sheet.
   const float spacing_pixels = setup.particle_spacing * layout.pixels_per_metre;
-  const float point_size = std::clamp(0.7f * spacing_pixels, 1.0f, 5.0f);
-  const float alpha = std::clamp(spacing_pixels / 3.0f, 0.25f, 0.85f);
-  const Particles2dPush particles_push{layout.origin, layout.pixels_per_metre, point_size, frame,
-                                       setup.particle_texture.x, alpha};
-  const uint32_t count = uint32_t(node_.active_particles());
-  const ImageHandle positions = images.positions;
+  if (settings.draw_particles && node_.active_particles() > 0) {
+    const Particles2dPush push{layout.origin, layout.pixels_per_metre, std::clamp(0.7f * spacing_pixels, 1.0f, 5.0f),
+                               frame, setup.particle_texture.x, std::clamp(spacing_pixels / 3.0f, 0.25f, 0.85f)};
+    color = draw_points(graph, particles_, images.positions, color, push, uint32_t(node_.active_particles()));
+  }
+  // The secondary particles over them: every slot (the free ones are clipped), a little smaller.
+  if (settings.whitewater && whitewater_.handle() != VK_NULL_HANDLE && images.whitewater_positions.valid()) {
+    const engine::vk::ImageDesc& texture = graph.image_desc(images.whitewater_positions);
+    const Particles2dPush push{layout.origin, layout.pixels_per_metre, std::clamp(0.6f * spacing_pixels, 1.5f, 4.0f),
+                               frame, int(texture.width), 0.9f};
+    color = draw_points(graph, whitewater_, images.whitewater_positions, color, push, texture.width * texture.height);
+  }
+  return color;
+}
+
+ImageHandle View2dPass::draw_points(engine::graph::RenderGraph& graph, const engine::vk::GraphicsPipeline& pipeline,
+                                    ImageHandle positions, ImageHandle color, const gpu::Particles2dPush& push,
+                                    uint32_t count) const {
+  struct Data {
+    engine::passes::PassBindings bindings;
+    ImageHandle color;
+  };
   return graph
       .add_pass<Data>(
-          "liquid.view2d.particles",
+          pipeline.name(),
           [&](PassBuilder& b, Data& d) {
-            d.bindings = engine::passes::PassBindings(particles_);
+            d.bindings = engine::passes::PassBindings(pipeline);
             d.bindings.bind_image(b, LIQUID_BINDING_PARTICLES2D_POSITIONS, positions, nearest_.handle());
             d.color = b.write(color, Access::ColorAttachmentBlend);
           },
-          [this, particles_push, count](PassContext& ctx, const Data& d) {
+          [&pipeline, push, count](PassContext& ctx, const Data& d) {
             d.bindings.bind_and_push(ctx);
-            particles_.push_constants(ctx.cmd, particles_push);
+            pipeline.push_constants(ctx.cmd, push);
             vkCmdDraw(ctx.cmd, count, 1, 0, 0);
           })
       .color;

@@ -8,6 +8,7 @@
 #include "engine/vk/uniform_arena.h"
 #include "liquid/node.h"
 #include "liquid/render/view_uniforms.h"
+#include "shaders/liquid/render/view_blocks.h"
 #include "liquid/renderer.h"
 
 #include <glm/glm.hpp>
@@ -28,7 +29,8 @@ struct View2dLayout {
 // Fits `domain` (m) into a width x height frame.
 View2dLayout fit_view2d(glm::vec2 domain, uint32_t width, uint32_t height);
 
-// Draws a 2D LiquidNode's density grid as liquid (and its particles when asked) into a new image.
+// Draws a 2D LiquidNode's density grid as liquid (and its particles when asked, its secondary
+// particles when the scene has whitewater and RenderSettings::whitewater) into a new image.
 class View2dPass {
  public:
   // Throws UsageError when the node is not two-dimensional. HostTargets: draw the
@@ -41,11 +43,18 @@ class View2dPass {
                                     const RenderSettings& settings, const HostPanel* panel = nullptr);
 
  private:
+  // `count` points of `pipeline` (particles2d.vert's or whitewater2d.vert's) from the texture
+  // `positions`, blended into `color`; returns its new version.
+  engine::graph::ImageHandle draw_points(engine::graph::RenderGraph& graph, const engine::vk::GraphicsPipeline& pipeline,
+                                         engine::graph::ImageHandle positions, engine::graph::ImageHandle color,
+                                         const gpu::Particles2dPush& push, uint32_t count) const;
+
   const LiquidNode& node_;
   engine::vk::GraphicsPipeline depth_;   // the depth below the surface, per cell of the grid
   engine::vk::GraphicsPipeline liquid_;
   engine::vk::GraphicsPipeline opaque_panel_;  // panels only: HostPanel::background, PANEL off, into the rectangle
   engine::vk::GraphicsPipeline particles_;
+  engine::vk::GraphicsPipeline whitewater_;  // scenes with whitewater
   engine::vk::Sampler linear_;
   engine::vk::Sampler nearest_;
   ViewUniforms uniforms_;

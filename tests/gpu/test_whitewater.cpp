@@ -4,6 +4,7 @@
 // impact is (test_host.cpp: composited into a host's targets).
 #include "engine/graph/transfer.h"
 #include "engine/vk/commands.h"
+#include "liquid/render/view2d.h"
 #include "liquid/renderer.h"
 #include "tests/gpu/liquid_helpers.h"
 #include "tests/gpu/whitewater_helpers.h"
@@ -165,6 +166,37 @@ TEST_CASE("whitewater is drawn where the front hits the box and the wall", "[gpu
       test::compare_with_golden(with, "frame_whitewater_3d", {.channel_threshold = 12, .max_differing_fraction = 0.01});
   INFO(result.message);
   CHECK(result.passed);
+  REQUIRE_NO_VALIDATION_MESSAGES_ON(context);
+}
+
+TEST_CASE("the 2D view draws the whitewater over the liquid, where it is", "[gpu][whitewater][view2d]") {
+  engine::vk::Context& context = test::gpu();
+  liquid::Scene scene = test::shipped_scene("dam_break_2d");
+  scene.whitewater = liquid::Whitewater{};
+  liquid::LiquidNode node(context, scene);
+  test::run_steps(node, 300);  // the front has run up the far wall
+  const auto live = simulation_of(node).read_whitewater();
+  REQUIRE(live.size() > 20);
+  const engine::vk::Rgba8Image with = own_frame(node, true), without = own_frame(node, false);
+  // The view fits the domain into the frame; the box around the live particles, grown by 3 pixels,
+  // holds every pixel they brightened.
+  glm::vec3 lo(1e9f), hi(-1e9f);
+  for (const liquid::WhitewaterParticle& p : live) {
+    lo = glm::min(lo, p.position);
+    hi = glm::max(hi, p.position);
+  }
+  const liquid::View2dLayout layout = liquid::fit_view2d(glm::vec2(node.scene().domain), k_width, k_height);
+  const float scale = layout.pixels_per_metre;
+  const glm::mat4 to_clip =  // x, y in metres to the frame's clip space: pixel = origin + (x, -y) scale
+      glm::mat4(glm::vec4(2.0f * scale / k_width, 0, 0, 0), glm::vec4(0, -2.0f * scale / k_height, 0, 0),
+                glm::vec4(0, 0, 1, 0),
+                glm::vec4(2.0f * layout.origin.x / k_width - 1.0f, 2.0f * layout.origin.y / k_height - 1.0f, 0, 1));
+  const glm::vec3 margin(3.0f / scale, 3.0f / scale, 0.0f);
+  const test::BrighterPixels changed = test::brighter_pixels(with, without, to_clip, lo - margin, hi + margin);
+  INFO(live.size() << " live; " << changed.pixels << " pixels brighter with whitewater, " << changed.in_box
+                   << " within their box");
+  CHECK(changed.pixels > 10);
+  CHECK(changed.in_box == changed.pixels);
   REQUIRE_NO_VALIDATION_MESSAGES_ON(context);
 }
 
