@@ -6,6 +6,7 @@
 #include "liquid/node.h"
 #include "liquid/scene.h"
 #include "tests/gpu/liquid_helpers.h"
+#include "tests/gpu/whitewater_helpers.h"
 #include "tests/support/gpu.h"
 
 #include <catch2/catch.hpp>
@@ -123,6 +124,30 @@ TEST_CASE("the exported surface of a pool at rest holds its volume and closes on
     CHECK(std::filesystem::file_size(path) > 1000);
   }
   REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+// The dam break as it runs: the front, the impact on a box and the run-up on the far wall, in the
+// shipped dam break's regime and cells (the whitewater tests' scene, without whitewater).
+TEST_CASE("the exported surface of a running dam break holds its volume within 5 % and is closed", "[gpu][liquid][export]") {
+  engine::vk::Context& context = test::gpu();
+  liquid::LiquidNode node(context, test::whitewater_dam_break(false));
+  for (const int steps : {45, 45, 45, 75}) {  // 0.1, 0.2, 0.3 and 0.47 s
+    const liquid::Diagnostics d = test::run_steps(node, steps);
+    const liquid::VolumeFrame volume = liquid::read_volume(context, node);
+    const liquid::LiquidSurface surface(volume, liquid::SurfaceSettings{});
+    const liquid::SurfaceMesh mesh = surface.mesh(volume);
+    const double liquid_volume = d.mass / double(node.scene().density);
+    const double enclosed = enclosed_volume(mesh);
+    const EdgeCounts edges = count_edges(mesh);
+    INFO("t = " << node.time() << " s: " << mesh.triangles.size() << " triangles, enclosed " << enclosed
+                << " m^3 against mass / rho0 " << liquid_volume << " m^3 (" << 100.0 * (enclosed / liquid_volume - 1.0)
+                << " %), " << edges.not_shared_by_two << " of " << edges.edges << " edges not shared by two");
+    REQUIRE(mesh.triangles.size() > 100);
+    CHECK(std::abs(enclosed / liquid_volume - 1.0) < 0.05);
+    CHECK(edges.not_shared_by_two == 0);
+    CHECK(edges.same_direction_twice == 0);
+  }
+  REQUIRE_NO_VALIDATION_MESSAGES_ON(context);
 }
 
 TEST_CASE("the surface of a domain full of liquid is its box and of an empty one nothing", "[gpu][liquid][export]") {
