@@ -125,14 +125,15 @@ double rest_height_above(liquid::LiquidNode& node, glm::vec3 body, float clearan
   return volume / area;
 }
 
-// Archimedes for a box of 500 kg/m^3, dropped with its bottom on the surface: it comes to rest
-// half under water, the liquid bearing its weight. Checked: a draft from the particles' surface
-// within 5 % of half the box's height (measured 1.7 % deep in 2D, 2.6 % short in 3D;
-// docs/physics.md, "Bodies that float"), the liquid's force equal to the weight within 2 %, and the
-// vertical speed under 1 cm/s over the last `measure_seconds`.
-void check_floating_box(const Pool& pool, double settle_seconds, double measure_seconds) {
+// Archimedes for a box of `density` (500 kg/m^3: half the water's), dropped with its bottom on the
+// surface: it comes to rest that share of its height under water, the liquid bearing its weight.
+// Checked: a draft from the particles' surface within 5 % of that share of the box's height
+// (500 kg/m^3: measured 1.7 % deep in 2D, 2.6 % short in 3D; docs/physics.md, "Bodies that
+// float"), the liquid's force equal to the weight within 2 %, and the vertical speed under 1 cm/s
+// over the last `measure_seconds`.
+void check_floating_box(const Pool& pool, double settle_seconds, double measure_seconds, float density = 500.0f) {
   const auto start = std::chrono::steady_clock::now();
-  liquid::LiquidNode node(test::gpu(), pool_scene(pool, 500.0f, pool.depth));
+  liquid::LiquidNode node(test::gpu(), pool_scene(pool, density, pool.depth));
   const int count = node.active_particles();
   run_body(node, settle_seconds);
   const Track track = run_body(node, measure_seconds);
@@ -147,14 +148,14 @@ void check_floating_box(const Pool& pool, double settle_seconds, double measure_
   const double bottom = mean_height - pool.half_extent.y;
   const double draft = surface - bottom;
   const double rest_draft = rest_height_above(node, body.pose.center, clearance, bottom);
-  const double expected = pool.half_extent.y;  // half the height, at half the water's density
+  const double expected = 2.0 * pool.half_extent.y * density / 1000.0;  // Archimedes: the height times rho / rho_water
   const double error = std::abs(draft - expected) / expected;
   const double weight = body.mass * 9.81;
-  INFO(pool.dimension << "D: surface " << surface << " m, box centre " << mean_height << " m, draft " << draft
+  INFO(density << " kg/m^3, " << pool.dimension << "D: surface " << surface << " m, box centre " << mean_height << " m, draft " << draft
                       << " m, expected " << expected << " m (error " << 100.0 * error << " %), largest vertical speed "
                       << max_speed << " m/s over the last " << measure_seconds << " s; force " << body.force.y
                       << " N vs weight " << weight << " N; " << seconds_since(start) << " s wall");
-  WARN(pool.dimension << "D draft " << draft << " m, expected " << expected << " m (error " << 100.0 * error
+  WARN(density << " kg/m^3, " << pool.dimension << "D draft " << draft << " m, expected " << expected << " m (error " << 100.0 * error
                       << " %); from the far field's rest-density height " << rest_draft << " m; largest vertical speed "
                       << max_speed << " m/s");
   CHECK(error < 0.05);
@@ -206,6 +207,15 @@ Pool deep_pool(float pic_ratio = 0.3f) {
 
 // A box of the water's density put under water stays where it is: within 5 % of its start height
 // over 5 s (measured -1.7 to +1.4 %).
+// The drafts of boxes of 300 and 800 kg/m^3, in the pools above: a measurement, hidden from the
+// suite (`gpu_tests "[drafts]"`, 3.5 minutes) because not every one is within 5 % yet
+// (docs/physics.md, "Bodies that float").
+TEST_CASE("boxes of 300 and 800 kg/m^3 float at their drafts", "[.][drafts]") {
+  for (float density : {300.0f, 800.0f}) check_floating_box(Pool{}, 1.6, 0.4, density);
+  for (float density : {300.0f, 800.0f}) check_floating_box(coarse_3d_pool(), 2.4, 0.4, density);
+  REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
 TEST_CASE("a 2D box as dense as water stays where it is put under water", "[gpu][liquid][bodies]") {
   const Pool pool = deep_pool();
   const float start_bottom = 0.05f;
