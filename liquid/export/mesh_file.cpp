@@ -2,6 +2,7 @@
 
 #include "engine/io/atomic_file.h"
 #include "liquid/error.h"
+#include "liquid/export/frame_comments.h"
 
 #include <bit>
 #include <cstdio>
@@ -12,22 +13,12 @@ namespace liquid {
 
 namespace {
 
-std::string header_comments(const MeshFrame& frame, const char* prefix) {
-  char text[160];
-  std::snprintf(text, sizeof text, "%s frame %d\n%s time_s %.17g\n", prefix, frame.frame, prefix, frame.time_s);
-  std::string out = text;
-  if (frame.fps > 0.0) {
-    std::snprintf(text, sizeof text, "%s fps %.17g\n", prefix, frame.fps);
-    out += text;
-  }
-  return out;
-}
-
 std::string encode_ply(const SurfaceMesh& mesh, const MeshFrame& frame) {
   static_assert(std::endian::native == std::endian::little, "binary_little_endian PLY is written as-is");
   std::string out = "ply\nformat binary_little_endian 1.0\n"
                     "comment rasterization-liquids surface: x y z m, vx vy vz m/s, triangles wound outward\n" +
-                    header_comments(frame, "comment") + "element vertex " + std::to_string(mesh.positions.size()) +
+                    frame_comments("comment", frame.frame, frame.time_s, frame.fps) +
+                    "element vertex " + std::to_string(mesh.positions.size()) +
                     "\nproperty float x\nproperty float y\nproperty float z\n"
                     "property float vx\nproperty float vy\nproperty float vz\n"
                     "element face " + std::to_string(mesh.triangles.size()) +
@@ -51,7 +42,8 @@ std::string encode_ply(const SurfaceMesh& mesh, const MeshFrame& frame) {
 }
 
 std::string encode_obj(const SurfaceMesh& mesh, const MeshFrame& frame) {
-  std::string out = "# rasterization-liquids surface: positions in m, triangles wound outward\n" + header_comments(frame, "#");
+  std::string out = "# rasterization-liquids surface: positions in m, triangles wound outward\n" +
+                    frame_comments("#", frame.frame, frame.time_s, frame.fps);
   char line[96];
   for (const glm::vec3& p : mesh.positions) {
     std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", p.x, p.y, p.z);

@@ -1,26 +1,14 @@
 #include "liquid/export/ply.h"
 
 #include "engine/io/atomic_file.h"
+#include "liquid/export/frame_comments.h"
 
 #include <bit>
 #include <cstdint>
-#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 
 namespace liquid {
-
-namespace {
-
-// "\ncomment fps 30": the sequence's rate, exactly as given (round-trips the double).
-std::string fps_comment(double fps) {
-  if (fps <= 0.0) return {};
-  char text[64];
-  std::snprintf(text, sizeof text, "\ncomment fps %.17g", fps);
-  return text;
-}
-
-}  // namespace
 
 std::string encode_ply(const ParticleSnapshot& particles, const PlyFrame& frame) {
   static_assert(std::endian::native == std::endian::little, "binary_little_endian PLY is written as-is");
@@ -29,12 +17,10 @@ std::string encode_ply(const ParticleSnapshot& particles, const PlyFrame& frame)
     throw ArgumentError("encode_ply: " + std::to_string(count) + " positions but " +
                         std::to_string(particles.velocities.size()) + " velocities and " +
                         std::to_string(frame.density.size()) + " densities");
-  char time[64];
-  std::snprintf(time, sizeof time, "%.17g", frame.time_s);  // round-trips the double
   std::string out = "ply\nformat binary_little_endian 1.0\n"
-                    "comment rasterization-liquids particles: x y z m, vx vy vz m/s, id, density rho/rho0\n"
-                    "comment frame " + std::to_string(frame.frame) + "\ncomment time_s " + time + fps_comment(frame.fps) +
-                    "\nelement vertex " + std::to_string(count) +
+                    "comment rasterization-liquids particles: x y z m, vx vy vz m/s, id, density rho/rho0\n" +
+                    frame_comments("comment", frame.frame, frame.time_s, frame.fps) +
+                    "element vertex " + std::to_string(count) +
                     "\nproperty float x\nproperty float y\nproperty float z\n"
                     "property float vx\nproperty float vy\nproperty float vz\n"
                     "property int id\nproperty float density\nend_header\n";

@@ -115,6 +115,20 @@ void write_vdb(const std::filesystem::path& path, const VolumeFrame& volume, con
   velocity->setVectorType(openvdb::VEC_CONTRAVARIANT_RELATIVE);  // a world-space direction per voxel
   velocity->setTransform(transform);
 
+  openvdb::GridPtrVec grids{density, velocity};
+  // With whitewater: a number density, not a fog volume's 0 to 1, so the grid's class stays unknown.
+  openvdb::FloatGrid::Ptr foam;
+  if (!volume.foam.empty()) {
+    if (volume.foam.size() != volume.density.size())
+      throw ArgumentError("write_vdb: " + std::to_string(volume.foam.size()) + " foam values for " +
+                          std::to_string(volume.density.size()) + " cells");
+    foam = openvdb::FloatGrid::create(0.0f);
+    foam->setName("foam");
+    foam->setTransform(transform);
+    foam->insertMeta("unit", openvdb::StringMetadata("particles per m^3"));
+    grids.push_back(foam);
+  }
+
   auto rho = density->getAccessor();
   auto u = velocity->getAccessor();
   for (int z = 0; z < volume.cells.z; ++z)
@@ -122,15 +136,15 @@ void write_vdb(const std::filesystem::path& path, const VolumeFrame& volume, con
       for (int x = 0; x < volume.cells.x; ++x) {
         const size_t i = volume.index(x, y, z);
         const openvdb::Coord c(x, y, z);
+        if (foam && volume.foam[i] > 0.0f) foam->tree().setValue(c, volume.foam[i]);
         if (!(volume.density[i] >= k_vdb_min_density)) continue;  // velocity too: none without liquid
         rho.setValue(c, volume.density[i]);
         const glm::vec4& v = volume.velocity[i];
         if (v.w >= 0.5f) u.setValue(c, openvdb::Vec3s(v.x, v.y, v.z));
       }
 
-  for (openvdb::GridBase* grid : {static_cast<openvdb::GridBase*>(density.get()), static_cast<openvdb::GridBase*>(velocity.get())})
-    grid->insertMeta("time_s", openvdb::DoubleMetadata(frame.time_s));
-  write_vdb_grids(path, {density, velocity}, frame_metadata(frame, volume.cell_size));
+  for (const openvdb::GridBase::Ptr& grid : grids) grid->insertMeta("time_s", openvdb::DoubleMetadata(frame.time_s));
+  write_vdb_grids(path, grids, frame_metadata(frame, volume.cell_size));
 }
 
 VdbContents read_vdb(const std::filesystem::path& path) {
@@ -146,15 +160,20 @@ VdbContents read_vdb(const std::filesystem::path& path) {
     for (auto name = file.beginName(); name != file.endName(); ++name) out.grid_names.push_back(name.gridName());
     const auto density = openvdb::gridPtrCast<openvdb::FloatGrid>(file.readGrid("density"));
     const auto velocity = openvdb::gridPtrCast<openvdb::Vec3SGrid>(file.readGrid("velocity"));
+    const bool has_foam = file.hasGrid("foam");
+    const auto foam = has_foam ? openvdb::gridPtrCast<openvdb::FloatGrid>(file.readGrid("foam")) : nullptr;
     file.close();
-    if (!density || !velocity) throw liquid::Error(path.string() + ": the density or velocity grid has the wrong type");
+    if (!density || !velocity || (has_foam && !foam))
+      throw liquid::Error(path.string() + ": the density, velocity or foam grid has the wrong type");
     out.voxel_size = density->voxelSize()[0];
     const openvdb::Vec3d zero = density->indexToWorld(openvdb::Vec3d(0.0));
     out.voxel_zero = {zero.x(), zero.y(), zero.z()};
-    for (auto v = density->cbeginValueOn(); v; ++v)
-      out.density.push_back({{v.getCoord().x(), v.getCoord().y(), v.getCoord().z()}, *v});
+    const auto index = [](const openvdb::Coord& c) { return glm::ivec3(c.x(), c.y(), c.z()); };
+    for (auto v = density->cbeginValueOn(); v; ++v) out.density.push_back({index(v.getCoord()), *v});
     for (auto v = velocity->cbeginValueOn(); v; ++v)
-      out.velocity.push_back({{v.getCoord().x(), v.getCoord().y(), v.getCoord().z()}, {(*v).x(), (*v).y(), (*v).z()}});
+      out.velocity.push_back({index(v.getCoord()), {(*v).x(), (*v).y(), (*v).z()}});
+    if (foam)
+      for (auto v = foam->cbeginValueOn(); v; ++v) out.foam.push_back({index(v.getCoord()), *v});
   } catch (const openvdb::Exception& e) {
     throw liquid::Error(path.string() + ": " + e.what());
   }

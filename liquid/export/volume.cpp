@@ -3,6 +3,7 @@
 #include "engine/graph/transfer.h"
 #include "liquid/node.h"
 #include "liquid/solver/node_view.h"
+#include "liquid/types.h"
 
 #include <algorithm>
 #include <cmath>
@@ -78,6 +79,15 @@ std::vector<glm::vec3> sample_velocity(const VolumeFrame& volume, const std::vec
     out.push_back(weights > 0.0f ? sum / weights : glm::vec3(0.0f));
   }
   return out;
+}
+
+std::vector<float> foam_number_density(const VolumeFrame& volume, const std::vector<WhitewaterParticle>& particles) {
+  std::vector<float> foam(size_t(volume.cells.x) * volume.cells.y * volume.cells.z, 0.0f);
+  const float inverse_cell_volume = 1.0f / (volume.cell_size * volume.cell_size * volume.cell_size);
+  for (const WhitewaterParticle& p : particles)
+    if (p.kind == WhitewaterKind::Foam)
+      for_each_stencil_cell(volume, p.position, [&](size_t cell, float weight) { foam[cell] += weight * inverse_cell_volume; });
+  return foam;
 }
 
 }  // namespace liquid

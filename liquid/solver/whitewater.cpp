@@ -10,6 +10,7 @@
 #include "liquid/solver/texels.h"
 #include "liquid_shader_families.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -185,7 +186,8 @@ std::vector<WhitewaterParticle> WhitewaterPass::read(double time) const {
     p.position = glm::vec3(positions[i]);
     p.velocity = glm::vec3(velocities[i]);
     p.kind = WhitewaterKind(kind);
-    p.age = float(time - double(velocities[i].w));
+    // The birth time is stored as a float, which can round to just after the double clock's time.
+    p.age = float(std::max(0.0, time - double(velocities[i].w)));
     uint32_t birth_bits = 0;
     std::memcpy(&birth_bits, &velocities[i].w, sizeof birth_bits);
     p.id = (uint64_t(i) << 32) | birth_bits;

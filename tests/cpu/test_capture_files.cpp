@@ -1,6 +1,7 @@
-// The CPU side of the capture tool's caches: per-particle density sampled from the grid, and
-// scene fields overridden the way --set does it, checked like the file.
+// The CPU side of the capture tool's caches: per-particle density sampled from the grid, the foam
+// splatted onto it, and scene fields overridden the way --set does it, checked like the file.
 #include "liquid/export/volume.h"
+#include "liquid/types.h"
 #include "liquid/scene.h"
 #include "liquid/scene/override.h"
 
@@ -52,6 +53,40 @@ TEST_CASE("a surface vertex's velocity is the grid's over the cells that hold li
   CHECK(u[1].x == Approx(2.0f));
   CHECK(u[2].x == Approx(3.0f));  // air and (1, 0, 0) in the stencil
   CHECK(liquid::sample_velocity(v, {{0.5f, 1.5f, 1.5f}})[0] == glm::vec3(0.0f));  // no liquid: zero
+}
+
+TEST_CASE("the foam grid spreads each foam particle over its cells' centres and integrates to their count", "[export]") {
+  liquid::VolumeFrame v;
+  v.cells = {4, 3, 2};
+  v.cell_size = 0.5f;
+  const auto particle = [](glm::vec3 p, liquid::WhitewaterKind kind) {
+    liquid::WhitewaterParticle w;
+    w.position = p;
+    w.kind = kind;
+    return w;
+  };
+  using liquid::WhitewaterKind;
+  const std::vector<float> foam = liquid::foam_number_density(
+      v, {particle({0.25f, 0.25f, 0.25f}, WhitewaterKind::Foam),     // cell (0, 0, 0)'s centre
+          particle({1.0f, 0.75f, 0.25f}, WhitewaterKind::Foam),      // halfway between (1, 1, 0) and (2, 1, 0)
+          particle({1.9f, 1.4f, 0.9f}, WhitewaterKind::Foam),        // past the last centres: clamped to (3, 2, 1)
+          particle({0.25f, 0.25f, 0.25f}, WhitewaterKind::Spray),    // not foam: left out
+          particle({0.75f, 0.25f, 0.25f}, WhitewaterKind::Bubble)});
+  REQUIRE(foam.size() == 24);
+  const float per_m3 = 1.0f / (0.5f * 0.5f * 0.5f);
+  CHECK(foam[v.index(0, 0, 0)] == Approx(per_m3));
+  CHECK(foam[v.index(1, 0, 0)] == 0.0f);  // the bubble's cell: nothing
+  CHECK(foam[v.index(1, 1, 0)] == Approx(0.5f * per_m3));
+  CHECK(foam[v.index(2, 1, 0)] == Approx(0.5f * per_m3));
+  CHECK(foam[v.index(3, 2, 1)] == Approx(per_m3));
+  double count = 0.0;
+  for (float n : foam) count += n * 0.5 * 0.5 * 0.5;
+  CHECK(count == Approx(3.0));
+  // 2D: bilinear over the one-cell-deep grid, still per m^3 of its cells.
+  v.cells = {4, 3, 1};
+  const std::vector<float> flat = liquid::foam_number_density(v, {particle({0.5f, 0.25f, 0.0f}, WhitewaterKind::Foam)});
+  CHECK(flat[v.index(0, 0, 0)] == Approx(0.5f * per_m3));
+  CHECK(flat[v.index(1, 0, 0)] == Approx(0.5f * per_m3));
 }
 
 TEST_CASE("scene overrides (the capture tool's --set) are applied to the document and checked like the file", "[scene]") {

@@ -684,6 +684,92 @@ def check_surface():
             fail(f"frame {f}: velocities")
 
 
+def check_whitewater():
+    """--export-whitewater and --export-volume on the tiny scene with "whitewater": {}: every frame's
+    PLY read by the reader docs/caches.md gives (frame 0's empty one too), its count against
+    stats.csv, its types 1 to 3 named in the header, one id a particle; the VDB's foam grid summing
+    to the file's foam particles; the export's time in stats, summary and the last line; and a
+    resumed run writing them on under the recorded name."""
+    import pyopenvdb as vdb
+    namespace = {}
+    exec(doc_block(ARGS.docs, "def read_liquid_whitewater"), namespace)
+    read_whitewater = namespace["read_liquid_whitewater"]
+    scene = json.load(open(ARGS.scene))
+    scene["whitewater"] = {}
+    path = os.path.join(ARGS.work, "whitewater.json")
+    json.dump(scene, open(path, "w"))
+    out = os.path.join(ARGS.work, "whitewater")
+    shutil.rmtree(out, ignore_errors=True)
+    last = run([path, "-s", "0", "-e", "6", "--export-whitewater", "--export-volume", "-o", out]
+               + SMALL).stdout.splitlines()[-1]
+    if not re.search(r"; the whitewater export took [0-9.]+ ms a frame$", last):
+        fail(f"last line {last!r} does not give the whitewater export's time")
+    summary = json.load(open(os.path.join(out, "summary.json")))
+    if not 0.0 < summary["whitewater_export_ms"]["median"] <= summary["whitewater_export_ms"]["max"]:
+        fail(f"summary whitewater_export_ms {summary.get('whitewater_export_ms')}")
+    domain = scene["domain"]
+    counts = []
+    for row in stats_rows(out):
+        f = int(row["frame"])
+        ply = read_whitewater(os.path.join(out, f"whitewater_{f:05d}.ply"))
+        n = len(ply["type"])
+        counts.append(n)
+        if ply["frame"] != f or abs(ply["time_s"] - float(row["time_s"])) > 1e-6:
+            fail(f"frame {f}: the header says frame {ply['frame']} at {ply['time_s']} s")
+        if ply["types"] != {1: "spray", 2: "foam", 3: "bubble"}:
+            fail(f"frame {f}: the header names the types {ply['types']}")
+        if n != int(row["whitewater_particles"]) or not float(row["whitewater_ms"]) > 0.0:
+            fail(f"frame {f}: {n} particles in the file, stats.csv {row['whitewater_particles']} "
+                 f"in {row['whitewater_ms']} ms")
+        if any(t not in (1, 2, 3) for t in ply["type"]) or len(set(ply["id"])) != n:
+            fail(f"frame {f}: types {sorted(set(ply['type']))}, {len(set(ply['id']))} ids for {n} particles")
+        if any(not -1e-6 <= p[i] <= domain[i] + 1e-6 for p in zip(ply["x"], ply["y"], ply["z"]) for i in range(3)):
+            fail(f"frame {f}: a particle outside the domain")
+        if any(not 0.0 <= a <= float(row["time_s"]) + 1e-6 for a in ply["age"]):
+            fail(f"frame {f}: ages {min(ply['age'])} to {max(ply['age'])} s")
+        grids, _ = vdb.readAll(os.path.join(out, f"volume_{f:05d}.vdb"))
+        by_name = {g.name: g for g in grids}
+        if sorted(by_name) != ["density", "foam", "velocity"]:
+            fail(f"frame {f}: grids {sorted(by_name)}")
+        foam = by_name["foam"]
+        h = foam.transform.voxelSize()[0]
+        if abs(h - by_name["density"].transform.voxelSize()[0]) > 1e-9 or foam.transform.indexToWorld(
+                (0, 0, 0)) != by_name["density"].transform.indexToWorld((0, 0, 0)):
+            fail(f"frame {f}: the foam grid is not placed as the density's")
+        total = sum(v.value for v in foam.iterOnValues()) * h ** 3
+        if abs(total - ply["type"].count(2)) > 1e-3 * max(1, ply["type"].count(2)):
+            fail(f"frame {f}: the foam grid sums to {total} particles, the file holds {ply['type'].count(2)}")
+    if counts[0] != 0 or max(counts) == 0:
+        fail(f"particles per frame {counts}: none at frame 0, some later expected")
+
+    resumed = os.path.join(ARGS.work, "whitewater_resumed")
+    shutil.rmtree(resumed, ignore_errors=True)
+    code, err = start_and_interrupt([path, "-s", "0", "-e", "24", "--whitewater-name", "w_####.ply", "-o", resumed,
+                                     "--checkpoint-every", "3"] + SMALL, 5, signal.SIGINT)
+    if code != 130:
+        fail(f"the run to resume exited {code}, expected 130 (interrupted): {err}")
+    run(["--resume", resumed, "--validation"])
+    if json.load(open(os.path.join(resumed, "capture.json")))["names"]["whitewater"] != "w_####.ply":
+        fail("capture.json does not record the whitewater files' name")
+    rows = stats_rows(resumed)
+    if [int(r["frame"]) for r in rows] != list(range(25)):
+        fail(f"the resumed run's stats.csv has frames {[r['frame'] for r in rows]}")
+    # The checkpoint carries the secondary particles: every frame as an uninterrupted run writes it.
+    straight = os.path.join(ARGS.work, "whitewater_straight")
+    shutil.rmtree(straight, ignore_errors=True)
+    run([path, "-s", "0", "-e", "24", "--whitewater-name", "w_####.ply", "-o", straight] + SMALL)
+    for row in rows:
+        f = int(row["frame"])
+        ply = read_whitewater(os.path.join(resumed, f"w_{f:04d}.ply"))
+        if len(ply["type"]) != int(row["whitewater_particles"]):
+            fail(f"resumed run, frame {f}: the file's count is not stats.csv's")
+        expected = read_whitewater(os.path.join(straight, f"w_{f:04d}.ply"))
+        if any(ply[k] != expected[k] for k in ("x", "y", "z", "type", "id")):
+            fail(f"resumed run, frame {f}: its whitewater differs from the uninterrupted run's")
+    print(f"whitewater: {counts} particles in frames 0 to 6, the foam grids summing to the files' foam; resumed "
+          "as the uninterrupted run")
+
+
 def check_video():
     out, video = os.path.join(ARGS.work, "video"), os.path.join(ARGS.work, "liquid.mp4")
     shutil.rmtree(out, ignore_errors=True)
@@ -829,6 +915,7 @@ if __name__ == "__main__":
     os.makedirs(ARGS.work, exist_ok=True)
     checks = {"sigint": lambda: check_interrupt(signal.SIGINT), "sigterm": lambda: check_interrupt(signal.SIGTERM),
               "resume": check_resume, "dryrun": check_dry_run, "estimate": check_estimate, "names": check_names, "folders": check_folders, "range": check_range, "volume": check_volume, "surface": check_surface,
+              "whitewater": check_whitewater,
               "video": check_video, "adaptive": check_adaptive,
               "failsafe": check_failsafe, "lock": check_lock, "fps": check_fps, "replace": check_replace,
               "leftovers": check_leftovers,

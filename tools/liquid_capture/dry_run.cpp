@@ -67,10 +67,8 @@ void dry_run(const RunSettings& settings, engine::vk::Context& context, liquid::
   const fs::path& out = settings.folder;
   std::printf("files: %s .. %s", (out / settings.frames.name(plan.start)).c_str(),
               settings.frames.name(plan.end).c_str());
-  if (settings.particles)
-    std::printf(", %s .. %s", settings.particles->name(plan.start).c_str(), settings.particles->name(plan.end).c_str());
-  for (const std::optional<NamePattern>* p : {&settings.volumes, &settings.surfaces, &settings.meshes})
-    if (*p) std::printf(", %s .. %s", (*p)->name(plan.start).c_str(), (*p)->name(plan.end).c_str());
+  for (const auto& [pattern, flag] : settings.optional_outputs())
+    std::printf(", %s .. %s", pattern->name(plan.start).c_str(), pattern->name(plan.end).c_str());
   std::printf(", stats.csv, summary.json, capture.json");
   if (settings.checkpoint_every > 0) std::printf(", checkpoint.bin every %d frames", settings.checkpoint_every);
   if (!settings.video.empty()) std::printf("; video %s", settings.video.c_str());

@@ -1,10 +1,10 @@
 // liquid_capture: the offline frame-capture tool. Runs a scene and writes numbered PNG frames, a
 // statistics table (stats.csv: the solver's diagnostics and each pass's GPU time per frame), a
-// summary, and on request particles (PLY), grids (OpenVDB), the surface (a level-set VDB and a
-// mesh), a video and checkpoints to resume from. It is a host like any engine: it builds its
-// render graph through the liquid module's public API (LiquidNode, LiquidRenderer); only its dry
-// run and summary read the derived setup (simulation_of(node)). The pieces live in
-// tools/liquid_capture/.
+// summary, and on request particles (PLY), secondary particles (whitewater PLY), grids (OpenVDB),
+// the surface (a level-set VDB and a mesh), a video and checkpoints to resume from. It is a host
+// like any engine: it builds its render graph through the liquid module's public API (LiquidNode,
+// LiquidRenderer); only its dry run and summary read the derived setup, and its frame writer the
+// secondary particles (simulation_of(node)). The pieces live in tools/liquid_capture/.
 #include "engine/io/atomic_file.h"
 #include "engine/vk/context.h"
 #include "liquid/node.h"
@@ -66,9 +66,12 @@ struct FrameStats {
   liquid::Diagnostics diagnostics;
   double wall_ms = 0.0;
   std::map<std::string, double> pass_ms;  // summed over the frame's passes of that name
-  double surface_ms = 0.0;                // the surface export's wall time (a column with --export-surface)
+  // The exports' measures: surface_ms a column with --export-surface, the whitewater's two columns
+  // when the run reads the secondary particles back (RunSettings::reads_whitewater()).
+  capture::FrameExports exports;
 };
 constexpr const char* k_surface_column = ",surface_ms";
+constexpr const char* k_whitewater_columns = ",whitewater_particles,whitewater_ms";
 
 // Each dynamic obstacle's pose, velocity, force and torque in stats.csv (2D: per metre of depth):
 // the columns' names after "body<obstacle index>.", and their values.
@@ -83,7 +86,7 @@ std::vector<float> body_columns(const liquid::BodyState& b) {
 }
 
 // stats.csv's header names the passes of the first written frame (every frame declares the same).
-std::string stats_header(const FrameStats& first, bool surface) {
+std::string stats_header(const FrameStats& first, bool surface, bool whitewater) {
   std::string header =
       "frame,step,time_s,active_particles,outside_domain,inside_obstacles,non_finite,max_density_ratio,mass_kg,"
       "kinetic_energy_J,potential_energy_J,mechanical_energy_J,time_step_s,max_speed_m_s,wall_ms";
@@ -91,6 +94,7 @@ std::string stats_header(const FrameStats& first, bool surface) {
     for (const char* column : k_body_columns) header += ",body" + std::to_string(b.obstacle) + "." + column;
   for (const auto& [name, ms] : first.pass_ms) header += ",gpu_ms." + name;
   if (surface) header += k_surface_column;
+  if (whitewater) header += k_whitewater_columns;
   return header + "\n";
 }
 
@@ -112,7 +116,9 @@ std::string stats_row(const FrameStats& row, const std::string& header) {
       const auto it = row.pass_ms.find(column.substr(7));
       out << ',' << (it == row.pass_ms.end() ? 0.0 : it->second);
     }
-  if (header.find(k_surface_column) != std::string::npos) out << ',' << row.surface_ms;
+  if (header.find(k_surface_column) != std::string::npos) out << ',' << row.exports.surface_ms;
+  if (header.find(k_whitewater_columns) != std::string::npos)
+    out << ',' << row.exports.whitewater_particles << ',' << row.exports.whitewater_ms;
   out << "\n";
   return out.str();
 }
@@ -204,6 +210,9 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
   if (settings.surfaces && scene.dimension != 3)
     throw capture::UsageError("--export-surface: " + settings.scene_label() + " is a " +
                               std::to_string(scene.dimension) + "D scene; the surface export needs a 3D one");
+  if (settings.whitewater && !scene.whitewater)
+    throw capture::UsageError("--export-whitewater: " + settings.scene_label() + " has no \"whitewater\", so no "
+                              "spray, foam or bubbles to export (add \"whitewater\": {}, docs/whitewater.md)");
   check_video(settings, options.overwrite || resuming);
   // A video already there (a replaced run's, or the one a resumed run made) is replaced only by a
   // run that ends well: a failed one removes its own instead.
@@ -272,7 +281,9 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
 
   std::string header = stats.text().substr(0, stats.text().find('\n') + 1);
   int last_done = first_frame - 1;
-  double surface_ms_total = 0.0;  // over the frames this process wrote
+  // The exports' times summed over the frames this process wrote, for the run's last line.
+  double surface_ms_total = 0.0, whitewater_ms_total = 0.0;
+  const bool reads_whitewater = settings.reads_whitewater(scene.whitewater.has_value());
   // Ends the run where it stands: stats.csv and summary.json for the frames written, the video closed.
   const auto conclude = [&](const std::string& status) {
     stats.finish();
@@ -316,9 +327,10 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
       node.adapt_time_step(row.diagnostics);
       if (written) {
         for (const auto& t : result.time.passes) row.pass_ms[t.name] += t.milliseconds;
-        row.surface_ms = writer.write(frame, node, particles, *result.image);
-        surface_ms_total += row.surface_ms;
-        if (header.empty()) header = stats_header(row, settings.surfaces.has_value());
+        row.exports = writer.write(frame, node, particles, *result.image);
+        surface_ms_total += row.exports.surface_ms;
+        whitewater_ms_total += row.exports.whitewater_ms;
+        if (header.empty()) header = stats_header(row, settings.surfaces.has_value(), reads_whitewater);
         stats.append(header, stats_row(row, header));
         folder.wrote_output();
       }
@@ -366,6 +378,8 @@ int run(const capture::CaptureOptions& options, const CLI::App& app) {
   const int written_here = plan.end - std::max(first_frame, plan.start) + 1;
   if (settings.surfaces && written_here > 0)
     std::printf("; the surface export took %.1f ms a frame", surface_ms_total / written_here);
+  if (reads_whitewater && written_here > 0)
+    std::printf("; the whitewater export took %.1f ms a frame", whitewater_ms_total / written_here);
   std::printf("\n");
   return 0;
 }

@@ -57,7 +57,14 @@ void add_options(CLI::App& app, CaptureOptions& o) {
   app.add_option("--particles-name", o.particles_name, "PLY name pattern (default particles_#####.ply); "
                                                        "implies --export-particles")
       ->check(non_empty("a name pattern"));
-  app.add_flag("--export-volume", o.export_volume, "write each frame's density and velocity grids as OpenVDB");
+  app.add_flag("--export-whitewater", o.export_whitewater,
+               "write each frame's spray, foam and bubble particles as binary PLY (x y z vx vy vz type age "
+               "id_hi id_lo); the scene needs \"whitewater\"");
+  app.add_option("--whitewater-name", o.whitewater_name, "whitewater PLY name pattern (default "
+                                                         "whitewater_#####.ply); implies --export-whitewater")
+      ->check(non_empty("a name pattern"));
+  app.add_flag("--export-volume", o.export_volume,
+               "write each frame's density and velocity grids, and with whitewater the foam's, as OpenVDB");
   app.add_option("--volume-name", o.volume_name, "VDB name pattern (default volume_#####.vdb); implies --export-volume")
       ->check(non_empty("a name pattern"));
   app.add_flag("--export-surface", o.export_surface,
@@ -125,10 +132,7 @@ void check_name_lengths(const RunSettings& r) {
                                   std::to_string(k_max_file_name_bytes) + " a file name may have");
   };
   check(r.frames, "-o");
-  if (r.particles) check(*r.particles, "--particles-name");
-  if (r.volumes) check(*r.volumes, "--volume-name");
-  if (r.surfaces) check(*r.surfaces, "--surface-name");
-  if (r.meshes) check(*r.meshes, "--mesh-name");
+  for (const auto& [pattern, flag] : r.optional_outputs()) check(*pattern, flag);
   if (!r.video.empty() && fs::path(r.video).filename().string().size() + k_temporary_suffix_bytes > k_max_file_name_bytes)
     throw std::invalid_argument("--video " + liquid::printable(r.video) + ": the file name is longer than " +
                                 std::to_string(k_max_file_name_bytes - k_temporary_suffix_bytes) + " bytes");
@@ -211,9 +215,12 @@ RunSettings settle(const CaptureOptions& o, int max_steps_per_frame) {
     if (o.export_volume || !o.volume_name.empty())
       r.volumes = NamePattern::parse(o.volume_name.empty() ? "volume_#####.vdb" : o.volume_name, "--volume-name", ".vdb");
     settle_surface(o, r);
+    if (o.export_whitewater || !o.whitewater_name.empty())
+      r.whitewater = NamePattern::parse(o.whitewater_name.empty() ? "whitewater_#####.ply" : o.whitewater_name,
+                                        "--whitewater-name", ".ply");
     std::set<std::string> names{r.frames.text()};
-    for (const std::optional<NamePattern>* p : {&r.particles, &r.volumes, &r.surfaces, &r.meshes})
-      if (*p && !names.insert((*p)->text()).second) throw UsageError("two outputs have the same name pattern");
+    for (const auto& [pattern, flag] : r.optional_outputs())
+      if (!names.insert(pattern->text()).second) throw UsageError("two outputs have the same name pattern");
   } catch (const UsageError&) {
     throw;
   } catch (const std::invalid_argument& e) {
@@ -263,7 +270,7 @@ json to_json(const RunSettings& r) {
                       {"fps", r.plan.frames_per_second()}, {"fps_exact", r.plan.fps > 0.0}}},
           {"names", {{"frames", r.frames.text()}, {"particles", optional_name(r.particles)},
                      {"volumes", optional_name(r.volumes)}, {"surfaces", optional_name(r.surfaces)},
-                     {"meshes", optional_name(r.meshes)}}},
+                     {"meshes", optional_name(r.meshes)}, {"whitewater", optional_name(r.whitewater)}}},
           {"surface", {{"voxels_per_cell", r.surface_voxels_per_cell}, {"adaptivity", r.surface_adaptivity}}},
           {"view", {{"width", r.width}, {"height", r.height}, {"fxaa", r.fxaa}, {"draw_particles", r.draw_particles},
                     {"camera_position", r.camera_position}, {"camera_target", r.camera_target},
@@ -315,6 +322,8 @@ RunSettings run_settings_from_json(const json& j, const fs::path& folder, const 
                                              liquid::k_max_surface_voxels_per_cell, true));
       r.surface_adaptivity = float(number(surface.at("adaptivity"), "surface.adaptivity", 0.0, 1.0, false));
     }
+    if (n.contains("whitewater") && !n.at("whitewater").is_null())  // a record from before the whitewater export has none
+      r.whitewater = NamePattern::parse(n.at("whitewater"), "whitewater", ".ply");
     const json& v = j.at("view");
     r.width = uint32_t(number(v.at("width"), "view.width", 1, k_max_pixels, true));
     r.height = uint32_t(number(v.at("height"), "view.height", 1, k_max_pixels, true));

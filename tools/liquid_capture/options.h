@@ -13,6 +13,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace capture {
@@ -43,8 +44,8 @@ struct CaptureOptions {
   std::vector<float> camera_position, camera_target;
   float fov_y_degrees = 0.0f;     // 0: the scene's
   bool fxaa = true, draw_particles = false;
-  bool export_particles = false, export_volume = false, export_surface = false;
-  std::string particles_name, volume_name, surface_name, mesh_name;
+  bool export_particles = false, export_volume = false, export_surface = false, export_whitewater = false;
+  std::string particles_name, volume_name, surface_name, mesh_name, whitewater_name;
   std::optional<double> surface_voxel, surface_adaptivity;  // in cells; 0 to 1 (not given: the defaults)
   std::string surface_format;     // "ply" or "obj" (empty: ply)
   int checkpoint_every = 0;
@@ -70,8 +71,22 @@ struct RunSettings {
   std::optional<NamePattern> surfaces, meshes;
   int surface_voxels_per_cell = 0;
   float surface_adaptivity = 0.0f;
+  // --export-whitewater: the secondary particles (PLY); the scene must have "whitewater".
+  std::optional<NamePattern> whitewater;
+  // The outputs asked for besides the frames, each with the flag that names it, in a fixed order.
+  std::vector<std::pair<const NamePattern*, const char*>> optional_outputs() const {
+    std::vector<std::pair<const NamePattern*, const char*>> out;
+    for (const auto& [pattern, flag] : {std::pair{&particles, "--particles-name"}, {&whitewater, "--whitewater-name"},
+                                        {&volumes, "--volume-name"}, {&surfaces, "--surface-name"},
+                                        {&meshes, "--mesh-name"}})
+      if (*pattern) out.emplace_back(&**pattern, flag);
+    return out;
+  }
   // Whether a written frame's files read the grids back (rebuilt first for the frame's instant).
   bool exports_grids() const { return particles || volumes || surfaces; }
+  // Whether a written frame reads the secondary particles back: for their own files, and for the
+  // volume's foam grid when the scene has them.
+  bool reads_whitewater(bool scene_has_whitewater) const { return whitewater || (volumes && scene_has_whitewater); }
   uint32_t width = 0, height = 0;
   bool fxaa = true, draw_particles = false;
   std::vector<float> camera_position, camera_target;  // empty: the scene's camera

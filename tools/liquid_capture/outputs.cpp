@@ -36,7 +36,7 @@ std::vector<NamePattern> recorded_patterns(const fs::path& folder) {
   const json record = json::parse(file, nullptr, /*allow_exceptions=*/false);
   if (!record.is_object() || !record.contains("names") || !record["names"].is_object()) return patterns;
   for (const auto& [kind, extension] : {std::pair{"frames", ".png"}, {"particles", ".ply"}, {"volumes", ".vdb"},
-                                        {"surfaces", ".vdb"}, {"meshes", ""}}) {
+                                        {"surfaces", ".vdb"}, {"meshes", ""}, {"whitewater", ".ply"}}) {
     const json& name = record["names"].value(kind, json());
     if (!name.is_string()) continue;
     try {
@@ -68,8 +68,7 @@ std::vector<fs::path> files_named(const fs::path& folder, const std::vector<Name
 // The run's own name patterns.
 std::vector<NamePattern> own_patterns(const RunSettings& settings) {
   std::vector<NamePattern> patterns{settings.frames};
-  for (const std::optional<NamePattern>* p : {&settings.particles, &settings.volumes, &settings.surfaces, &settings.meshes})
-    if (*p) patterns.push_back(**p);
+  for (const auto& [pattern, flag] : settings.optional_outputs()) patterns.push_back(*pattern);
   return patterns;
 }
 
@@ -369,8 +368,8 @@ std::string summary_json(const std::string& stats_csv, const json& facts) {
   for (const std::string& c : columns)
     if (c.rfind("gpu_ms.", 0) == 0) passes[c.substr(7)] = median(values[c]);
   summary["gpu_ms_median_per_frame"] = passes;
-  if (values.count("surface_ms"))
-    summary["surface_export_ms"] = {{"median", median(values["surface_ms"])}, {"max", most("surface_ms")}};
+  for (const auto& [column, key] : {std::pair{"surface_ms", "surface_export_ms"}, {"whitewater_ms", "whitewater_export_ms"}})
+    if (values.count(column)) summary[key] = {{"median", median(values[column])}, {"max", most(column)}};
   summary["extremes"] = {{"max_density_ratio", most("max_density_ratio")},
                          {"max_speed_m_s", most("max_speed_m_s")},
                          {"max_kinetic_energy_J", most("kinetic_energy_J")},
@@ -381,6 +380,8 @@ std::string summary_json(const std::string& stats_csv, const json& facts) {
                          {"max_outside_domain", most("outside_domain")},
                          {"max_inside_obstacles", most("inside_obstacles")},
                          {"max_non_finite", most("non_finite")}};
+  if (values.count("whitewater_particles"))
+    summary["extremes"]["max_whitewater_particles"] = most("whitewater_particles");
   return summary.dump(2) + "\n";
 }
 

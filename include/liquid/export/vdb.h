@@ -1,8 +1,9 @@
 // OpenVDB volumes of a frame (built only where OpenVDB is installed: RASTERLIQUIDS_HAVE_OPENVDB). Two
 // grids: float "density" (rho/rho0, a fog volume) and vec3 "velocity" (m/s), active only where the
 // cell holds liquid (rho/rho0 at least k_vdb_min_density; velocity only where density is active),
-// with a world transform in metres: voxel (i, j, k) is the cell whose centre is
-// origin + (i + 0.5, j + 0.5, k + 0.5) * cell_size. 2D grids become one voxel deep (k = 0).
+// and with whitewater (VolumeFrame::foam) a third, float "foam" (foam particles per m^3), active
+// where it is above 0; all with one world transform in metres: voxel (i, j, k) is the cell whose
+// centre is origin + (i + 0.5, j + 0.5, k + 0.5) * cell_size. 2D grids become one voxel deep (k = 0).
 // Identical frames give byte-identical files: the file's UUID is made from its content.
 #pragma once
 
@@ -27,7 +28,8 @@ struct VdbFrame {
 };
 
 // Writes the file through a temporary name renamed into place; throws liquid::Error naming
-// the path when it cannot be written.
+// the path when it cannot be written, ArgumentError when volume.foam is neither empty nor one value
+// a cell.
 void write_vdb(const std::filesystem::path& path, const VolumeFrame& volume, const VdbFrame& frame);
 
 // A file read back through OpenVDB: its grids' active voxels and what places them, for checking
@@ -44,8 +46,9 @@ struct VdbContents {
   glm::dvec3 voxel_zero{0.0};   // world position of voxel (0, 0, 0), m
   std::vector<Voxel<float>> density;
   std::vector<Voxel<glm::vec3>> velocity;
+  std::vector<Voxel<float>> foam;  // empty when the file has no foam grid
 };
-// Throws liquid::Error naming the path when it cannot be read or lacks either grid.
+// Throws liquid::Error naming the path when it cannot be read or lacks the density or velocity grid.
 VdbContents read_vdb(const std::filesystem::path& path);
 
 }  // namespace liquid
