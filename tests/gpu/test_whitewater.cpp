@@ -169,6 +169,25 @@ TEST_CASE("whitewater is drawn where the front hits the box and the wall", "[gpu
   REQUIRE_NO_VALIDATION_MESSAGES_ON(context);
 }
 
+TEST_CASE("frame golden: the shipped 3D dam break hitting a box, with spray, foam and bubbles", "[gpu][whitewater][frames]") {
+  engine::vk::Context& context = test::gpu();
+  liquid::LiquidNode node(context, test::shipped_scene("dam_break_3d_whitewater"));
+  test::run_steps(node, 16 * node.substeps());  // 0.54 s: the wave over the box and up the far wall
+  const engine::vk::Rgba8Image with = own_frame(node, true), without = own_frame(node, false);
+  liquid::LiquidRenderer renderer(context, node, {.width = k_width, .height = k_height});
+  const test::BrighterPixels changed = test::brighter_pixels(
+      with, without, renderer.view_projection(liquid::default_camera(node)), {0.5f, 0.0f, 0.0f}, node.scene().domain);
+  INFO(simulation_of(node).read_whitewater().size() << " live; " << changed.pixels << " pixels brighter with whitewater, "
+                                                    << changed.in_box << " past the box's front");
+  CHECK(changed.pixels > 100);
+  CHECK(changed.in_box >= changed.pixels * 9 / 10);
+  const test::CompareResult result = test::compare_with_golden(
+      with, "frame_whitewater_dam_break_3d", {.channel_threshold = 12, .max_differing_fraction = 0.01});
+  INFO(result.message);
+  CHECK(result.passed);
+  REQUIRE_NO_VALIDATION_MESSAGES_ON(context);
+}
+
 TEST_CASE("the 2D view draws the whitewater over the liquid, where it is", "[gpu][whitewater][view2d]") {
   engine::vk::Context& context = test::gpu();
   liquid::Scene scene = test::shipped_scene("dam_break_2d");
