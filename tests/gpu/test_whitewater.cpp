@@ -250,3 +250,23 @@ TEST_CASE("a checkpoint carries the whitewater, which then continues bit for bit
   CHECK_THROWS_WITH(plain.restore_checkpoint(saved), Catch::Contains("the checkpoint has whitewater; the scene has none"));
   REQUIRE_NO_VALIDATION_MESSAGES_ON(context);
 }
+
+// The whitewater pass reads the grids through each 3D path's addressing (the atlas's by hand): the
+// same spawns, kinds and moves on each, on a device with only that path's feature.
+TEMPLATE_TEST_CASE("on each 3D path the whitewater is the same", "[gpu][whitewater][paths]", test::GeometryPath,
+                   test::VertexLayerPath, test::AtlasPath) {
+  engine::vk::Context& context = test::gpu_for(TestType::path);
+  liquid::LiquidNode node(context, dam_break(true), test::options_for(TestType::path));
+  liquid::LiquidNode reference(test::gpu(), dam_break(true));
+  test::run_steps(node, 150);
+  test::run_steps(reference, 150);
+  const auto live = simulation_of(node).read_whitewater(), expected = simulation_of(reference).read_whitewater();
+  REQUIRE(!expected.empty());
+  REQUIRE(live.size() == expected.size());
+  for (size_t i = 0; i < live.size(); ++i) {
+    REQUIRE(live[i].id == expected[i].id);
+    REQUIRE(live[i].kind == expected[i].kind);
+    REQUIRE(glm::distance(live[i].position, expected[i].position) < 1e-4f);
+  }
+  REQUIRE_NO_VALIDATION_MESSAGES_ON(context);
+}
