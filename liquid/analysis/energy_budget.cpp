@@ -52,13 +52,56 @@ struct GridSampler {
     }
     if (total > 0.0f) u_new /= total, u_old /= total;
   }
+
+  // grid_sample.glsl's fit_grid_affine(): the value at x of the weighted least-squares fit of a
+  // linear field to the cells within the kernel's radius that hold liquid, with the splat's weights
+  // (1 - d^2/r^2)^3, d in cells. False where the fit's normal matrix is singular (the shader then
+  // reads bilinearly).
+  bool fit(glm::vec3 x, glm::vec3& u_new, glm::vec3& u_old) const {
+    const double r = setup.kernel_radius_cells;
+    glm::dvec3 g = glm::dvec3(x) / double(setup.cell_size) - 0.5;
+    const bool flat = setup.dimension == 2;
+    if (flat) g.z = 0.0;
+    const glm::ivec3 n = setup.grid_cells;
+    const glm::ivec3 lo = glm::max(glm::ivec3(glm::ceil(g - r)), glm::ivec3(0));
+    glm::ivec3 hi = glm::min(glm::ivec3(glm::floor(g + r)), n - 1);
+    glm::ivec3 first = lo;
+    if (flat) first.z = hi.z = 0;
+    glm::dmat4 normal(0.0);
+    glm::dmat3x4 fit_new(0.0), fit_old(0.0);  // per component, sum w u b
+    for (int z = first.z; z <= hi.z; ++z)
+      for (int y = first.y; y <= hi.y; ++y)
+        for (int xi = first.x; xi <= hi.x; ++xi) {
+          const glm::dvec3 d = glm::dvec3(xi, y, z) - g;
+          const double t = 1.0 - glm::dot(d, d) / (r * r);
+          if (t <= 0.0) continue;
+          const size_t cell = index({xi, y, z});
+          if (velocity[cell].a < 0.5f) continue;
+          const double w = t * t * t;
+          const glm::dvec4 b(1.0, d);
+          normal += w * glm::outerProduct(b, b);
+          const glm::dvec3 s = glm::dvec3(splat[cell]) / double(std::max(splat[cell].a, k_fluid_epsilon));
+          for (int j = 0; j < 3; ++j) {
+            fit_new[j] += w * double(velocity[cell][j]) * b;
+            fit_old[j] += w * s[j] * b;
+          }
+        }
+    if (flat) normal[3][3] = 1.0;  // no z: its coefficient is zero
+    if (std::abs(glm::determinant(normal)) < 1e-6) return false;
+    const glm::dmat4 solve = glm::inverse(normal);
+    for (int j = 0; j < 3; ++j) {
+      u_new[j] = float((solve * fit_new[j])[0]);
+      u_old[j] = float((solve * fit_old[j])[0]);
+    }
+    return true;
+  }
 };
 
 }  // namespace
 
 EnergyBudget step_energy_budget(const SimulationSetup& setup, double pic_step, const ParticleSnapshot& before,
                                 const ParticleSnapshot& after, const std::vector<glm::vec4>& splat,
-                                const std::vector<glm::vec4>& grid_velocity) {
+                                const std::vector<glm::vec4>& grid_velocity, Transfer transfer) {
   const size_t cells = size_t(setup.grid_cells.x) * setup.grid_cells.y * setup.grid_cells.z;
   if (before.positions.size() != after.positions.size() || splat.size() != cells || grid_velocity.size() != cells)
     throw std::invalid_argument("step_energy_budget: the particles or the grids do not match the setup");
@@ -70,7 +113,7 @@ EnergyBudget step_energy_budget(const SimulationSetup& setup, double pic_step, c
     const glm::dvec3 x0(before.positions[i]), x1(after.positions[i]);
     const glm::dvec3 v0(before.velocities[i]), v1(after.velocities[i]);
     glm::vec3 u_new, u_old;
-    grid.sample(glm::vec3(x0), u_new, u_old);
+    if (transfer != Transfer::Affine || !grid.fit(glm::vec3(x0), u_new, u_old)) grid.sample(glm::vec3(x0), u_new, u_old);
     const glm::dvec3 increment = glm::dvec3(u_new) - glm::dvec3(u_old);
     const glm::dvec3 pull = pic_step * (glm::dvec3(u_old) - v0);
     const glm::dvec3 blended = v0 + increment + pull;
