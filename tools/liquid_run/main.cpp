@@ -5,6 +5,7 @@
 #include "engine/vk/context.h"
 #include "liquid/node.h"
 #include "liquid/scene.h"
+#include "liquid/scene/override.h"
 
 #include "liquid/solver/simulation.h"
 #include "tools/common/cli.h"
@@ -66,14 +67,38 @@ void check_output_file(const std::filesystem::path& path) {
   std::filesystem::remove(probe, ignored);
 }
 
-int run(const std::string& scene_path, int steps, double seconds, int report_every, bool validation,
-        const std::string& dump_path, const std::string& grid_path, bool whole_grid) {
-  const liquid::Scene scene = liquid::load_scene(scene_path);
+// The command line's values.
+struct RunOptions {
+  std::string scene;
+  std::vector<std::string> sets;  // --set key=value, applied to the file's document
+  int steps = 200;
+  double seconds = 0.0;  // > 0: run to this simulated time instead
+  int report_every = 50;
+  bool validation = false;
+  std::string dump_path;
+  std::string grid_path;
+  bool whole_grid = false;
+};
+
+// The scene file, with the --set overrides checked exactly as if the file held them.
+liquid::Scene scene_of(const RunOptions& o) {
+  if (o.sets.empty()) return liquid::load_scene(o.scene);
+  std::vector<liquid::SceneOverride> overrides;
+  for (const std::string& text : o.sets) overrides.push_back(liquid::parse_scene_override(text));
+  return liquid::parse_scene(liquid::scene_document(o.scene, overrides), o.scene);
+}
+
+int run(RunOptions o) {
+  const liquid::Scene scene = scene_of(o);
+  const std::string& dump_path = o.dump_path;
+  const int report_every = o.report_every;
+  const double seconds = o.seconds;
+  int steps = o.steps;
   if (!dump_path.empty()) check_output_file(dump_path);
-  engine::vk::Context context(engine::vk::ContextOptions{.validation = validation});
+  engine::vk::Context context(engine::vk::ContextOptions{.validation = o.validation});
   liquid::LiquidOptions node_options;
-  node_options.grid_path = tools::grid_path_from_flag(grid_path);
-  node_options.active_region = !whole_grid;
+  node_options.grid_path = tools::grid_path_from_flag(o.grid_path);
+  node_options.active_region = !o.whole_grid;
   node_options.log = tools::stdout_log();
   liquid::LiquidNode node(context, scene, node_options);
   const auto& s = simulation_of(node).setup();
@@ -148,24 +173,19 @@ int run(const std::string& scene_path, int steps, double seconds, int report_eve
 
 int main(int argc, char** argv) {
   CLI::App app{"Runs a liquid scene headless and prints diagnostics and per-pass GPU times"};
-  std::string scene;
-  int steps = 200, report_every = 50;
-  double seconds = 0.0;
-  bool validation = false, whole_grid = false;
-  std::string dump_path, grid_path;
-  tools::add_grid_path_option(app, grid_path);
-  app.add_option("--dump-particles", dump_path, "write the final particles as CSV");
-  app.add_option("scene", scene, "scene JSON file")->required();
-  app.add_option("-n,--steps", steps, "simulation steps")->check(tools::integer_range(1, 10000000));
-  app.add_option("-s,--seconds", seconds, "run to this simulated time instead of a step count (s)")
+  RunOptions o;
+  tools::add_grid_path_option(app, o.grid_path);
+  app.add_option("--dump-particles", o.dump_path, "write the final particles as CSV");
+  app.add_option("scene", o.scene, "scene JSON file")->required();
+  app.add_option("--set", o.sets, "override a scene field: key=value, dotted paths (fluid_blocks.0.max=[0.1,0.2])");
+  app.add_option("-n,--steps", o.steps, "simulation steps")->check(tools::integer_range(1, 10000000));
+  app.add_option("-s,--seconds", o.seconds, "run to this simulated time instead of a step count (s)")
       ->check(tools::finite_range(1e-6, 1e6))
       ->excludes("--steps");
-  app.add_option("-r,--report-every", report_every, "steps between diagnostics lines (the state is checked every batch)")
+  app.add_option("-r,--report-every", o.report_every, "steps between diagnostics lines (the state is checked every batch)")
       ->check(tools::integer_range(1, 1000000));
-  app.add_flag("--validation", validation, "enable the Vulkan validation layer");
-  app.add_flag("--whole-grid", whole_grid,
+  app.add_flag("--validation", o.validation, "enable the Vulkan validation layer");
+  app.add_flag("--whole-grid", o.whole_grid,
                "3D: every step's grid passes compute every cell, not only the active region (same results)");
-  return tools::run_main(app, argc, argv, "liquid_run", [&] {
-    return run(scene, steps, seconds, report_every, validation, dump_path, grid_path, whole_grid);
-  });
+  return tools::run_main(app, argc, argv, "liquid_run", [&] { return run(o); });
 }
