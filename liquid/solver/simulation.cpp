@@ -212,7 +212,7 @@ LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
           step.bodies, step.mesh_field, whitewater.latest.positions, whitewater.latest.velocities};
 }
 
-std::vector<WhitewaterParticle> Simulation::read_whitewater() const {
+std::vector<WhitewaterParticle> Simulation::read_whitewater() {
   return whitewater_ ? whitewater_->read(time_) : std::vector<WhitewaterParticle>{};
 }
 

@@ -76,7 +76,7 @@ class Simulation {
   std::vector<glm::vec4> read_splat();
   std::vector<glm::vec4> read_grid_velocity();
   // The live secondary particles (Scene::whitewater; none without it), blocking.
-  std::vector<WhitewaterParticle> read_whitewater() const;
+  std::vector<WhitewaterParticle> read_whitewater();
   // Slots for secondary particles (0 without whitewater).
   int whitewater_capacity() const;
   Diagnostics diagnose();

@@ -101,7 +101,7 @@ WhitewaterPass::WhitewaterPass(engine::vk::Context& context, const SolverVariant
   }
 }
 
-WhitewaterPass::Frame WhitewaterPass::import(engine::graph::RenderGraph& graph) const {
+WhitewaterPass::Frame WhitewaterPass::import(engine::graph::RenderGraph& graph) {
   const auto pair = [&](int i) {
     return WhitewaterImages{graph.import_image(positions_[i].name(), positions_[i]),
                             graph.import_image(velocities_[i].name(), velocities_[i])};
@@ -144,7 +144,7 @@ void WhitewaterPass::add_to(engine::graph::RenderGraph& graph, const engine::vk:
   current_ = 1 - current_;
 }
 
-std::vector<glm::vec4> WhitewaterPass::save() const {
+std::vector<glm::vec4> WhitewaterPass::save() {
   const size_t texels = size_t(size_.x) * size_.y;
   std::vector<glm::vec4> out = texels_as<glm::vec4>(engine::graph::download_image(context_, positions_[current_]), texels);
   const auto velocities = texels_as<glm::vec4>(engine::graph::download_image(context_, velocities_[current_]), texels);
@@ -174,7 +174,7 @@ void WhitewaterPass::restore(const std::vector<glm::vec4>& texels) {
   engine::graph::upload_image(context_, velocities_[current_], half(slots));
 }
 
-std::vector<WhitewaterParticle> WhitewaterPass::read(double time) const {
+std::vector<WhitewaterParticle> WhitewaterPass::read(double time) {
   const size_t texels = size_t(size_.x) * size_.y;
   const auto positions = texels_as<glm::vec4>(engine::graph::download_image(context_, positions_[current_]), texels);
   const auto velocities = texels_as<glm::vec4>(engine::graph::download_image(context_, velocities_[current_]), texels);

@@ -32,7 +32,7 @@ class WhitewaterPass {
     WhitewaterImages latest;
     WhitewaterImages targets;
   };
-  Frame import(engine::graph::RenderGraph& graph) const;
+  Frame import(engine::graph::RenderGraph& graph);
 
   // One step from `frame.latest` into `frame.targets`, then swaps the two: reads the liquid's
   // particles at the step's end and its grids (`step`); `time` is the step's end (s), `step_index`
@@ -41,9 +41,9 @@ class WhitewaterPass {
               Frame& frame, double time, float dt, int64_t step_index);
 
   // The live secondary particles (blocking), in slot order, their ages at `time` (s).
-  std::vector<WhitewaterParticle> read(double time) const;
+  std::vector<WhitewaterParticle> read(double time);
   // Every slot's texels, positions then velocities (blocking): what a checkpoint keeps.
-  std::vector<glm::vec4> save() const;
+  std::vector<glm::vec4> save();
   // Puts back what save() gave; throws ArgumentError for texels no run makes (a wrong count, a kind
   // outside LIQUID_WHITEWATER_*, a live slot's non-finite value).
   void restore(const std::vector<glm::vec4>& texels);
@@ -58,8 +58,8 @@ class WhitewaterPass {
   engine::vk::Sampler linear_;
   gpu::WhitewaterPush push_{};
   glm::ivec2 size_{0};
-  mutable std::array<engine::vk::Image, 2> positions_;   // xyz m, w the kind (LIQUID_WHITEWATER_*)
-  mutable std::array<engine::vk::Image, 2> velocities_;  // xyz m/s, w the birth time (s)
+  std::array<engine::vk::Image, 2> positions_;   // xyz m, w the kind (LIQUID_WHITEWATER_*)
+  std::array<engine::vk::Image, 2> velocities_;  // xyz m/s, w the birth time (s)
   int current_ = 0;
 };
 

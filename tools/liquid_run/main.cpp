@@ -39,7 +39,7 @@ double median(std::vector<double> values) {
 }
 
 // The secondary particles by kind, when the scene has them.
-void print_whitewater(const liquid::Simulation& simulation) {
+void print_whitewater(liquid::Simulation& simulation) {
   if (simulation.whitewater_capacity() == 0) return;
   std::array<int, 4> count{};
   for (const liquid::WhitewaterParticle& p : simulation.read_whitewater()) ++count[size_t(p.kind)];
