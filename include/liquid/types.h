@@ -103,7 +103,8 @@ struct LiquidImages {
   engine::graph::ImageHandle whitewater_velocities;
 };
 
-// What a secondary particle is, by the liquid's density where it is (Scene::whitewater).
+// What a secondary particle is, by the liquid's density where it is (Scene::whitewater); the
+// values are the shaders' LIQUID_WHITEWATER_* codes (liquid/solver/whitewater.cpp checks them).
 enum class WhitewaterKind : uint8_t { Spray = 1, Foam = 2, Bubble = 3 };
 
 // A live secondary particle read back from the GPU. `id` is unique over the run (its slot and its

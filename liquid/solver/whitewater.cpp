@@ -20,6 +20,10 @@ namespace liquid {
 
 namespace {
 
+// The public kinds are the shader's codes (shared.h), which the public header cannot include.
+static_assert(int(WhitewaterKind::Spray) == LIQUID_WHITEWATER_SPRAY && int(WhitewaterKind::Foam) == LIQUID_WHITEWATER_FOAM &&
+              int(WhitewaterKind::Bubble) == LIQUID_WHITEWATER_BUBBLE);
+
 std::vector<engine::vk::DescriptorBinding> whitewater_bindings(const SolverVariant& variant) {
   constexpr VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
   std::vector<engine::vk::DescriptorBinding> bindings{

@@ -21,6 +21,20 @@
 namespace {
 
 liquid::Scene dam_break(bool whitewater) { return test::whitewater_dam_break(whitewater); }
+
+// Two runs' live secondary particles are the same ones, slot by slot: some of them, their ids and
+// kinds equal, their positions and velocities within `tolerance` (m, m/s; 0: bit for bit).
+void require_same_whitewater(const std::vector<liquid::WhitewaterParticle>& live,
+                             const std::vector<liquid::WhitewaterParticle>& expected, float tolerance) {
+  REQUIRE(!expected.empty());
+  REQUIRE(live.size() == expected.size());
+  for (size_t i = 0; i < live.size(); ++i) {
+    REQUIRE(live[i].id == expected[i].id);
+    REQUIRE(live[i].kind == expected[i].kind);
+    REQUIRE(glm::distance(live[i].position, expected[i].position) <= tolerance);
+    REQUIRE(glm::distance(live[i].velocity, expected[i].velocity) <= tolerance);
+  }
+}
 constexpr int k_impact_steps = test::k_whitewater_impact_steps;
 
 // rho / rho0 at p, trilinear between cell centres as the shader samples it (clamped to the grid).
@@ -118,13 +132,7 @@ TEST_CASE("whitewater: still water makes none, and a run makes the same particle
   liquid::LiquidNode a(context, dam_break(true)), b(context, dam_break(true));
   test::run_steps(a, 150);
   test::run_steps(b, 150);
-  const auto wa = simulation_of(a).read_whitewater(), wb = simulation_of(b).read_whitewater();
-  REQUIRE(wa.size() == wb.size());
-  REQUIRE(!wa.empty());
-  for (size_t i = 0; i < wa.size(); ++i) {
-    REQUIRE(wa[i].id == wb[i].id);
-    REQUIRE(wa[i].position == wb[i].position);
-  }
+  require_same_whitewater(simulation_of(a).read_whitewater(), simulation_of(b).read_whitewater(), 0.0f);
   REQUIRE_NO_VALIDATION_MESSAGES_ON(context);
 }
 
@@ -232,13 +240,7 @@ TEST_CASE("a checkpoint carries the whitewater, which then continues bit for bit
   liquid::LiquidNode second(context, dam_break(true));
   second.restore_checkpoint(saved);
   test::run_steps(second, 45);
-  const auto resumed = simulation_of(second).read_whitewater();
-  REQUIRE(resumed.size() == expected.size());
-  for (size_t i = 0; i < resumed.size(); ++i) {
-    REQUIRE(resumed[i].id == expected[i].id);
-    REQUIRE(resumed[i].position == expected[i].position);
-    REQUIRE(resumed[i].velocity == expected[i].velocity);
-  }
+  require_same_whitewater(simulation_of(second).read_whitewater(), expected, 0.0f);
   // Without the whitewater, or with a slot of no kind, the checkpoint is refused naming why.
   liquid::LiquidNode::Checkpoint none = saved;
   none.whitewater.clear();
@@ -260,13 +262,6 @@ TEMPLATE_TEST_CASE("on each 3D path the whitewater is the same", "[gpu][whitewat
   liquid::LiquidNode reference(test::gpu(), dam_break(true));
   test::run_steps(node, 150);
   test::run_steps(reference, 150);
-  const auto live = simulation_of(node).read_whitewater(), expected = simulation_of(reference).read_whitewater();
-  REQUIRE(!expected.empty());
-  REQUIRE(live.size() == expected.size());
-  for (size_t i = 0; i < live.size(); ++i) {
-    REQUIRE(live[i].id == expected[i].id);
-    REQUIRE(live[i].kind == expected[i].kind);
-    REQUIRE(glm::distance(live[i].position, expected[i].position) < 1e-4f);
-  }
+  require_same_whitewater(simulation_of(node).read_whitewater(), simulation_of(reference).read_whitewater(), 1e-4f);
   REQUIRE_NO_VALIDATION_MESSAGES_ON(context);
 }

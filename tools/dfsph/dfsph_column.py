@@ -75,9 +75,9 @@ import tempfile
 import time
 
 import numpy as np
-import pysplishsplash as sph
 
-G = 9.81
+from dfsph_scene import BUNDLED_CONFIG, G, Run, configuration_2d, tank_wall
+
 A = 0.1           # column width [m]
 H = 0.2           # column height [m]
 TANK = (0.6, 0.3)  # tank width, height [m]; spans [0, 0.6] x [0, 0.3]
@@ -92,20 +92,6 @@ MARTIN_MOYCE = [
 ]
 
 # Solver, time-step and material settings of the bundled DamBreakModel_2D.json.
-BUNDLED_CONFIG = {
-    "cflMethod": 1,
-    "cflFactor": 1,
-    "cflMaxTimeStepSize": 0.005,
-    "boundaryHandlingMethod": 2,
-    "DFSPH": {
-        "minIterations": 2,
-        "maxIterations": 100,
-        "maxError": 0.1,
-        "maxIterationsV": 100,
-        "maxErrorV": 0.1,
-        "enableDivergenceSolver": True,
-    },
-}
 BUNDLED_MATERIAL = {
     "id": "Fluid",
     "density0": 1000,
@@ -115,15 +101,6 @@ BUNDLED_MATERIAL = {
     "Bender et al. 2017": {"vorticity": 0.1, "viscosityOmega": 0.05,
                            "inertiaInverse": 0.5},
 }
-
-
-def data_dir():
-    """The package installs its data next to the interpreter: <venv>/bin/data."""
-    for path in (os.path.join(os.path.dirname(sys.executable), "data"),
-                 os.path.join(sys.prefix, "bin", "data")):
-        if os.path.isfile(os.path.join(path, "models", "UnitBox.obj")):
-            return path
-    sys.exit("cannot find the pysplishsplash data folder (models/UnitBox.obj)")
 
 
 def max_time_step(radius, viscosity, inviscid, override):
@@ -139,54 +116,18 @@ def max_time_step(radius, viscosity, inviscid, override):
 
 
 def build_scene(out_dir, radius, viscosity, inviscid, seconds, max_dt):
-    support = 4.0 * radius
-    # Volume map: one cell per kernel support radius in x and y (the map's
-    # domain is the tank enlarged by 4 support radii on every side). Four
-    # cells in z put map nodes exactly on the 2D plane z = 0, with all nodes
-    # of the cells touching it inside the tank's z extent.
-    res_x = int(math.ceil((TANK[0] + 8.0 * support) / support))
-    res_y = int(math.ceil((TANK[1] + 8.0 * support) / support))
-    res_z = 4
-
     material = json.loads(json.dumps(BUNDLED_MATERIAL))
     if inviscid:
         material["viscosityMethod"] = 0
         material["vorticityMethod"] = 0
     elif viscosity is not None:
         material["Standard viscosity"]["viscosity"] = viscosity
-
-    config = dict(BUNDLED_CONFIG)
-    config.update({
-        "pause": False,
-        "sim2D": True,
-        "particleRadius": radius,
-        "simulationMethod": 4,
-        "gravitation": [0, -G, 0],
-        "cflMaxTimeStepSize": max_dt,
-        "cflMinTimeStepSize": min(1e-4, 0.1 * max_dt),
-        "stopAt": seconds,
-        "enablePartioExport": False,
-        "enableVTKExport": False,
-        "enableRigidBodyExport": False,
-        "enableRigidBodyVTKExport": False,
-        "enableStateExport": False,
-    })
+    wall, map_res = tank_wall((TANK[0] / 2, TANK[1] / 2), TANK, radius)
 
     scene = {
-        "Configuration": config,
+        "Configuration": configuration_2d(radius, max_dt, seconds),
         "Materials": [material],
-        "RigidBodies": [{
-            "geometryFile": os.path.join(data_dir(), "models", "UnitBox.obj"),
-            "translation": [TANK[0] / 2, TANK[1] / 2, 0],
-            "rotationAxis": [1, 0, 0],
-            "rotationAngle": 0,
-            "scale": [TANK[0], TANK[1], 1],
-            "isDynamic": False,
-            "isWall": True,
-            "mapInvert": True,
-            "mapThickness": 0.0,
-            "mapResolution": [res_x, res_y, res_z],
-        }],
+        "RigidBodies": [wall],
         # denseMode 0: centres at start + 2r*(1 + j), j < round(size/2r) - 1.
         "FluidBlocks": [{
             "denseMode": 0,
@@ -201,7 +142,7 @@ def build_scene(out_dir, radius, viscosity, inviscid, seconds, max_dt):
     path = os.path.join(out_dir, "MartinMoyceColumn_2D.json")
     with open(path, "w") as f:
         json.dump(scene, f, indent=2)
-    return path, (res_x, res_y, res_z)
+    return path, map_res
 
 
 def main():
@@ -233,29 +174,15 @@ def main():
         scene_file, map_res = build_scene(work_dir, r, args.viscosity,
                                           args.inviscid, args.seconds, max_dt)
         wall_init0 = time.perf_counter()
-        base = sph.Exec.SimulatorBase()
-        base.init(sceneFile=scene_file, useCache=False, outputDir=work_dir,
-                  initialPause=False, useGui=False, stopAt=args.seconds)
-        base.initSimulation()
-
-        sim = sph.Simulation.getCurrent()
-        if sim.numberOfFluidModels() != 1:
-            sys.exit("expected one fluid model, got %d" % sim.numberOfFluidModels())
-        fluid = sim.getFluidModel(0)
-        tm = sph.TimeManager.getCurrent()
-        n = fluid.numActiveParticles()
-
-        def positions():
-            # Zero-copy view of the particle positions (N x 3, float32).
-            buf = np.asarray(fluid.getFieldBuffer("position"))
-            return buf.reshape(-1, 3)[:fluid.numActiveParticles()]
-
+        run = Run(scene_file, work_dir, args.seconds)
+        base, sim, tm, positions = run.base, run.sim, run.time, run.positions
+        n = run.fluid.numActiveParticles()
         p0 = positions()
         print("particles=%d radius=%g viscosity=%s max_dt=%.3g map_resolution=%s "
               "x=[%.5f, %.5f] y=[%.5f, %.5f] method=%d (4 = DFSPH)"
               % (n, sim.getParticleRadius(), visc_label, max_dt, list(map_res),
                  p0[:, 0].min(), p0[:, 0].max(), p0[:, 1].min(), p0[:, 1].max(),
-                 sim.getValueInt(sph.Simulation.SIMULATION_METHOD)), flush=True)
+                 run.method()), flush=True)
 
         samples = [(tm.getTime(), float(p0[:, 0].max()))]
         wall_marks = []

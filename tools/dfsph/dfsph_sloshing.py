@@ -109,9 +109,9 @@ import tempfile
 import time
 
 import numpy as np
-import pysplishsplash as sph
 
-G = 9.81
+from dfsph_scene import BUNDLED_CONFIG, G, Run, configuration_2d, tank_wall
+
 LENGTH = 0.5      # L [m]
 DEPTH = 0.1       # h, still depth [m]
 AMPLITUDE = 0.01  # A [m], the project's (--amplitude changes it)
@@ -122,23 +122,6 @@ REST_POOL_SPACING = 0.004273504273504274
 REST_POOL_CELL = 0.5 / 64
 OFFSET = 1.2      # wall distance from the lattice's edge, in particle radii
 FLOOR = 0.1       # measure_oscillation()'s default floor
-
-# Solver, time-step and material settings of the bundled DamBreakModel_2D.json.
-BUNDLED_CONFIG = {
-    "cflMethod": 1,
-    "cflFactor": 1,
-    "cflMaxTimeStepSize": 0.005,
-    "boundaryHandlingMethod": 2,
-    "DFSPH": {
-        "minIterations": 2,
-        "maxIterations": 100,
-        "maxError": 0.1,
-        "maxIterationsV": 100,
-        "maxErrorV": 0.1,
-        "enableDivergenceSolver": True,
-    },
-}
-
 
 def sloshing_period(length, depth, gravity):
     """oscillation.cpp's sloshing_period(): linear theory, omega^2 = g k tanh(k h)."""
@@ -195,15 +178,6 @@ def measure(times, values, rest, floor=FLOOR):
     return period, zeta, half_cycles, peaks
 
 
-def data_dir():
-    """The package installs its data next to the interpreter: <venv>/bin/data."""
-    for path in (os.path.join(os.path.dirname(sys.executable), "data"),
-                 os.path.join(sys.prefix, "bin", "data")):
-        if os.path.isfile(os.path.join(path, "models", "UnitBox.obj")):
-            return path
-    sys.exit("cannot find the pysplishsplash data folder (models/UnitBox.obj)")
-
-
 def max_time_step(radius, viscosity, override):
     if override is not None:
         return override
@@ -225,17 +199,9 @@ def columns(spacing, amplitude):
 
 
 def build_scene(out_dir, radius, amplitude, viscosity, seconds, max_dt):
-    support = 4.0 * radius
     wall = OFFSET * radius
     tank = (LENGTH + 2.0 * wall, HEIGHT + wall)
     centre = (LENGTH / 2.0, (HEIGHT - wall) / 2.0)
-    # Volume map: one cell per kernel support radius in x and y over the tank
-    # enlarged by 4 support radii on every side; four cells in z put map
-    # nodes on the 2D plane z = 0 (dfsph_column.py).
-    res_x = int(math.ceil((tank[0] + 8.0 * support) / support))
-    res_y = int(math.ceil((tank[1] + 8.0 * support) / support))
-    res_z = 4
-
     material = {
         "id": "Fluid",
         "density0": 1000,
@@ -243,22 +209,6 @@ def build_scene(out_dir, radius, amplitude, viscosity, seconds, max_dt):
         "vorticityMethod": 0,
         "Standard viscosity": {"viscosity": viscosity or 0.0},
     }
-    config = dict(BUNDLED_CONFIG)
-    config.update({
-        "pause": False,
-        "sim2D": True,
-        "particleRadius": radius,
-        "simulationMethod": 4,
-        "gravitation": [0, -G, 0],
-        "cflMaxTimeStepSize": max_dt,
-        "cflMinTimeStepSize": min(1e-4, 0.1 * max_dt),
-        "stopAt": seconds,
-        "enablePartioExport": False,
-        "enableVTKExport": False,
-        "enableRigidBodyExport": False,
-        "enableRigidBodyVTKExport": False,
-        "enableStateExport": False,
-    })
     cols = columns(2.0 * radius, amplitude)
     # Runs of neighbouring columns with the same layer count, one block each.
     runs = []
@@ -279,27 +229,17 @@ def build_scene(out_dir, radius, amplitude, viscosity, seconds, max_dt):
         "translation": [0, 0, 0],
         "scale": [1, 1, 1],
     } for a, b, n in runs]
+    tank_body, map_res = tank_wall(centre, tank, radius)
     scene = {
-        "Configuration": config,
+        "Configuration": configuration_2d(radius, max_dt, seconds),
         "Materials": [material],
-        "RigidBodies": [{
-            "geometryFile": os.path.join(data_dir(), "models", "UnitBox.obj"),
-            "translation": [centre[0], centre[1], 0],
-            "rotationAxis": [1, 0, 0],
-            "rotationAngle": 0,
-            "scale": [tank[0], tank[1], 1],
-            "isDynamic": False,
-            "isWall": True,
-            "mapInvert": True,
-            "mapThickness": 0.0,
-            "mapResolution": [res_x, res_y, res_z],
-        }],
+        "RigidBodies": [tank_body],
         "FluidBlocks": blocks,
     }
     path = os.path.join(out_dir, "SloshingTank_2D.json")
     with open(path, "w") as f:
         json.dump(scene, f, indent=2)
-    return path, (res_x, res_y, res_z), cols, len(blocks)
+    return path, map_res, cols, len(blocks)
 
 
 def main():
@@ -339,25 +279,12 @@ def main():
         scene_file, map_res, cols, n_blocks = build_scene(
             work_dir, r, args.amplitude, args.viscosity, args.seconds, max_dt)
         wall_init0 = time.perf_counter()
-        base = sph.Exec.SimulatorBase()
-        base.init(sceneFile=scene_file, useCache=False, outputDir=work_dir,
-                  initialPause=False, useGui=False, stopAt=args.seconds)
-        base.initSimulation()
-
-        sim = sph.Simulation.getCurrent()
-        if sim.numberOfFluidModels() != 1:
-            sys.exit("expected one fluid model, got %d" % sim.numberOfFluidModels())
-        fluid = sim.getFluidModel(0)
-        tm = sph.TimeManager.getCurrent()
+        run = Run(scene_file, work_dir, args.seconds)
+        base, sim, tm, fluid, positions = run.base, run.sim, run.time, run.fluid, run.positions
         n = fluid.numActiveParticles()
         expected = sum(layers for _, layers in cols)
         if n != expected:
             sys.exit("the blocks gave %d particles, the columns %d" % (n, expected))
-
-        def positions():
-            # Zero-copy view of the particle positions (N x 3, float32).
-            buf = np.asarray(fluid.getFieldBuffer("position"))
-            return buf.reshape(-1, 3)[:fluid.numActiveParticles()]
 
         def centre_x():
             return float(np.mean(positions()[:, 0], dtype=np.float64))
@@ -370,7 +297,7 @@ def main():
               % (n, len(cols), n_blocks, spacing, sim.getParticleRadius(), visc_label, max_dt,
                  list(map_res), p0[:, 0].min(), p0[:, 0].max(), p0[:, 1].min(),
                  p0[:, 1].max(), -OFFSET * r, LENGTH + OFFSET * r, -OFFSET * r,
-                 sim.getValueInt(sph.Simulation.SIMULATION_METHOD)), flush=True)
+                 run.method()), flush=True)
         print("centre of mass x(0) - L/2 = %.3f mm (the mode: -2AL/(pi^2 h) = %.3f mm)"
               % (1e3 * (x0 - rest), -1e3 * 2 * args.amplitude * LENGTH / (math.pi ** 2 * DEPTH)),
               flush=True)
