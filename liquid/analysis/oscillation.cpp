@@ -10,9 +10,13 @@
 
 namespace liquid {
 
-double sloshing_period(double length, double depth, double gravity) {
-  const double k = std::numbers::pi / length;
+double tank_mode_period(double length, double depth, double gravity, int mode) {
+  const double k = mode * std::numbers::pi / length;
   return 2.0 * std::numbers::pi / std::sqrt(gravity * k * std::tanh(k * depth));
+}
+
+double sloshing_period(double length, double depth, double gravity) {
+  return tank_mode_period(length, depth, gravity, 1);
 }
 
 SloshingTank sloshing_tank(int dimension, int cells_along) {
@@ -24,6 +28,12 @@ SloshingTank sloshing_tank(int dimension, int cells_along) {
 }
 
 Scene sloshing_scene(const Scene& physics, const SloshingTank& tank) {
+  return tank_scene(physics, tank, [&](double x) {
+    return tank.depth + tank.amplitude * std::cos(std::numbers::pi * x / tank.length);
+  });
+}
+
+Scene tank_scene(const Scene& physics, const SloshingTank& tank, const std::function<double(double)>& surface_at) {
   Scene base = physics;
   base.fluid_blocks.clear();
   base.emitters.clear();
@@ -43,7 +53,7 @@ Scene sloshing_scene(const Scene& physics, const SloshingTank& tank) {
   const int columns = int(std::floor(tank.length / spacing + 1e-4));
   for (int i = 0; i < columns; ++i) {
     const double x0 = i * spacing, centre = x0 + 0.5 * spacing;
-    const double surface = tank.depth + tank.amplitude * std::cos(std::numbers::pi * centre / tank.length);
+    const double surface = surface_at(centre);
     // A whole number of layers, the one nearest the surface.
     const double top = std::max(1.0, std::round(surface / spacing)) * spacing;
     FluidBlock block;

@@ -6,6 +6,7 @@
 #include "liquid/scene.h"
 #include "liquid/types.h"
 
+#include <functional>
 #include <span>
 
 namespace liquid {
@@ -26,7 +27,11 @@ struct SloshingTank {
 // uniform along z): the one liquid_validate and the tests run.
 SloshingTank sloshing_tank(int dimension, int cells_along);
 
-// The first mode's period by linear theory: omega^2 = g k tanh(k h), k = pi / L (s).
+// Mode n's period by linear theory: omega^2 = g k tanh(k h), k = n pi / L (s). Its surface is
+// eta(x) = a cos(n pi x / L).
+double tank_mode_period(double length, double depth, double gravity, int mode);
+
+// The first mode's period: tank_mode_period(..., 1).
 double sloshing_period(double length, double depth, double gravity);
 
 // `physics` (its regime: stiffness, gamma, pressure, splat, PIC blend; its blocks and obstacles are
@@ -35,6 +40,10 @@ double sloshing_period(double length, double depth, double gravity);
 // headroom of twice the depth, the particle spacing half a cell and the steps scaled to the cell
 // (scene_at_spacing()).
 Scene sloshing_scene(const Scene& physics, const SloshingTank& tank);
+
+// The same with the liquid's surface at rest as `surface(x)` (m above the floor; the tank's
+// amplitude unused): sloshing_scene() is this with the first mode's surface.
+Scene tank_scene(const Scene& physics, const SloshingTank& tank, const std::function<double(double)>& surface);
 
 // The liquid's centre of mass along x, m: the first mode moves it 2 A L / (pi^2 h) from L / 2, so
 // its oscillation is the mode's.

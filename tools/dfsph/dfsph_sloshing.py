@@ -82,6 +82,15 @@ twice the mean time between successive crossings over the half cycles
 measured, zeta = decay / sqrt(omega_d^2 + decay^2) with decay the negated
 slope of a least-squares fit of ln |peak| over time.
 
+--pulse runs the travelling pulse of liquid/analysis/travelling_wave.h
+instead (`liquid_validate --only travelling`): a hump h/10 high and
+sigma = h/2 wide against the left wall, exp(-x^2 / (2 sigma^2)), on still
+water rounded to whole layers, released at rest. It crosses the tank and
+back; the tank's modes 1 to 3 carry it. Each mode's amplitude
+a_n = (2 / L) sum_p s^2 cos(n pi x_p / L) is sampled after every step and
+measured as above about 0, its period against linear theory at the depth
+the liquid settles to (its section over L).
+
 Setup (once; or `compare_dfsph.py --install`):
     python3 -m venv /opt/dfsph-venv
     /opt/dfsph-venv/bin/pip install pysplishsplash==2.19.0
@@ -91,12 +100,16 @@ OMP_NUM_THREADS caps its threads):
     OMP_NUM_THREADS=1 LD_PRELOAD=/lib/x86_64-linux-gnu/libGLdispatch.so.0 \\
         /opt/dfsph-venv/bin/python tools/dfsph/dfsph_sloshing.py \\
         [--cells 128 | --spacing S] [--viscosity 1e-6] [--seconds 5] \\
-        [--amplitude 0.01] [--max-dt DT]
+        [--amplitude 0.01 | --pulse] [--max-dt DT]
 
 Last line printed (machine-readable):
     dfsph_sloshing particles=N cells=C spacing=S radius=R viscosity=V period_s=P
         theory_s=T period_err=E zeta=Z half_cycles=H wall_s=W init_s=I
         steps=K max_sample_gap_s=G max_dt=D
+    with --pulse:
+    dfsph_pulse particles=N cells=C spacing=S radius=R viscosity=V depth=H
+        mode1_period_err=E mode1_zeta=Z mode1_half_cycles=K (modes 1 to 3)
+        wall_s=W init_s=I steps=K max_sample_gap_s=G max_dt=D
 """
 
 import argparse
@@ -122,10 +135,13 @@ REST_POOL_SPACING = 0.004273504273504274
 REST_POOL_CELL = 0.5 / 64
 OFFSET = 1.2      # wall distance from the lattice's edge, in particle radii
 FLOOR = 0.1       # measure_oscillation()'s default floor
+PULSE_HEIGHT = 0.1 * DEPTH      # travelling_pulse()'s hump [m]
+PULSE_HALF_WIDTH = 0.5 * DEPTH  # its sigma [m]
+PULSE_MODES = 3   # the modes liquid_validate --only travelling measures
 
-def sloshing_period(length, depth, gravity):
-    """oscillation.cpp's sloshing_period(): linear theory, omega^2 = g k tanh(k h)."""
-    k = math.pi / length
+def sloshing_period(length, depth, gravity, mode=1):
+    """oscillation.cpp's tank_mode_period(): linear theory, omega^2 = g k tanh(k h), k = n pi / L."""
+    k = mode * math.pi / length
     return 2.0 * math.pi / math.sqrt(gravity * k * math.tanh(k * depth))
 
 
@@ -187,18 +203,32 @@ def max_time_step(radius, viscosity, override):
     return dt
 
 
-def columns(spacing, amplitude):
-    """sloshing_scene()'s columns: (centre x, layers) for each particle column."""
+def mode_surface(amplitude):
+    """sloshing_scene()'s surface: the first mode, eta = A cos(pi x / L)."""
+    return lambda x: DEPTH + amplitude * math.cos(math.pi * x / LENGTH)
+
+
+def pulse_surface(spacing, height):
+    """travelling_pulse_scene()'s surface (liquid/analysis/travelling_wave.cpp):
+    a hump height * exp(-x^2 / (2 sigma^2)), sigma = h / 2, against the left
+    wall, on still water rounded to whole layers."""
+    still = max(1.0, round(DEPTH / spacing)) * spacing
+    sigma = PULSE_HALF_WIDTH
+    return lambda x: still + height * math.exp(-0.5 * (x / sigma) ** 2)
+
+
+def columns(spacing, surface):
+    """tank_scene()'s columns: (centre x, layers) for each particle column,
+    the whole number of layers nearest surface(centre)."""
     count = int(math.floor(LENGTH / spacing + 1e-4))
     out = []
     for i in range(count):
         centre = (i + 0.5) * spacing
-        surface = DEPTH + amplitude * math.cos(math.pi * centre / LENGTH)
-        out.append((centre, int(max(1.0, round(surface / spacing)))))
+        out.append((centre, int(max(1.0, round(surface(centre) / spacing)))))
     return out
 
 
-def build_scene(out_dir, radius, amplitude, viscosity, seconds, max_dt):
+def build_scene(out_dir, radius, surface, viscosity, seconds, max_dt):
     wall = OFFSET * radius
     tank = (LENGTH + 2.0 * wall, HEIGHT + wall)
     centre = (LENGTH / 2.0, (HEIGHT - wall) / 2.0)
@@ -209,7 +239,7 @@ def build_scene(out_dir, radius, amplitude, viscosity, seconds, max_dt):
         "vorticityMethod": 0,
         "Standard viscosity": {"viscosity": viscosity or 0.0},
     }
-    cols = columns(2.0 * radius, amplitude)
+    cols = columns(2.0 * radius, surface)
     # Runs of neighbouring columns with the same layer count, one block each.
     runs = []
     for x, n in cols:
@@ -256,6 +286,10 @@ def main():
                              "inviscid; water 1e-6)")
     parser.add_argument("--amplitude", type=float, default=AMPLITUDE,
                         help="the mode's amplitude A in m (default 0.01, the project's)")
+    parser.add_argument("--pulse", action="store_true",
+                        help="the travelling pulse instead of the first mode: a hump h/10 "
+                             "high, sigma h/2 wide, against the left wall; measures "
+                             "modes 1 to 3 as liquid_validate --only travelling does")
     parser.add_argument("--seconds", type=float, default=5.0,
                         help="simulated time (default 5, about 4.7 periods)")
     parser.add_argument("--max-dt", type=float, default=None,
@@ -276,8 +310,10 @@ def main():
     work_dir = tempfile.mkdtemp(prefix="dfsph_sloshing_")
     try:
         max_dt = max_time_step(r, args.viscosity, args.max_dt)
+        surface = (pulse_surface(spacing, PULSE_HEIGHT) if args.pulse
+                   else mode_surface(args.amplitude))
         scene_file, map_res, cols, n_blocks = build_scene(
-            work_dir, r, args.amplitude, args.viscosity, args.seconds, max_dt)
+            work_dir, r, surface, args.viscosity, args.seconds, max_dt)
         wall_init0 = time.perf_counter()
         run = Run(scene_file, work_dir, args.seconds)
         base, sim, tm, fluid, positions = run.base, run.sim, run.time, run.fluid, run.positions
@@ -289,6 +325,13 @@ def main():
         def centre_x():
             return float(np.mean(positions()[:, 0], dtype=np.float64))
 
+        # tank_mode_amplitude(): a_n = (2 / L) sum_p s^2 cos(k_n x_p).
+        wavenumbers = np.pi * np.arange(1, PULSE_MODES + 1) / LENGTH
+
+        def modes():
+            x = positions()[:, 0].astype(np.float64)
+            return 2.0 / LENGTH * spacing * spacing * np.cos(np.outer(wavenumbers, x)).sum(axis=1)
+
         p0 = positions()
         x0 = centre_x()
         print("particles=%d columns=%d blocks=%d spacing=%g radius=%g viscosity=%s max_dt=%.3g "
@@ -298,16 +341,18 @@ def main():
                  list(map_res), p0[:, 0].min(), p0[:, 0].max(), p0[:, 1].min(),
                  p0[:, 1].max(), -OFFSET * r, LENGTH + OFFSET * r, -OFFSET * r,
                  run.method()), flush=True)
-        print("centre of mass x(0) - L/2 = %.3f mm (the mode: -2AL/(pi^2 h) = %.3f mm)"
-              % (1e3 * (x0 - rest), -1e3 * 2 * args.amplitude * LENGTH / (math.pi ** 2 * DEPTH)),
-              flush=True)
+        if not args.pulse:
+            print("centre of mass x(0) - L/2 = %.3f mm (the mode: -2AL/(pi^2 h) = %.3f mm)"
+                  % (1e3 * (x0 - rest), -1e3 * 2 * args.amplitude * LENGTH / (math.pi ** 2 * DEPTH)),
+                  flush=True)
 
-        samples = [(tm.getTime(), x0)]
+        sample = (lambda: (tm.getTime(), *modes())) if args.pulse else (lambda: (tm.getTime(), centre_x()))
+        samples = [sample()]
         wall_marks = []
         first_density = []
 
         def on_step():
-            samples.append((tm.getTime(), centre_x()))
+            samples.append(sample())
             wall_marks.append(time.perf_counter())
             if not first_density:
                 rho = np.asarray(fluid.getFieldBuffer("density"))[:fluid.numActiveParticles()]
@@ -330,18 +375,36 @@ def main():
     if len(samples) < 3:
         sys.exit("fewer than two time steps ran; increase --seconds")
     t = [s[0] for s in samples]
-    x = [s[1] for s in samples]
     gap = float(np.max(np.diff(t)))
     # runSimulation() starts with the deferred boundary initialisation (the
     # volume map); the first step's callback marks its end.
     init_s = wall_marks[0] - wall_init0
     sim_wall = wall_end - wall_marks[0]
-    period, zeta, half_cycles, peaks = measure(t, x, rest)
-    err = period / theory - 1.0
-
     if first_density:
         print("density after the first step, below the surface: within 2 spacings of "
               "the walls %.1f, elsewhere %.1f" % first_density[0])
+    if args.pulse:
+        # Linear theory at the depth the liquid settles to, its section over L, as
+        # liquid_validate takes it.
+        depth = spacing * spacing * n / LENGTH
+        fields = []
+        for mode in range(1, PULSE_MODES + 1):
+            period, zeta, half_cycles, peaks = measure(t, [s[mode] for s in samples], 0.0)
+            theory = sloshing_period(LENGTH, depth, G, mode)
+            err = period / theory - 1.0
+            print("mode %d: a(0) %.3f mm, period %.4f s, linear theory %.4f s, error %+.2f %%; "
+                  "zeta %.4f over %d half cycles" % (mode, 1e3 * samples[0][mode], period, theory,
+                                                     100 * err, zeta, half_cycles))
+            fields.append("mode%d_period_err=%.4f mode%d_zeta=%.4f mode%d_half_cycles=%d"
+                          % (mode, err, mode, zeta, mode, half_cycles))
+        print("dfsph_pulse particles=%d cells=%s spacing=%g radius=%g viscosity=%s depth=%.5f %s "
+              "wall_s=%.1f init_s=%.1f steps=%d max_sample_gap_s=%.2e max_dt=%.3g"
+              % (n, cells_label, spacing, r, visc_label, depth, " ".join(fields), sim_wall, init_s,
+                 len(samples) - 1, gap, max_dt))
+        return
+    x = [s[1] for s in samples]
+    period, zeta, half_cycles, peaks = measure(t, x, rest)
+    err = period / theory - 1.0
     print("t_end=%.3f steps=%d max_sample_gap=%.2e s; half-cycle peaks |x - L/2| (t s, mm):"
           % (t[-1], len(samples) - 1, gap))
     print("  " + ", ".join("%.3f %.3f" % (tp, 1e3 * yp) for tp, yp in peaks))
