@@ -8,6 +8,7 @@
 #include "engine/vk/context.h"
 #include "liquid/analysis/energy_budget.h"
 #include "liquid/analysis/oscillation.h"
+#include "liquid/analysis/still_water.h"
 #include "liquid/analysis/travelling_wave.h"
 #include "liquid/analysis/validation.h"
 #include "liquid/node.h"
@@ -101,8 +102,8 @@ double spread(const std::vector<double>& heights) {
   return worst;
 }
 
-// What a run measures beyond every run's figures, from each sample's particles.
-using SampleExtra = std::function<void(const liquid::ParticleSnapshot&, Sample&)>;
+// What a run measures beyond every run's figures, from each sample's particles and density ratio grid.
+using SampleExtra = std::function<void(const liquid::ParticleSnapshot&, const std::vector<float>&, Sample&)>;
 
 // Runs a scene for `seconds` of simulated time, sampling every `sample_every` steps (default: a
 // frame, the scene's substeps).
@@ -132,7 +133,7 @@ Run run_scene(engine::vk::Context& context, const Options& o, const liquid::Scen
     s.front = liquid::surge_front(particles);
     s.surface_spread = spread(heights);
     s.centre_x = liquid::centre_of_mass_x(particles);
-    if (extra) extra(particles, s);
+    if (extra) extra(particles, rho, s);
     run.samples.push_back(s);
   };
   while (done < total) {
@@ -400,7 +401,8 @@ void travelling(engine::vk::Context& context, const Options& o, std::vector<Chec
     std::printf("%s, %.2f s...\n", scene.name.c_str(), seconds);
     const int every = std::max(1, int(std::lround(shortest / 40.0 / liquid::scene_time_step(scene))));
     double area_per_particle = 0.0;  // set from the first sample's count
-    Run run = run_scene(context, o, scene, seconds, every, [&](const liquid::ParticleSnapshot& particles, Sample& s) {
+    Run run = run_scene(context, o, scene, seconds, every,
+                        [&](const liquid::ParticleSnapshot& particles, const std::vector<float>&, Sample& s) {
       if (area_per_particle == 0.0) area_per_particle = section / double(particles.positions.size());
       for (int n = 1; n <= k_pulse_modes; ++n)
         s.modes.push_back(liquid::tank_mode_amplitude(particles, n, length, area_per_particle));
@@ -421,6 +423,49 @@ void travelling(engine::vk::Context& context, const Options& o, std::vector<Chec
       checks.push_back({mode + ": damping ratio zeta", m.damping_ratio,
                         "< " + tools::format_cli_number(c.zeta_bound), m.damping_ratio < c.zeta_bound, c.target});
     }
+    run.name = scene.name;
+    runs.push_back(run);
+  }
+}
+
+// Still water that keeps its volume: the sloshing tank filled flat (h = 0.1 m rounded to whole
+// layers, 64 cells along L, 3D six cells across) in the rest pool's regime for 20 s. Its surface
+// from the particles (liquid/analysis/still_water.h) may not drop by more than 0.5 % of the depth
+// from 1 s to the end, and its density's rise with depth at the end must be hydrostatic within
+// 10 %. --quick: 2D for 5 s, figures.
+void still_water(engine::vk::Context& context, const Options& o, std::vector<Check>& checks, std::vector<Run>& runs) {
+  const liquid::Scene physics = load(o, "rest_pool_2d.json");
+  for (int dimension : o.quick ? std::vector<int>{2} : std::vector<int>{2, 3}) {
+    const liquid::SloshingTank tank = liquid::sloshing_tank(dimension, 64);
+    const double spacing = liquid::tank_scene(physics, tank, [&](double) { return tank.depth; }).particle_spacing;
+    const double depth = std::max(1.0, std::round(tank.depth / spacing)) * spacing;
+    liquid::Scene scene = liquid::tank_scene(physics, tank, [&](double) { return depth; });
+    scene.name = "still water " + std::to_string(dimension) + "D, 64 cells along L";
+    const double seconds = o.quick ? 5.0 : 20.0;
+    std::printf("%s, %.0f s...\n", scene.name.c_str(), seconds);
+    const double settled = 1.0;  // s: the level is measured from here
+    double level_settled = std::nan(""), level_end = std::nan("");
+    std::vector<float> last_density;
+    Run run = run_scene(context, o, scene, seconds, 0,
+                        [&](const liquid::ParticleSnapshot& particles, const std::vector<float>& rho, Sample& s) {
+                          const double level = liquid::particle_surface_level(particles, tank.length, spacing);
+                          if (std::isnan(level_settled) && s.t >= settled - 1e-9) level_settled = level;
+                          level_end = level;
+                          last_density = rho;
+                          s.modes = {level};
+                        });
+    const liquid::DensityProfile profile = liquid::density_profile(last_density, run.setup, level_end);
+    const double drop = (level_settled - level_end) / depth;
+    std::printf("  surface %.2f mm at %.0f s, %.2f mm at %.0f s; density slope %.4g /m against hydrostatic %.4g /m "
+                "over %d rows\n",
+                1e3 * level_settled, settled, 1e3 * level_end, seconds, profile.slope, profile.hydrostatic,
+                profile.rows);
+    const bool target = !o.quick;
+    checks.push_back({scene.name + ": surface drop from 1 s / depth", drop, "|x| < 0.005", std::abs(drop) < 0.005,
+                      target});
+    const double slope_error = profile.hydrostatic > 0.0 ? profile.slope / profile.hydrostatic - 1.0 : std::nan("");
+    checks.push_back({scene.name + ": density slope / hydrostatic - 1", slope_error, "|x| < 0.1",
+                      std::abs(slope_error) < 0.1, target});
     run.name = scene.name;
     runs.push_back(run);
   }
@@ -495,7 +540,8 @@ int run(const Options& o) {
   const std::pair<const char*, bool> scenes[] = {
       {"rest_pool_2d.json", wanted(o, "rest_pool")},
       {"dam_break_2d.json", wanted(o, "energy")},
-      {"rest_pool_2d.json", wanted(o, "sloshing") || wanted(o, "travelling") || (!o.only.empty() && wanted(o, "budget"))},
+      {"rest_pool_2d.json", wanted(o, "sloshing") || wanted(o, "travelling") || wanted(o, "still") ||
+                                (!o.only.empty() && wanted(o, "budget"))},
       {"column_2d.json", wanted(o, "column") || wanted(o, "column_2d")},
       {"column_3d.json", wanted(o, "column") || wanted(o, "column_3d")}};
   for (const auto& [file, runs] : scenes)
@@ -509,6 +555,7 @@ int run(const Options& o) {
   if (wanted(o, "energy")) energy(context, o, checks, runs);
   if (wanted(o, "sloshing")) sloshing(context, o, checks, runs);
   if (wanted(o, "travelling")) travelling(context, o, checks, runs);
+  if (wanted(o, "still")) still_water(context, o, checks, runs);
   // Not run by default: a read-back every step.
   if (!o.only.empty() && wanted(o, "budget")) budget(context, o, checks);
   // --quick: the 2D column at its own spacing (a target), the 3D one at twice it (a figure).
@@ -550,11 +597,12 @@ int main(int argc, char** argv) {
   app.add_option("-o,--out", out, "output folder (validation.json)");
   app.add_flag("--quick", o.quick, "shorter runs (2 s pool, 3 s dam break, one spacing of each column)");
   app.add_option("--only", o.only,
-                 "rest_pool, energy, sloshing, travelling (a pulse crossing the sloshing tank), column, one column "
+                 "rest_pool, energy, sloshing, travelling (a pulse crossing the sloshing tank), still (a pool's "
+                 "level over 20 s and its density profile), column, one column "
                  "(column_2d, column_3d), or budget (the sloshing tank's energy budget, run only when named; "
                  "repeatable)")
-      ->check(CLI::IsMember({"rest_pool", "energy", "sloshing", "travelling", "budget", "column", "column_2d",
-                             "column_3d"}));
+      ->check(CLI::IsMember({"rest_pool", "energy", "sloshing", "travelling", "still", "budget", "column",
+                             "column_2d", "column_3d"}));
   app.add_flag("--validation", o.validation, "enable the Vulkan validation layer");
   std::vector<std::string> sets;
   app.add_option("--set", sets, "override a field of every scene run, checked like the file (key=value, repeatable)")
