@@ -206,7 +206,7 @@ Pool deep_pool(float pic_ratio = 0.3f) {
 }
 
 // A box of the water's density put under water stays where it is: within 5 % of its start height
-// over 5 s (measured -1.7 to +1.4 %).
+// over 5 s, in the middle of the pool (measured -1.7 to +1.4 %) and beside a wall (-1.8 to +1.6 %).
 // The drafts of boxes of 300 and 800 kg/m^3, in the pools above: a measurement, hidden from the
 // suite (`gpu_tests "[drafts]"`, 3.5 minutes) because not every one is within 5 % yet
 // (docs/physics.md, "Bodies that float").
@@ -218,17 +218,31 @@ TEST_CASE("boxes of 300 and 800 kg/m^3 float at their drafts", "[.][drafts]") {
 
 TEST_CASE("a 2D box as dense as water stays where it is put under water", "[gpu][liquid][bodies]") {
   const Pool pool = deep_pool();
-  const float start_bottom = 0.05f;
-  liquid::LiquidNode node(test::gpu(), pool_scene(pool, 1000.0f, start_bottom));
-  const double start = start_bottom + pool.half_extent.y;
-  const Track track = run_body(node, 5.0);
-  double lowest = start, highest = start;
-  for (double y : track.height) lowest = std::min(lowest, y), highest = std::max(highest, y);
-  INFO("centre from " << start << " m: between " << lowest << " and " << highest << " m over 5 s, " << track.height.back()
-                      << " m at the end");
-  WARN("neutral box: " << 100.0 * (lowest - start) / start << " to " << 100.0 * (highest - start) / start << " % of its start height");
-  CHECK(lowest > 0.95 * start);
-  CHECK(highest < 1.05 * start);
+  struct Place {
+    const char* name;
+    float bottom;  // m above the floor
+    float x;       // the centre's, m
+  };
+  const float cell = pool.domain.x / float(pool.cells);
+  // Not yet a cell above the floor: the start kicks it 1 cm up within 60 ms, and it settles 2 %
+  // above its start by 0.3 s (docs/physics.md, "What is left").
+  for (const Place& place : {Place{"mid-depth, in the middle", 0.05f, 0.5f * pool.domain.x},
+                             Place{"two cells from a wall", 0.05f, pool.half_extent.x + 2.0f * cell}}) {
+    INFO(place.name);
+    liquid::Scene scene = pool_scene(pool, 1000.0f, place.bottom);
+    scene.obstacles[0].center.x = place.x;
+    liquid::LiquidNode node(test::gpu(), scene);
+    const double start = place.bottom + pool.half_extent.y;
+    const Track track = run_body(node, 5.0);
+    double lowest = start, highest = start;
+    for (double y : track.height) lowest = std::min(lowest, y), highest = std::max(highest, y);
+    INFO("centre from " << start << " m: between " << lowest << " and " << highest << " m over 5 s, "
+                        << track.height.back() << " m at the end");
+    WARN("neutral box, " << place.name << ": " << 100.0 * (lowest - start) / start << " to "
+                         << 100.0 * (highest - start) / start << " % of its start height");
+    CHECK(lowest > 0.95 * start);
+    CHECK(highest < 1.05 * start);
+  }
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
