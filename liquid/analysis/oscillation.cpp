@@ -64,6 +64,20 @@ Scene tank_scene(const Scene& physics, const SloshingTank& tank, const std::func
   return s;
 }
 
+double tank_still_depth(const Scene& physics, const SloshingTank& tank) {
+  const double spacing = tank_scene(physics, tank, [&](double) { return tank.depth; }).particle_spacing;
+  return std::max(1.0, std::round(tank.depth / spacing)) * spacing;
+}
+
+double particle_section(const Scene& scene) {
+  const double s = scene.particle_spacing;
+  return scene.dimension == 3 ? s * s * s / double(scene.domain.z) : s * s;
+}
+
+double settled_depth(const Scene& scene, size_t particles) {
+  return double(particles) * particle_section(scene) / double(scene.domain.x);
+}
+
 double centre_of_mass_x(const ParticleSnapshot& particles) {
   double sum = 0.0;
   size_t n = 0;

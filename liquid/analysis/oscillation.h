@@ -41,9 +41,22 @@ double sloshing_period(double length, double depth, double gravity);
 // (scene_at_spacing()).
 Scene sloshing_scene(const Scene& physics, const SloshingTank& tank);
 
-// The same with the liquid's surface at rest as `surface(x)` (m above the floor; the tank's
+// The same with the liquid's surface at rest as `surface_at(x)` (m above the floor; the tank's
 // amplitude unused): sloshing_scene() is this with the first mode's surface.
-Scene tank_scene(const Scene& physics, const SloshingTank& tank, const std::function<double(double)>& surface);
+Scene tank_scene(const Scene& physics, const SloshingTank& tank, const std::function<double(double)>& surface_at);
+
+// The tank's still depth rounded to whole layers of the particles `physics` gives it (m).
+double tank_still_depth(const Scene& physics, const SloshingTank& tank);
+
+// The section of the liquid each particle of `scene` stands for at rest (m^2): spacing^2, and in 3D
+// its volume over the tank's width. In 3D the lattice fills only whole spacings across (ten in
+// the six cells of sloshing_tank()) and then spreads over the whole width, so the blocks' extent
+// would overstate it.
+double particle_section(const Scene& scene);
+
+// The depth the liquid of `particles` particles settles to over the tank's floor (m): their
+// sections over L. Linear theory is taken at this depth.
+double settled_depth(const Scene& scene, size_t particles);
 
 // The liquid's centre of mass along x, m: the first mode moves it 2 A L / (pi^2 h) from L / 2, so
 // its oscillation is the mode's.

@@ -22,8 +22,7 @@ double pulse_surface(const TravellingPulse& pulse, double x) {
 Scene travelling_pulse_scene(const Scene& physics, const TravellingPulse& pulse) {
   // The still depth a whole number of layers, so that rounding each column to its nearest layer
   // rounds the hump alone, both ways, rather than widening it where the still level rounds down.
-  const double spacing = tank_scene(physics, pulse.tank, [&](double) { return pulse.tank.depth; }).particle_spacing;
-  const double still = std::max(1.0, std::round(pulse.tank.depth / spacing)) * spacing;
+  const double still = tank_still_depth(physics, pulse.tank);
   return tank_scene(physics, pulse.tank, [&](double x) { return pulse_surface(pulse, x) - pulse.tank.depth + still; });
 }
 
@@ -46,12 +45,6 @@ double tank_mode_amplitude(const ParticleSnapshot& particles, int mode, double l
   for (const glm::vec4& p : particles.positions)
     if (std::isfinite(p.x)) sum += std::cos(k * p.x);
   return 2.0 / length * area_per_particle * sum;
-}
-
-double liquid_section_area(const Scene& scene) {
-  double area = 0.0;
-  for (const FluidBlock& b : scene.fluid_blocks) area += double(b.max.x - b.min.x) * double(b.max.y - b.min.y);
-  return area;
 }
 
 }  // namespace liquid

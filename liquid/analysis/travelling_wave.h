@@ -18,13 +18,13 @@ namespace liquid {
 // The tank (its amplitude unused) and the hump at its left wall, eta(x) = height exp(-x^2 / (2 sigma^2)).
 struct TravellingPulse {
   SloshingTank tank;
-  double height = 0.01;      // m
-  double half_width = 0.05;  // sigma, m
+  double height = 0.0;      // m
+  double half_width = 0.0;  // sigma, m
 };
 
 // The validation's pulse on `cells_along` cells along L: sloshing_tank()'s tank (L = 0.5 m,
 // h = 0.1 m; 3D six cells across), a hump 1 cm high (h / 10) and sigma = h / 2 wide, which puts
-// comparable amplitude into modes 1 to 4 (a_n falls as exp(-(k_n sigma)^2 / 2)).
+// comparable amplitude into modes 1 to 3 (a_n falls as exp(-(k_n sigma)^2 / 2)).
 TravellingPulse travelling_pulse(int dimension, int cells_along);
 
 // The hump's surface at rest: h + eta(x).
@@ -39,12 +39,7 @@ double pulse_mode_amplitude(const TravellingPulse& pulse, int mode);
 
 // a_n of the particles' surface, n >= 1: (2 / L) int eta cos(k_n x) dx, which is
 // (2 / L) sum_p A_p cos(k_n x_p) since the liquid below the still level adds nothing to it, each
-// particle standing for `area_per_particle` of the liquid's section at rest (m^2; in 3D its volume
-// over the tank's width) (m).
+// particle standing for `area_per_particle` of the liquid's section at rest (particle_section()) (m).
 double tank_mode_amplitude(const ParticleSnapshot& particles, int mode, double length, double area_per_particle);
-
-// The section the scene's fluid blocks fill along x and y (m^2; in 3D per unit width, the blocks
-// spanning the tank across): with the particle count, the area each stands for.
-double liquid_section_area(const Scene& scene);
 
 }  // namespace liquid

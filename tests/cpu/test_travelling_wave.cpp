@@ -13,7 +13,7 @@ using namespace liquid;
 
 TEST_CASE("the pulse's modes are its hump's cosine series", "[oscillation]") {
   const TravellingPulse pulse = travelling_pulse(2, 128);
-  CHECK(pulse.height == Approx(0.01));
+  CHECK(pulse.height == Approx(0.01));  // h / 10
   CHECK(pulse.half_width == Approx(0.05));
   // The hump is ten widths from the far wall: its series is the Gaussian's transform,
   // a_n = (2 / L) A sigma sqrt(pi / 2) exp(-(k_n sigma)^2 / 2).
@@ -39,17 +39,25 @@ TEST_CASE("the pulse's particles hold its hump on whole layers of still water", 
     CHECK(std::abs(still / s - std::round(still / s)) < 1e-4);
     CHECK(still == Approx(pulse.tank.depth).margin(0.5 * s));
     CHECK(scene.fluid_blocks.front().max.y - still == Approx(pulse.height).margin(0.5 * s));
-    // Projected from the lattice the solver starts from, each mode within a twentieth of the series's.
+    // Projected from the lattice the solver starts from, each mode within a twentieth of the
+    // series's (in 3D spread over the width).
     const SimulationSetup setup = make_setup(scene, DeviceLimits{});
     ParticleSnapshot particles;
     particles.positions = setup.positions;
-    const double area = liquid_section_area(scene) / double(particles.positions.size());
-    // Each particle stands for s^2 of the section, in 3D shared by the layers across.
-    const double across = dimension == 2 ? 1.0 : std::floor(pulse.tank.width / s + 1e-4);
-    CHECK(area == Approx(s * s / across).epsilon(1e-5));  // the blocks are in float
+    // Each particle stands for s^2 of the section, in 3D its volume over the tank's width (the
+    // lattice fills ten spacings of the 10.97 across and spreads over the rest).
+    const double area = particle_section(scene);
+    CHECK(area == Approx(dimension == 2 ? s * s : s * s * s / pulse.tank.width).epsilon(1e-5));  // float domain
+    // The depth it settles to: the still layers and the hump's volume over L, in 3D over the
+    // share of the width the lattice fills.
+    const double filled = dimension == 2 ? 1.0 : std::floor(pulse.tank.width / s + 1e-4) * s / pulse.tank.width;
+    const double hump = pulse.height * pulse.half_width * std::sqrt(0.5 * std::numbers::pi) / length;
+    CHECK(settled_depth(scene, particles.positions.size()) ==
+          Approx(filled * (still + hump)).margin(0.1 * s));
     for (int n = 1; n <= 3; ++n) {
       INFO("mode " << n);
-      CHECK(tank_mode_amplitude(particles, n, length, area) == Approx(pulse_mode_amplitude(pulse, n)).epsilon(0.05));
+      CHECK(tank_mode_amplitude(particles, n, length, area) ==
+            Approx(filled * pulse_mode_amplitude(pulse, n)).epsilon(0.05));
     }
     // Still water has no mode: the lattice's columns cancel.
     const Scene flat = tank_scene(physics, pulse.tank, [&](double) { return still; });

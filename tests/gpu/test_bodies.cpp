@@ -224,8 +224,8 @@ TEST_CASE("a 2D box as dense as water stays where it is put under water", "[gpu]
     float x;       // the centre's, m
   };
   const float cell = pool.domain.x / float(pool.cells);
-  // Not yet a cell above the floor: the start kicks it 1 cm up within 60 ms, and it settles 2 %
-  // above its start by 0.3 s (docs/physics.md, "What is left").
+  // Not tested: a box put one cell above the floor is kicked 1 cm up within 60 ms by the start and
+  // settles 2 % above its start by 0.3 s (docs/physics.md, "What is left").
   for (const Place& place : {Place{"mid-depth, in the middle", 0.05f, 0.5f * pool.domain.x},
                              Place{"two cells from a wall", 0.05f, pool.half_extent.x + 2.0f * cell}}) {
     INFO(place.name);
