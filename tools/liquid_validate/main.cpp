@@ -358,6 +358,20 @@ double settled_depth_of(const liquid::Scene& scene) {
   return liquid::settled_depth(scene, size_t(liquid::make_setup(scene, liquid::DeviceLimits{}).initial_particles));
 }
 
+// The run's name: "KIND 2D, 128 cells along L".
+std::string wave_case_name(const std::string& kind, const WaveCase& c) {
+  return kind + " " + std::to_string(c.dimension) + "D, " + std::to_string(c.cells) + " cells along L";
+}
+
+// A period error is met within the bound, and, where `least_half_cycles` is set, only when measured
+// over that many half cycles: one or two of a mode that dies say little.
+Check period_check(const std::string& what, double error, int half_cycles, const WaveCase& c, int least_half_cycles = 0) {
+  std::string bound = "|x| < " + tools::format_cli_number(c.period_bound);
+  if (least_half_cycles > 0) bound += ", " + std::to_string(least_half_cycles) + "+ half cycles";
+  return {what + ": period / linear theory - 1", error, bound,
+          std::abs(error) < c.period_bound && half_cycles >= least_half_cycles, c.target};
+}
+
 // A damping ratio is met when it is below the bound and not negative: a motion that grows is no
 // better than one that dies.
 Check zeta_check(const std::string& what, double zeta, const WaveCase& c) {
@@ -374,7 +388,7 @@ void sloshing(engine::vk::Context& context, const Options& o, std::vector<Check>
   for (const WaveCase& c : wave_cases(o)) {
     const liquid::SloshingTank tank = liquid::sloshing_tank(c.dimension, c.cells);
     liquid::Scene scene = liquid::sloshing_scene(physics, tank);
-    scene.name = "sloshing " + std::to_string(c.dimension) + "D, " + std::to_string(c.cells) + " cells along L";
+    scene.name = wave_case_name("sloshing", c);
     // Linear theory at the depth the liquid settles to: whole layers, and in 3D the width it spreads over.
     const double g = glm::length(scene.gravity);
     const double theory = liquid::sloshing_period(tank.length, settled_depth_of(scene), g);
@@ -386,8 +400,7 @@ void sloshing(engine::vk::Context& context, const Options& o, std::vector<Check>
     for (const Sample& s : run.samples) t.push_back(s.t), x.push_back(s.centre_x);
     const liquid::Oscillation m = liquid::measure_oscillation(t, x, 0.5 * tank.length);
     const double error = m.period / theory - 1.0;
-    checks.push_back({scene.name + ": period / linear theory - 1", error,
-                      "|x| < " + tools::format_cli_number(c.period_bound), std::abs(error) < c.period_bound, c.target});
+    checks.push_back(period_check(scene.name, error, m.half_cycles, c));
     checks.push_back(zeta_check(scene.name, m.damping_ratio, c));
     run.name = scene.name;
     runs.push_back(run);
@@ -406,7 +419,7 @@ void travelling(engine::vk::Context& context, const Options& o, std::vector<Chec
   for (const WaveCase& c : wave_cases(o)) {
     const liquid::TravellingPulse pulse = liquid::travelling_pulse(c.dimension, c.cells);
     liquid::Scene scene = liquid::travelling_pulse_scene(physics, pulse);
-    scene.name = "travelling pulse " + std::to_string(c.dimension) + "D, " + std::to_string(c.cells) + " cells along L";
+    scene.name = wave_case_name("travelling pulse", c);
     // Linear theory at the depth the liquid settles to (the lattice's whole layers move it from h).
     const double g = glm::length(scene.gravity), length = pulse.tank.length, depth = settled_depth_of(scene);
     const double seconds = (o.quick ? 2.0 : 4.0) * liquid::tank_mode_period(length, depth, g, 1);
@@ -427,11 +440,7 @@ void travelling(engine::vk::Context& context, const Options& o, std::vector<Chec
       const std::string mode = scene.name + ", mode " + std::to_string(n);
       // A mode damped fast is measured over few half cycles: its figures are rougher.
       std::printf("  mode %d: a = %.3f mm at first, %d half cycles measured\n", n, 1e3 * a.front(), m.half_cycles);
-      // A period read over one or two half cycles of a mode that dies says little: not met.
-      checks.push_back({mode + ": period / linear theory - 1", error,
-                        "|x| < " + tools::format_cli_number(c.period_bound) + ", " +
-                            std::to_string(k_least_half_cycles) + "+ half cycles",
-                        std::abs(error) < c.period_bound && m.half_cycles >= k_least_half_cycles, c.target});
+      checks.push_back(period_check(mode, error, m.half_cycles, c, k_least_half_cycles));
       checks.push_back(zeta_check(mode, m.damping_ratio, c));
     }
     run.name = scene.name;
