@@ -209,6 +209,12 @@ struct Scene {
   PressureForce pressure_force = PressureForce::Chapter;
   SplatMode splat = SplatMode::PointSprite;
   Transfer transfer = Transfer::PicFlip;
+  // beta: each step the particle pass moves every particle down the gradient of how far the
+  // separable splat's deposit (a kernel one cell wide) reads above the wide kernel's density, by
+  // beta cells per unit of that excess per cell, so particles do not pack tighter than the
+  // pressure's kernel sees (docs/physics.md, "Still water that keeps its volume"). 0: off. Needs the
+  // separable splat.
+  float position_correction = 0.0f;
   float rest_depth = 0.1f;          // m, shallow water: water height where rho = rho0
   std::vector<FluidBlock> fluid_blocks;
   std::vector<Emitter> emitters;

@@ -40,6 +40,7 @@ const NumberKey k_number_keys[] = {
     {"time_step", &Scene::time_step, k_min_time_step, k_max_time_step},
     {"substeps", &Scene::substeps, 1, 1000},
     {"wall_margin_cells", &Scene::wall_margin_cells, 0.0, 4.0},
+    {"position_correction", &Scene::position_correction, 0.0, 1.0, false, "not used in shallow_water mode"},
 };
 
 // The keys read by code of their own (vectors, choices, objects, arrays, cross-checked numbers).
@@ -398,6 +399,9 @@ void read_physics(const Reader& r, const Json& doc, Scene& scene) {
       r.fail("transfer", "\"affine\" needs \"splat\": \"point_sprite\" (the separable splat does not yet carry the "
                          "velocity gradient through its spreads)");
   }
+  if (scene.position_correction > 0.0f && scene.splat != SplatMode::Separable)
+    r.fail("position_correction", "needs \"splat\": \"separable\" (it reads the separable splat's deposit), got " +
+                                      format_number(scene.position_correction));
   if (const Json* v = Reader::find(doc, "rest_depth")) {
     if (!shallow) r.fail("rest_depth", "only allowed in shallow_water mode");
     scene.rest_depth = float(r.number_in(*v, "rest_depth", 0.0, k_max_length, true));

@@ -50,6 +50,8 @@ struct StepImages {
   ParticleImages particles;         // the particles at the step's start
   ParticleImages particle_targets;  // the other textures of the ping-pong pair
   ImageHandle splat;                // (sum w u, sum w)
+  ImageHandle deposit;              // the separable splat's deposit before its spreads (3D: lower slices)
+  ImageHandle deposit_upper;        // 3D: the deposit's upper slices' shares
   ImageHandle region;               // the step's active region (variant.active_region)
   PressureImages pressure;          // variant.splat_adjoint()
   GridImages grids;

@@ -4,6 +4,7 @@
 #include "liquid/solver/body_shapes.h"
 #include "liquid/solver/mesh_field.h"
 #include "liquid/solver/solver_pass.h"
+#include "liquid/solver/specialization.h"
 #include "liquid/solver/state.h"
 #include "liquid_shader_families.h"
 
@@ -20,6 +21,8 @@ std::vector<engine::vk::DescriptorBinding> particle_bindings(const SolverVariant
       {LIQUID_BINDING_PARTICLE_VELOCITIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
       {LIQUID_BINDING_PARTICLE_SPLAT, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
       {LIQUID_BINDING_PARTICLE_GRID_VELOCITY, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
+      {LIQUID_BINDING_PARTICLE_DEPOSIT, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
+      {LIQUID_BINDING_PARTICLE_DEPOSIT_UPPER, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
       {LIQUID_BINDING_BODIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}};
   add_body_shapes_binding(bindings, VK_SHADER_STAGE_FRAGMENT_BIT);
   add_mesh_field_binding(variant.meshes, bindings);
@@ -31,6 +34,15 @@ std::vector<VkFormat> particle_formats(const SolverVariant& variant) {
   return std::vector<VkFormat>(size_t(2 + variant.affine_textures()), k_particle_format);
 }
 
+// The scene's constants and the pass's own: whether it runs the position correction.
+std::vector<int32_t> particle_specialization(const SolverVariant& variant, std::vector<int32_t> constants) {
+  static_assert(LIQUID_PARTICLE_POSITION_CORRECTION_ID == specialization_id::count,
+                "the particle pass's constant follows the scene's");
+  constants.resize(specialization_id::count);
+  constants.push_back(variant.position_correction ? 1 : 0);
+  return constants;
+}
+
 }  // namespace
 
 ParticleUpdatePass::ParticleUpdatePass(engine::vk::Context& context, const SolverVariant& variant,
@@ -40,9 +52,10 @@ ParticleUpdatePass::ParticleUpdatePass(engine::vk::Context& context, const Solve
                                                           .fragment = variant.shader(shaders::particle_frag),
                                                           .color_formats = particle_formats(variant),
                                                           .bindings = particle_bindings(variant),
-                                                          .specialization = specialization}),
+                                                          .specialization = particle_specialization(variant, specialization)}),
       nearest_(context, VK_FILTER_NEAREST),
-      linear_(context, VK_FILTER_LINEAR) {}
+      linear_(context, VK_FILTER_LINEAR),
+      variant_(variant) {}
 
 void ParticleUpdatePass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
                                 StepImages& step, int active_after) const {
@@ -54,6 +67,11 @@ void ParticleUpdatePass::add_to(engine::graph::RenderGraph& graph, const engine:
         bindings.bind_image(b, LIQUID_BINDING_PARTICLE_VELOCITIES, step.particles.velocities, s);
         bindings.bind_image(b, LIQUID_BINDING_PARTICLE_SPLAT, step.splat, s);
         bindings.bind_image(b, LIQUID_BINDING_PARTICLE_GRID_VELOCITY, step.grids.velocity, s);
+        // The position correction's deposit; without it the splat stands in, unread.
+        const bool correct = variant_.position_correction;
+        bindings.bind_image(b, LIQUID_BINDING_PARTICLE_DEPOSIT, correct ? step.deposit : step.splat, s);
+        bindings.bind_image(b, LIQUID_BINDING_PARTICLE_DEPOSIT_UPPER,
+                            correct && step.deposit_upper.valid() ? step.deposit_upper : step.splat, s);
         bindings.bind_image(b, LIQUID_BINDING_BODIES, step.bodies, s);
         bind_body_shapes(bindings, b, step.body_shapes, linear_);
         bind_mesh_field(bindings, b, step.mesh_field, linear_);

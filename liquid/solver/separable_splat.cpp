@@ -56,13 +56,15 @@ void SeparableSplatPass::add_to(engine::graph::RenderGraph& graph, const engine:
   const Deposit d = deposit(graph, uniforms, step, active);
   step.region = active_region_ ? active_region_->add_to(graph, uniforms, d.lower) : ImageHandle{};
   step.splat = spread(graph, uniforms, d, step);
+  step.deposit = d.lower;
+  step.deposit_upper = d.upper;
 }
 
 SeparableSplatPass::Deposit SeparableSplatPass::deposit(engine::graph::RenderGraph& graph,
                                                         const engine::vk::UniformSlice& uniforms,
                                                         const StepImages& step, int active) const {
   const bool pair = spread_z_.has_value();
-  const ImageHandle lower = pair ? graph.create_image("liquid.splat_scratch", scratch_desc_) : step.splat;
+  const ImageHandle lower = graph.create_image("liquid.splat_deposit", scratch_desc_);
   const ImageHandle upper = pair ? graph.create_image("liquid.splat_upper", scratch_desc_) : ImageHandle{};
   return add_solver_pass<Deposit>(
       graph, deposit_, uniforms,
@@ -79,11 +81,12 @@ SeparableSplatPass::Deposit SeparableSplatPass::deposit(engine::graph::RenderGra
 
 ImageHandle SeparableSplatPass::spread(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
                                        const Deposit& deposit, const StepImages& step) const {
-  // 2D: the deposit is in the splat, and the x and y passes take it to a scratch image and back.
-  // 3D: the z pass writes the splat from the deposit's two grids, then x and y as in 2D with the
-  // deposit's lower grid as their scratch image.
+  // The deposit is kept for the particle pass's position correction. 2D: the x pass takes it to a
+  // scratch image and the y pass to the splat. 3D: the z pass writes the splat from the deposit's
+  // two grids, then x and y through a scratch image.
+  const ImageHandle scratch = graph.create_image("liquid.splat_scratch", scratch_desc_);
   if (!spread_z_) {
-    SeparableBlur::Targets targets{graph.create_image("liquid.splat_scratch", scratch_desc_), deposit.lower};
+    SeparableBlur::Targets targets{scratch, step.splat};
     return spread_xy_.add_to(graph, uniforms, deposit.lower, targets, step.region);
   }
   const ImageHandle splat = add_grid_cells_pass<ImageHandle>(
@@ -93,7 +96,7 @@ ImageHandle SeparableSplatPass::spread(engine::graph::RenderGraph& graph, const 
         bindings.bind_image(b, LIQUID_BINDING_BLUR_SOURCE_UPPER, deposit.upper, nearest_.handle());
         return b.write(step.splat, Access::ColorAttachmentWrite, load);
       });
-  SeparableBlur::Targets targets{deposit.lower, splat};
+  SeparableBlur::Targets targets{scratch, splat};
   return spread_xy_.add_to(graph, uniforms, splat, targets, step.region);
 }
 

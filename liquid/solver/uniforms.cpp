@@ -53,6 +53,9 @@ gpu::SolverUniforms make_uniforms(const Scene& scene, const SimulationSetup& set
   u.brush_count = int(step.brushes.size());
   u.emission_count = int(step.emissions.size());
   u.rest_depth = setup.rest_depth;
+  u.position_correction = scene.position_correction;
+  u.deposit_density_scale =
+      float(double(setup.particle_mass) / (std::pow(double(setup.cell_size), setup.dimension) * setup.rest_density));
   u.atlas_columns = u.atlas_rows = 1;  // one tile; the node sets an atlas's (Simulation::uniforms_for)
   if (setup.wall_share_beyond.size() != size_t(gpu::k_wall_table_size))
     throw std::logic_error("liquid: the setup's wall table has " + std::to_string(setup.wall_share_beyond.size()) +

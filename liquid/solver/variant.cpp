@@ -19,6 +19,7 @@ std::string SolverVariant::description() const {
   if (bodies) out += ", bodies";
   if (active_region) out += ", active region";
   if (affine) out += ", affine transfer";
+  if (position_correction) out += ", position correction";
   return out;
 }
 
@@ -32,6 +33,7 @@ SolverVariant solver_variant(const Scene& scene, const SimulationSetup& setup, c
   v.bodies = std::any_of(scene.obstacles.begin(), scene.obstacles.end(), [](const Obstacle& o) { return o.dynamic; });
   v.active_region = active_region && layout.dimension == 3;
   v.affine = scene.transfer == Transfer::Affine;
+  v.position_correction = scene.position_correction > 0.0f;
   return v;
 }
 

@@ -27,6 +27,7 @@ struct SolverVariant {
   bool bodies = false;         // dynamic obstacles: the body force and integration passes run
   bool active_region = false;  // 3D: the grid passes draw the step's active region only
   bool affine = false;         // the affine transfer: the particles carry C_p (affine_textures() of them)
+  bool position_correction = false;  // the particle pass pushes particles out of over-packed cells
 
   bool splat_adjoint() const { return pressure == PressureMode::SplatAdjoint; }
   // The splat-adjoint pressure needs a third grid when bodies read P after the separable spread,

@@ -94,6 +94,13 @@
 #define LIQUID_BINDING_PARTICLE_VELOCITIES 2
 #define LIQUID_BINDING_PARTICLE_SPLAT 3
 #define LIQUID_BINDING_PARTICLE_GRID_VELOCITY 4
+// The separable splat's deposit (bilinear weights at the cell centres, before the spreads): the
+// particle pass's fine density for the position correction. 3D: its upper slices' shares too.
+#define LIQUID_BINDING_PARTICLE_DEPOSIT 6
+#define LIQUID_BINDING_PARTICLE_DEPOSIT_UPPER 10
+// The particle pass's own specialization constant, after the scene's (liquid/solver/specialization.h):
+// whether it runs the position correction.
+#define LIQUID_PARTICLE_POSITION_CORRECTION_ID 13
 // The body-state texture, read where dynamic obstacles are evaluated (grid, particle, body passes).
 #define LIQUID_BINDING_BODIES 5
 // The body force and exchange passes read the splat at LIQUID_BINDING_GRID_SPLAT, as the grid pass
@@ -268,9 +275,11 @@ LIQUID_STRUCT(SolverUniforms) {
   // 1 when the walls are the liquid continued through them (the separable splat's mirror images):
   // the kernel then also lacks a dynamic body's mirror image beyond a wall (pressure.glsl).
   int body_images_beyond_walls;
-  int body_unused_0;
-  int body_unused_1;
-  int body_unused_2;
+  // The particle pass's position correction (particle.frag): beta (0: off), and rho / rho0 per
+  // unit of the separable splat's deposited bilinear weight.
+  float position_correction;
+  float deposit_density_scale;
+  int unused_0;
 };
 
 // The textures of a mesh's triangles (3 texels per triangle: its corners in the mesh's frame) are

@@ -192,6 +192,7 @@ TEST_CASE("every number key refuses values outside its range and reads one insid
     j = valid_2d();
     j[row.key] = inside;
     if (std::string(row.key) == "kernel_radius_cells") j["particle_spacing"] = 0.002;  // below the kernel
+    if (std::string(row.key) == "position_correction") j["splat"] = "separable";         // it reads its deposit
     const Scene scene = parse(j);
     std::visit(
         [&](auto member) {
@@ -240,6 +241,20 @@ TEST_CASE("the transfer is the chapter's unless the affine one is asked for with
   j["mode"] = "shallow_water";
   j["transfer"] = "pic_flip";
   REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: transfer: not used in shallow_water mode"));
+}
+
+TEST_CASE("the position correction is off unless asked for, and needs the separable splat", "[scene]") {
+  CHECK(parse(valid_2d()).position_correction == 0.0f);
+  Json j = valid_2d();
+  j["splat"] = "separable";
+  j["position_correction"] = 0.1;
+  CHECK(parse(j).position_correction == Approx(0.1));
+  j["splat"] = "point_sprite";
+  REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: position_correction: needs \"splat\": \"separable\""));
+  j.erase("splat");
+  REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: position_correction: needs \"splat\": \"separable\""));
+  j["position_correction"] = 0;
+  CHECK(parse(j).position_correction == 0.0f);
 }
 
 TEST_CASE("whitewater is off unless asked for, and {} takes every default", "[scene][whitewater]") {

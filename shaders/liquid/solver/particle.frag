@@ -17,6 +17,11 @@ layout(set = 0, binding = LIQUID_BINDING_PARTICLE_POSITIONS) uniform sampler2D u
 layout(set = 0, binding = LIQUID_BINDING_PARTICLE_VELOCITIES) uniform sampler2D u_velocities;
 layout(set = 0, binding = LIQUID_BINDING_PARTICLE_SPLAT) uniform GRID_SAMPLER u_splat;             // (sum w u, sum w)
 layout(set = 0, binding = LIQUID_BINDING_PARTICLE_GRID_VELOCITY) uniform GRID_SAMPLER u_velocity;  // (u', fluid flag)
+layout(set = 0, binding = LIQUID_BINDING_PARTICLE_DEPOSIT) uniform GRID_SAMPLER u_deposit;  // (sum w_hat u, sum w_hat)
+layout(set = 0, binding = LIQUID_BINDING_PARTICLE_DEPOSIT_UPPER) uniform GRID_SAMPLER u_deposit_upper;
+// A constant, not a branch on the uniform: with `if (u.position_correction > 0.0)` lavapipe (Mesa
+// 22.3) grew by 1.5 MB a step, whatever the value (it specializes shaders on uniforms that branches read).
+layout(constant_id = LIQUID_PARTICLE_POSITION_CORRECTION_ID) const bool POSITION_CORRECTION = false;
 
 layout(location = 0) in vec2 v_uv;
 layout(location = 0) out vec4 out_position;
@@ -51,6 +56,49 @@ vec3 grid_velocity(vec3 x) {
   vec3 u_new, unused;
   sample_grid(u_velocity, u_splat, x, false, u_new, unused);
   return u_new;
+}
+
+// How far cell c's fine density (the deposit's, a kernel one cell wide) stands above what the splat's
+// kernel reads there, or above rho0 where that reads less: particles packed closer than the wide
+// kernel sees.
+float fine_excess(ivec3 c) {
+  c = clamp(c, ivec3(0), grid_cells() - 1);
+  float weight = fetch_grid(u_deposit, c).a;
+#if DIM == 3
+  if (c.z > 0) weight += fetch_grid(u_deposit_upper, c - ivec3(0, 0, 1)).a;
+#endif
+  float fine = weight * u.deposit_density_scale;
+  float coarse = fetch_grid(u_splat, c).a * u.density_scale / u.rest_density;
+  return max(fine - max(coarse, 1.0), 0.0);
+}
+
+// The position correction: down the gradient of the bilinear interpolant of fine_excess(), scaled
+// by beta h^2, at most a quarter cell.
+vec3 position_correction(vec3 x) {
+  vec3 g = x / cell_size() - 0.5;
+  ivec3 base = ivec3(floor(g));
+  vec3 f = g - vec3(base);
+#if DIM == 3
+  const int corners = 8;
+#else
+  const int corners = 4;
+  f.z = 0.0;
+  base.z = 0;
+#endif
+  vec3 gradient = vec3(0.0);
+  for (int i = 0; i < corners; ++i) {
+    ivec3 o = ivec3(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+    vec3 t = mix(1.0 - f, f, vec3(o));
+    vec3 sign_ = mix(vec3(-1.0), vec3(1.0), vec3(o));
+    float e = fine_excess(base + o);
+    gradient += e * vec3(sign_.x * t.y * t.z, t.x * sign_.y * t.z, t.x * t.y * sign_.z);
+  }
+#if DIM == 2
+  gradient.z = 0.0;
+#endif
+  vec3 step_ = -u.position_correction * cell_size() * gradient;  // gradient is per cell
+  float length_ = length(step_), most = 0.25 * cell_size();
+  return length_ > most ? step_ * (most / length_) : step_;
 }
 
 uint hash(uint x) {
@@ -147,6 +195,7 @@ void main() {
   domain_bounds_from(x, lo, hi);
   vec3 x_mid = clamp_to_bounds(x + 0.5 * dt * u_new, lo, hi);
   vec3 x_new = clamp_to_bounds(x + dt * grid_velocity(x_mid), lo, hi);
+  if (POSITION_CORRECTION) x_new = clamp_to_bounds(x_new + position_correction(x), lo, hi);
 
   // Obstacles: a particle that ended inside (or within half a cell of) an obstacle is moved back
   // to its surface and loses its velocity into it, relative to the obstacle's material there.
