@@ -1,12 +1,15 @@
 #!/usr/bin/env python3
 """The surface level of a 2D pool at rest over time, from liquid_run's particle dumps.
 
-    python3 tools/liquid_validate/pool_level.py SCENE.json 1,5,20 [--liquid-run build/bin/liquid_run]
+    python3 tools/liquid_validate/pool_level.py SCENE.json 1,5,20 [--layers] [--set KEY=VALUE ...]
+        [--liquid-run build/bin/liquid_run]
 
 Runs the scene to each time (from its start, each run deterministic) and prints the free surface's
 height away from the walls: the top particle of each column two particle spacings wide in the middle
-80 % of the tank, averaged, plus half a spacing. docs/physics.md ("Still water that keeps its
-volume") quotes it on rest_pool_2d 0.12 m deep with k = 15.
+80 % of the tank, averaged, plus half a spacing. With --layers also the particles' layers (heights
+in the middle 80 % split where they are more than a quarter spacing apart): how many particles
+each holds and the gaps between them in spacings, from the floor up. docs/physics.md ("Still water
+that keeps its volume") quotes it.
 """
 import argparse
 import csv
@@ -34,10 +37,26 @@ def level(dump, length, spacing):
     return statistics.mean(tops) + 0.5 * spacing
 
 
+def layers(dump, length, spacing):
+    heights = sorted(float(row["y"]) for row in csv.DictReader(open(dump)) if 0.1 * length < float(row["x"]) < 0.9 * length)
+    groups = [[heights[0]]] if heights else []
+    for y in heights[1:]:
+        if y - groups[-1][-1] > 0.25 * spacing:
+            groups.append([y])
+        else:
+            groups[-1].append(y)
+    means = [statistics.mean(g) for g in groups]
+    counts = " ".join(str(len(g)) for g in groups)
+    gaps = " ".join(f"{(b - a) / spacing:.2f}" for a, b in zip(means, means[1:]))
+    return f"  {len(groups)} layers of {counts} particles; gaps / spacing: {gaps}"
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("scene")
     parser.add_argument("times", help="comma-separated simulated times, s")
+    parser.add_argument("--layers", action="store_true", help="also print the particles' layers")
+    parser.add_argument("--set", action="append", default=[], help="a scene override for liquid_run")
     parser.add_argument("--liquid-run", default=os.path.join(ROOT, "build", "bin", "liquid_run"))
     args = parser.parse_args()
     scene = json.load(open(args.scene))
@@ -47,12 +66,15 @@ def main():
     with tempfile.TemporaryDirectory() as folder:
         dump = os.path.join(folder, "particles.csv")
         for t in times:
+            overrides = [item for kv in args.set for item in ("--set", kv)]
             run = subprocess.run([args.liquid_run, args.scene, "--seconds", str(t), "-r", "1000000",
-                                  "--dump-particles", dump], capture_output=True, text=True)
+                                  "--dump-particles", dump] + overrides, capture_output=True, text=True)
             if run.returncode != 0:
                 sys.exit(f"pool_level: liquid_run failed at {t} s:\n{run.stderr[-2000:]}")
             height = level(dump, scene["domain"][0], scene["particle_spacing"])
             print(f"t = {t:g} s: surface {height * 1000:.2f} mm", flush=True)
+            if args.layers:
+                print(layers(dump, scene["domain"][0], scene["particle_spacing"]), flush=True)
 
 
 if __name__ == "__main__":
