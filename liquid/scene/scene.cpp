@@ -433,8 +433,8 @@ void read_contents(const Reader& r, const Json& doc, Scene& scene) {
              shallow  ? "not available in shallow_water mode"
              : meshes ? "not available in a scene with static mesh obstacles"
                       : "needs \"pressure_force\": \"splat_adjoint\" (the body force is the reaction of its energy)");
-  // The correction's baseline is the splat's density without a body's coverage, so it pushes the
-  // liquid out from under a body (docs/physics.md, "Still water that keeps its volume").
+  // The correction pushes the liquid out from under a body and floats it too high (docs/physics.md,
+  // "Still water that keeps its volume").
   for (size_t i = 0; i < scene.obstacles.size(); ++i)
     if (scene.obstacles[i].dynamic && scene.position_correction > 0.0f)
       r.fail(element("obstacles", i) + ".dynamic",
