@@ -3,25 +3,35 @@
 #ifndef LIQUID_GRID_SAMPLE_GLSL
 #define LIQUID_GRID_SAMPLE_GLSL
 
+// The cell centres around x for trilinear (bilinear in 2D) interpolation: the lowest one, base, and
+// x's fraction f of the way to the next along each axis (z 0 in 2D); corner i is base + ivec3(i & 1,
+// (i >> 1) & 1, (i >> 2) & 1) for i below k_grid_corners.
+#if DIM == 3
+const int k_grid_corners = 8;
+#else
+const int k_grid_corners = 4;
+#endif
+void grid_corners(vec3 x, out ivec3 base, out vec3 f) {
+  vec3 g = x / cell_size() - 0.5;
+  base = ivec3(floor(g));
+  f = g - vec3(base);
+#if DIM == 2
+  f.z = 0.0;
+  base.z = 0;
+#endif
+}
+
 // Trilinear (bilinear in 2D) interpolation between cell centres over the cells that hold liquid,
 // so empty cells (no splatted velocity) do not drag the particle: u' from `velocity` (u', fluid
 // flag) and, with `with_splatted`, u from `splat` (sum w u, sum w).
 void sample_grid(GRID_SAMPLER velocity, GRID_SAMPLER splat, vec3 x, bool with_splatted, out vec3 u_new, out vec3 u_old) {
-  vec3 g = x / cell_size() - 0.5;
-  ivec3 base = ivec3(floor(g));
-  vec3 f = g - vec3(base);
+  ivec3 base;
+  vec3 f;
+  grid_corners(x, base, f);
   u_new = vec3(0.0);
   u_old = vec3(0.0);
   float total = 0.0;
-#if DIM == 3
-  const int corners = 8;
-#else
-  const int corners = 4;
-  f.z = 0.0;
-  base.z = 0;
-
-#endif
-  for (int i = 0; i < corners; ++i) {
+  for (int i = 0; i < k_grid_corners; ++i) {
     ivec3 o = ivec3(i & 1, (i >> 1) & 1, (i >> 2) & 1);
     vec3 t = mix(1.0 - f, f, vec3(o));
     float weight = t.x * t.y * t.z;

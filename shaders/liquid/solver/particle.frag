@@ -75,18 +75,11 @@ float fine_excess(ivec3 c) {
 // The position correction: down the gradient of the bilinear interpolant of fine_excess(), scaled
 // by beta h^2, at most a quarter cell.
 vec3 position_correction(vec3 x) {
-  vec3 g = x / cell_size() - 0.5;
-  ivec3 base = ivec3(floor(g));
-  vec3 f = g - vec3(base);
-#if DIM == 3
-  const int corners = 8;
-#else
-  const int corners = 4;
-  f.z = 0.0;
-  base.z = 0;
-#endif
+  ivec3 base;
+  vec3 f;
+  grid_corners(x, base, f);
   vec3 gradient = vec3(0.0);
-  for (int i = 0; i < corners; ++i) {
+  for (int i = 0; i < k_grid_corners; ++i) {
     ivec3 o = ivec3(i & 1, (i >> 1) & 1, (i >> 2) & 1);
     vec3 t = mix(1.0 - f, f, vec3(o));
     vec3 sign_ = mix(vec3(-1.0), vec3(1.0), vec3(o));
