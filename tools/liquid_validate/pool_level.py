@@ -1,20 +1,24 @@
 #!/usr/bin/env python3
 """The surface level of a 2D pool at rest over time, from liquid_run's particle dumps.
 
-    python3 tools/liquid_validate/pool_level.py SCENE.json 1,5,20 [--layers] [--set KEY=VALUE ...]
-        [--liquid-run build/bin/liquid_run]
+    python3 tools/liquid_validate/pool_level.py SCENE.json 1,5,20 [--layers] [--speeds]
+        [--set KEY=VALUE ...] [--liquid-run build/bin/liquid_run]
 
 Runs the scene to each time (from its start, each run deterministic) and prints the free surface's
 height away from the walls: the top particle of each column two particle spacings wide in the middle
 80 % of the tank, averaged, plus half a spacing. With --layers also the particles' layers (heights
 in the middle 80 % split where they are more than a quarter spacing apart): how many particles
-each holds and the gaps between them in spacings, from the floor up. docs/physics.md ("Still water
-that keeps its volume") quotes it.
+each holds and the gaps between them in spacings, from the floor up. With --speeds where the motion
+is: per grid cell of depth below the top particle (the cell size from liquid_run's header), the
+particles' rms speed, their mean vertical velocity and the share of the kinetic energy, so a pool
+that keeps moving shows whether it churns at its surface or throughout. docs/physics.md ("Still
+water that keeps its volume") quotes it.
 """
 import argparse
 import csv
 import json
 import os
+import re
 import statistics
 import subprocess
 import sys
@@ -51,11 +55,38 @@ def layers(dump, length, spacing):
     return f"  {len(groups)} layers of {counts} particles; gaps / spacing: {gaps}"
 
 
+def speeds(dump, cell, rows=8):
+    particles = [(float(r["y"]), float(r["vx"]), float(r["vy"])) for r in csv.DictReader(open(dump))]
+    top = max(y for y, _, _ in particles)
+    total = sum(vx * vx + vy * vy for _, vx, vy in particles) or 1.0
+    lines = []
+    for k in range(rows):
+        last = k == rows - 1
+        band = [(vx, vy) for y, vx, vy in particles if (last or y > top - (k + 1) * cell) and y <= top - k * cell]
+        if not band:
+            continue
+        squares = sum(vx * vx + vy * vy for vx, vy in band)
+        rms = (squares / len(band)) ** 0.5
+        rising = statistics.mean(vy for _, vy in band)
+        depth = f"{k} to {k + 1}" if not last else f"{k} to the floor"
+        lines.append(f"  cells {depth} below the top: {len(band):5d} particles, rms speed {rms * 1000:6.2f} mm/s, "
+                     f"mean vertical {rising * 1000:+6.2f} mm/s, {squares / total:4.0%} of the kinetic energy")
+    return "\n".join(lines)
+
+
+def cell_size(stdout):
+    match = re.search(r"h = ([0-9.eE+-]+) m", stdout)
+    if not match:
+        sys.exit("pool_level: liquid_run printed no cell size")
+    return float(match.group(1))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("scene")
     parser.add_argument("times", help="comma-separated simulated times, s")
     parser.add_argument("--layers", action="store_true", help="also print the particles' layers")
+    parser.add_argument("--speeds", action="store_true", help="also print the particles' speeds by depth")
     parser.add_argument("--set", action="append", default=[], help="a scene override for liquid_run")
     parser.add_argument("--liquid-run", default=os.path.join(ROOT, "build", "bin", "liquid_run"))
     args = parser.parse_args()
@@ -75,6 +106,8 @@ def main():
             print(f"t = {t:g} s: surface {height * 1000:.2f} mm", flush=True)
             if args.layers:
                 print(layers(dump, scene["domain"][0], scene["particle_spacing"]), flush=True)
+            if args.speeds:
+                print(speeds(dump, cell_size(run.stdout)), flush=True)
 
 
 if __name__ == "__main__":
