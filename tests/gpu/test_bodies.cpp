@@ -205,17 +205,27 @@ Pool deep_pool(float pic_ratio = 0.3f) {
   return pool;
 }
 
-// A box of the water's density put under water stays where it is: within 5 % of its start height
-// over 5 s, in the middle of the pool (measured -1.7 to +1.4 %) and beside a wall (-1.8 to +1.6 %).
-// The drafts of boxes of 300 and 800 kg/m^3, in the pools above: a measurement, hidden from the
-// suite (`gpu_tests "[drafts]"`, 3.5 minutes) because not every one is within 5 % yet
-// (docs/physics.md, "Bodies that float").
-TEST_CASE("boxes of 300 and 800 kg/m^3 float at their drafts", "[.][drafts]") {
-  for (float density : {300.0f, 800.0f}) check_floating_box(Pool{}, 1.6, 0.4, density);
-  for (float density : {300.0f, 800.0f}) check_floating_box(coarse_3d_pool(), 2.4, 0.4, density);
+// The drafts of boxes of 300 and 800 kg/m^3, in the pools above. The 3D pool settles the 800 kg/m^3
+// box for 4 s: it pushes more liquid out from under it than the 500 kg/m^3 box, and at 2.4 s it
+// still sank at 0.7 cm/s, 5.3 % short (measured at 4 s: 2D 800 0.9 % deep, 3D 300 3.0 % deep, 3D
+// 800 0.4 % short; docs/physics.md, "Bodies that float").
+TEST_CASE("boxes of 300 and 800 kg/m^3 float at their drafts in 3D and the 800 one in 2D", "[gpu][liquid][bodies]") {
+  check_floating_box(Pool{}, 1.6, 0.4, 800.0f);
+  check_floating_box(coarse_3d_pool(), 2.4, 0.4, 300.0f);
+  check_floating_box(coarse_3d_pool(), 4.0, 0.4, 800.0f);
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
+// The 2D box of 300 kg/m^3: a measurement, hidden from the suite (`gpu_tests "[drafts]"`) because
+// it floats 19.6 % short of its draft: its 3 cm draft lies within the kernel's reach of the free
+// surface, where the liquid's compressed layer bears more than hydrostatic pressure.
+TEST_CASE("a 2D box of 300 kg/m^3 floats at its draft", "[.][drafts]") {
+  check_floating_box(Pool{}, 1.6, 0.4, 300.0f);
+  REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+// A box of the water's density put under water stays where it is: within 5 % of its start height
+// over 5 s, in the middle of the pool (measured -1.7 to +1.4 %) and beside a wall (-1.8 to +1.6 %).
 TEST_CASE("a 2D box as dense as water stays where it is put under water", "[gpu][liquid][bodies]") {
   const Pool pool = deep_pool();
   struct Place {
