@@ -399,6 +399,8 @@ void sloshing(engine::vk::Context& context, const Options& o, std::vector<Check>
     std::vector<double> t, x;
     for (const Sample& s : run.samples) t.push_back(s.t), x.push_back(s.centre_x);
     const liquid::Oscillation m = liquid::measure_oscillation(t, x, 0.5 * tank.length);
+    if (!std::isfinite(m.period))  // the checks then print nan: say why
+      std::printf("  no period: the centre of mass did not swing across L/2 and back (the wave died or never moved)\n");
     const double error = m.period / theory - 1.0;
     checks.push_back(period_check(scene.name, error, m.half_cycles, c));
     checks.push_back(zeta_check(scene.name, m.damping_ratio, c));
