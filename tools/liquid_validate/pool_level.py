@@ -27,11 +27,15 @@ import tempfile
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 
-def level(dump, length, spacing):
+def read_particles(dump):
+    """The dump's particles as (x, y, vx, vy), read once for every measure below."""
+    return [(float(r["x"]), float(r["y"]), float(r["vx"]), float(r["vy"])) for r in csv.DictReader(open(dump))]
+
+
+def level(particles, length, spacing):
     columns = int(length / (2 * spacing))
     top = [-1.0] * columns
-    for row in csv.DictReader(open(dump)):
-        x, y = float(row["x"]), float(row["y"])
+    for x, y, _, _ in particles:
         if 0.1 * length < x < 0.9 * length:
             c = min(columns - 1, int(x / length * columns))
             top[c] = max(top[c], y)
@@ -41,8 +45,8 @@ def level(dump, length, spacing):
     return statistics.mean(tops) + 0.5 * spacing
 
 
-def layers(dump, length, spacing):
-    heights = sorted(float(row["y"]) for row in csv.DictReader(open(dump)) if 0.1 * length < float(row["x"]) < 0.9 * length)
+def layers(particles, length, spacing):
+    heights = sorted(y for x, y, _, _ in particles if 0.1 * length < x < 0.9 * length)
     groups = [[heights[0]]] if heights else []
     for y in heights[1:]:
         if y - groups[-1][-1] > 0.25 * spacing:
@@ -55,14 +59,13 @@ def layers(dump, length, spacing):
     return f"  {len(groups)} layers of {counts} particles; gaps / spacing: {gaps}"
 
 
-def speeds(dump, cell, rows=8):
-    particles = [(float(r["y"]), float(r["vx"]), float(r["vy"])) for r in csv.DictReader(open(dump))]
-    top = max(y for y, _, _ in particles)
-    total = sum(vx * vx + vy * vy for _, vx, vy in particles) or 1.0
+def speeds(particles, cell, rows=8):
+    top = max(y for _, y, _, _ in particles)
+    total = sum(vx * vx + vy * vy for _, _, vx, vy in particles) or 1.0
     lines = []
     for k in range(rows):
         last = k == rows - 1
-        band = [(vx, vy) for y, vx, vy in particles if (last or y > top - (k + 1) * cell) and y <= top - k * cell]
+        band = [(vx, vy) for _, y, vx, vy in particles if (last or y > top - (k + 1) * cell) and y <= top - k * cell]
         if not band:
             continue
         squares = sum(vx * vx + vy * vy for vx, vy in band)
@@ -102,12 +105,13 @@ def main():
                                   "--dump-particles", dump] + overrides, capture_output=True, text=True)
             if run.returncode != 0:
                 sys.exit(f"pool_level: liquid_run failed at {t} s:\n{run.stderr[-2000:]}")
-            height = level(dump, scene["domain"][0], scene["particle_spacing"])
+            particles = read_particles(dump)
+            height = level(particles, scene["domain"][0], scene["particle_spacing"])
             print(f"t = {t:g} s: surface {height * 1000:.2f} mm", flush=True)
             if args.layers:
-                print(layers(dump, scene["domain"][0], scene["particle_spacing"]), flush=True)
+                print(layers(particles, scene["domain"][0], scene["particle_spacing"]), flush=True)
             if args.speeds:
-                print(speeds(dump, cell_size(run.stdout)), flush=True)
+                print(speeds(particles, cell_size(run.stdout)), flush=True)
 
 
 if __name__ == "__main__":
