@@ -215,6 +215,9 @@ struct Scene {
   // pressure's kernel sees (docs/physics.md, "Still water that keeps its volume"). 0: off. Needs the
   // separable splat.
   float position_correction = 0.0f;
+  // Jacobi iterations of a pressure projection per step (0: none, the pressure is the equation of
+  // state's): experimental, splat-adjoint pressure only, without bodies or meshes.
+  int projection_iterations = 0;
   float rest_depth = 0.1f;          // m, shallow water: water height where rho = rho0
   std::vector<FluidBlock> fluid_blocks;
   std::vector<Emitter> emitters;

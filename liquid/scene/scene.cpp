@@ -41,6 +41,7 @@ const NumberKey k_number_keys[] = {
     {"substeps", &Scene::substeps, 1, 1000},
     {"wall_margin_cells", &Scene::wall_margin_cells, 0.0, 4.0},
     {"position_correction", &Scene::position_correction, 0.0, 1.0, false, "not used in shallow_water mode"},
+    {"projection_iterations", &Scene::projection_iterations, 0, 1000, false, "not used in shallow_water mode"},
 };
 
 // The keys read by code of their own (vectors, choices, objects, arrays, cross-checked numbers).
@@ -440,6 +441,13 @@ void read_contents(const Reader& r, const Json& doc, Scene& scene) {
       r.fail(element("obstacles", i) + ".dynamic",
              "not yet with \"position_correction\" (it floats bodies 20 to 57 % high), got " +
                  format_number(scene.position_correction));
+  // The projection's solve knows the walls and the free surface, not yet the obstacles. Its first
+  // iteration reads the last step's solution and its last writes the next's: two at least.
+  if (scene.projection_iterations == 1)
+    r.fail("projection_iterations", "must be 0 (no projection) or at least 2, got 1");
+  if (scene.projection_iterations > 0 && (scene.pressure_force != PressureForce::SplatAdjoint || !scene.obstacles.empty()))
+    r.fail("projection_iterations", "needs \"pressure_force\": \"splat_adjoint\" and no obstacles (not yet), got " +
+                                      std::to_string(scene.projection_iterations));
   if (!shallow && Reader::find(doc, "ground")) r.fail("ground", "only allowed in shallow_water mode");
   scene.ground = read_array<GroundHill>(r, doc, "ground", read_ground_hill);
   if (const Json* v = Reader::find(doc, "camera")) {

@@ -1,5 +1,6 @@
 #include "liquid/solver/pressure.h"
 
+#include "engine/graph/transfer.h"
 #include "liquid/solver/body_shapes.h"
 #include "liquid/solver/mesh_field.h"
 #include "liquid/solver/solver_pass.h"
@@ -48,6 +49,26 @@ PressurePass::PressurePass(engine::vk::Context& context, const SolverVariant& va
       nearest_(context, VK_FILTER_NEAREST),
       linear_(context, VK_FILTER_LINEAR),
       variant_(variant) {
+  if (variant.projection()) {
+    engine::vk::GraphicsPipelineDesc divergence = grid_pipeline(
+        "liquid.projection_divergence", variant, variant.shader(shaders::projection_divergence_frag),
+        LIQUID_BINDING_PRESSURE_SPLAT, specialization);
+    divergence_.emplace(context, divergence);
+    engine::vk::GraphicsPipelineDesc jacobi = grid_pipeline(
+        "liquid.projection_jacobi", variant, variant.shader(shaders::projection_jacobi_frag),
+        LIQUID_BINDING_PRESSURE_SPLAT, specialization);
+    jacobi.bindings.push_back({LIQUID_BINDING_PROJECTION_PRESSURE, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
+    jacobi.bindings.push_back({LIQUID_BINDING_PROJECTION_DIVERGENCE, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
+    jacobi_.emplace(context, jacobi);
+    constexpr VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+                                        VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    const engine::vk::ImageDesc desc = variant.layout.image_desc(k_pressure_format, usage);
+    projection_pressure_.emplace(context, desc, "liquid.projection_pressure");
+    const std::vector<std::byte> zeros(size_t(desc.width) * desc.height * desc.depth_or_layers *
+                                       engine::vk::format_texel_size(desc.format));
+    engine::graph::upload_image(context, *projection_pressure_, zeros);
+    return;
+  }
   if (variant.splat == SplatMode::Separable)
     spread_.emplace(context, variant, SeparableBlur::Kind::Potential, k_pressure_format, specialization);
   else
@@ -58,13 +79,49 @@ PressurePass::PressurePass(engine::vk::Context& context, const SolverVariant& va
 PressureImages PressurePass::create_images(engine::graph::RenderGraph& graph) const {
   const engine::vk::ImageDesc desc = variant_.layout.image_desc(k_pressure_format, 0);
   PressureImages images{graph.create_image("liquid.pressure", desc), graph.create_image("liquid.potential", desc), {}, {}};
-  if (variant_.pressure_scratch())  // the body force reads P after the spread
+  if (variant_.pressure_scratch() || variant_.projection())  // the body force reads P after the spread; the iterations
     images.scratch = graph.create_image("liquid.potential_scratch", desc);
+  if (projection_pressure_)
+    images.phi = graph.import_image(projection_pressure_->name(), *projection_pressure_);
   return images;
 }
 
+void PressurePass::add_projection_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
+                                     StepImages& step, bool stepping) const {
+  if (!stepping) return;  // p.phi: the last step's p
+  PressureImages& p = step.pressure;
+  const GridCells cells{variant_, step.region, nearest_};
+  using engine::graph::AttachmentOptions;
+  // The divergence into `pressure`, then the iterations from p.phi through `potential` and `pressure`'s
+  // partner `scratch`-less pair: the last writes p.phi again.
+  p.pressure = add_grid_cells_pass<ImageHandle>(
+      graph, *divergence_, uniforms, cells,
+      [&](engine::passes::PassBindings& bindings, PassBuilder& b, const AttachmentOptions& load) {
+        bindings.bind_image(b, LIQUID_BINDING_PRESSURE_SPLAT, step.splat, nearest_.handle());
+        return b.write(p.pressure, Access::ColorAttachmentWrite, load);
+      });
+  ImageHandle source = p.phi;
+  for (int i = 0; i < variant_.projection_iterations; ++i) {
+    const bool last = i + 1 == variant_.projection_iterations;
+    ImageHandle& target = last ? p.phi : (i % 2 == 0 ? p.potential : p.scratch);
+    target = add_grid_cells_pass<ImageHandle>(
+        graph, *jacobi_, uniforms, cells,
+        [&](engine::passes::PassBindings& bindings, PassBuilder& b, const AttachmentOptions& load) {
+          bindings.bind_image(b, LIQUID_BINDING_PRESSURE_SPLAT, step.splat, nearest_.handle());
+          bindings.bind_image(b, LIQUID_BINDING_PROJECTION_PRESSURE, source, nearest_.handle());
+          bindings.bind_image(b, LIQUID_BINDING_PROJECTION_DIVERGENCE, p.pressure, nearest_.handle());
+          return b.write(target, Access::ColorAttachmentWrite, load);
+        });
+    source = target;
+  }
+}
+
 void PressurePass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
-                          StepImages& step) const {
+                          StepImages& step, bool stepping) const {
+  if (projection_pressure_) {
+    add_projection_to(graph, uniforms, step, stepping);
+    return;
+  }
   PressureImages& p = step.pressure;
   const GridCells cells{variant_, step.region, nearest_};
   using engine::graph::AttachmentOptions;

@@ -37,12 +37,23 @@ class PressurePass {
   // region; writes P into `step.pressure.pressure` and sets `step.pressure.phi` to the image that
   // holds Phi (the potential's, or P's own in 2D under the separable splat, whose spread alternates
   // between the two images, unless there is a scratch image).
-  void add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, StepImages& step) const;
+  // The pressure projection's solution, kept from step to step (checkpoints save it); null without.
+  engine::vk::Image* projection_pressure() const { return projection_pressure_ ? &*projection_pressure_ : nullptr; }
+
+  // `stepping` false: a grid pass for the view (dt 0), which leaves the projection's p as it is.
+  void add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, StepImages& step,
+              bool stepping = true) const;
 
  private:
   engine::vk::GraphicsPipeline pressure_;
   std::optional<engine::vk::GraphicsPipeline> potential_;  // the point-sprite splat's gather
   std::optional<SeparableBlur> spread_;                     // the separable splat's passes
+  // The pressure projection (variant.projection()): the divergence, one Jacobi iteration, and its
+  // solution, kept from step to step as the next step's first iterate.
+  std::optional<engine::vk::GraphicsPipeline> divergence_, jacobi_;
+  mutable std::optional<engine::vk::Image> projection_pressure_;  // imported (written) by const declarations
+  void add_projection_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
+                         StepImages& step, bool stepping) const;
   engine::vk::Sampler nearest_;  // also the mesh field's (P reads the obstacles' density at cell centres)
   engine::vk::Sampler linear_;   // the body shapes'
   SolverVariant variant_;

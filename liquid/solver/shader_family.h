@@ -29,6 +29,7 @@ constexpr uint32_t MESH_FIELD = 1u << 1;     // the pass samples the static mesh
 constexpr uint32_t ATLAS = 1u << 2;          // the grid is an atlas, for a shader without layouts of its own
 constexpr uint32_t TRANSMIT = 1u << 3;       // the raymarch writes the liquid's transmittance
 constexpr uint32_t AFFINE = 1u << 4;         // the affine transfer: the particles carry C_p
+constexpr uint32_t PROJECTION = 1u << 5;     // the grid pass takes the pressure projection's gradient
 }  // namespace shader_feature
 
 struct ShaderFamily {

@@ -135,9 +135,9 @@ gpu::SolverUniforms Simulation::current_uniforms() const {
 }
 
 void Simulation::add_grid_passes(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice,
-                                 StepImages& step) const {
+                                 StepImages& step, bool stepping) const {
   splat_->add_to(graph, slice, step, active_);
-  if (pressure_) pressure_->add_to(graph, slice, step);
+  if (pressure_) pressure_->add_to(graph, slice, step, stepping);
   grid_->add_to(graph, slice, step);
 }
 
@@ -236,7 +236,7 @@ LiquidImages Simulation::add_grids_to(engine::graph::RenderGraph& graph, const L
   step.bodies = images.bodies;
   step.body_shapes = body_shapes_handle_;
   step.mesh_field = update_mesh_field(graph, slice, inputs.obstacle_poses, images.mesh_field);
-  add_grid_passes(graph, slice, step);
+  add_grid_passes(graph, slice, step, false);
   return {images.positions,
           images.velocities,
           step.splat,

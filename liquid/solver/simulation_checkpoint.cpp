@@ -12,6 +12,15 @@
 
 namespace liquid {
 
+engine::vk::Image* Simulation::projection_pressure() const {
+  return pressure_ ? pressure_->projection_pressure() : nullptr;
+}
+
+size_t Simulation::projection_texels() const {
+  const engine::vk::Image* p = projection_pressure();
+  return p ? size_t(p->desc().width) * p->desc().height * p->desc().depth_or_layers : 0;
+}
+
 Checkpoint Simulation::save_checkpoint() {
   Checkpoint c;
   c.step = step_;
@@ -31,6 +40,8 @@ Checkpoint Simulation::save_checkpoint() {
   c.bodies = texels_as<glm::vec4>(engine::graph::download_image(context_, bodies),
                                   size_t(bodies.desc().width) * bodies.desc().height);
   if (whitewater_) c.whitewater = whitewater_->save();
+  if (engine::vk::Image* p = projection_pressure())
+    c.pressure = texels_as<float>(engine::graph::download_image(context_, *p), projection_texels());
   return c;
 }
 
@@ -54,6 +65,8 @@ void Simulation::check_checkpoint_values(const Checkpoint& c) const {
   for (size_t i = 0; i < c.bodies.size(); ++i)
     if (!finite(glm::vec3(c.bodies[i])) || !std::isfinite(c.bodies[i].w))
       refuse("body state holds a non-finite value (texel " + std::to_string(i) + ")");
+  for (size_t i = 0; i < c.pressure.size(); ++i)
+    if (!std::isfinite(c.pressure[i])) refuse("pressure holds a non-finite value (texel " + std::to_string(i) + ")");
   // The active particles' C_p (the texels past them are never read).
   const size_t texels = c.positions.size();
   for (size_t i = 0; i < c.affine.size(); ++i)
@@ -78,7 +91,7 @@ void Simulation::restore_checkpoint(const Checkpoint& c) {
   const engine::vk::ImageDesc& body_desc = state_->bodies[0].desc();
   if (c.positions.size() != texels || c.velocities.size() != texels || c.emitted.size() != scene_.emitters.size() ||
       c.poses.size() != scene_.obstacles.size() || c.bodies.size() != size_t(body_desc.width) * body_desc.height ||
-      c.affine.size() != texels * state_->affine[0].size())
+      c.affine.size() != texels * state_->affine[0].size() || c.pressure.size() != projection_texels())
     throw ArgumentError("liquid: the checkpoint does not match this scene (" + std::to_string(c.positions.size()) +
                         " particle texels, " + std::to_string(c.emitted.size()) + " emitters, " +
                         std::to_string(c.poses.size()) + " obstacles; the scene has " + std::to_string(texels) +
@@ -95,6 +108,8 @@ void Simulation::restore_checkpoint(const Checkpoint& c) {
     engine::graph::upload_image(context_, state_->affine[state_->current][a],
                                 std::as_bytes(std::span(c.affine).subspan(a * texels, texels)));
   engine::graph::upload_image(context_, state_->bodies[state_->body_current], std::as_bytes(std::span(c.bodies)));
+  if (engine::vk::Image* p = projection_pressure())
+    engine::graph::upload_image(context_, *p, std::as_bytes(std::span(c.pressure)));
   bodies_ = decode_bodies(scene_, setup_.dimension, c.bodies);
   for (BodyReadback& r : body_readbacks_) r.readback = {};
   step_ = c.step;

@@ -8,7 +8,8 @@ namespace liquid {
 
 uint32_t SolverVariant::shader_features() const {
   return (splat_adjoint() ? shader_feature::SPLAT_ADJOINT : 0u) | (meshes ? shader_feature::MESH_FIELD : 0u) |
-         (layout.atlas() ? shader_feature::ATLAS : 0u) | (affine ? shader_feature::AFFINE : 0u);
+         (layout.atlas() ? shader_feature::ATLAS : 0u) | (affine ? shader_feature::AFFINE : 0u) |
+         (projection() ? shader_feature::PROJECTION : 0u);
 }
 
 std::string SolverVariant::description() const {
@@ -20,6 +21,7 @@ std::string SolverVariant::description() const {
   if (active_region) out += ", active region";
   if (affine) out += ", affine transfer";
   if (position_correction) out += ", position correction";
+  if (projection()) out += ", pressure projection (" + std::to_string(projection_iterations) + " iterations)";
   return out;
 }
 
@@ -34,6 +36,7 @@ SolverVariant solver_variant(const Scene& scene, const SimulationSetup& setup, c
   v.active_region = active_region && layout.dimension == 3;
   v.affine = scene.transfer == Transfer::Affine;
   v.position_correction = scene.position_correction > 0.0f;
+  v.projection_iterations = scene.projection_iterations;
   return v;
 }
 

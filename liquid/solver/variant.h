@@ -28,8 +28,10 @@ struct SolverVariant {
   bool active_region = false;  // 3D: the grid passes draw the step's active region only
   bool affine = false;         // the affine transfer: the particles carry C_p (affine_textures() of them)
   bool position_correction = false;  // the particle pass pushes particles out of over-packed cells
+  int projection_iterations = 0;     // > 0: the pressure is a projection's, by this many Jacobi passes
 
   bool splat_adjoint() const { return pressure == PressureMode::SplatAdjoint; }
+  bool projection() const { return projection_iterations > 0; }
   // The splat-adjoint pressure needs a third grid when bodies read P after the separable spread,
   // which otherwise alternates between P's image and Phi's (PressureImages::scratch).
   bool pressure_scratch() const { return splat_adjoint() && bodies && splat == SplatMode::Separable; }

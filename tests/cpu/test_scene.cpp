@@ -193,6 +193,7 @@ TEST_CASE("every number key refuses values outside its range and reads one insid
     j[row.key] = inside;
     if (std::string(row.key) == "kernel_radius_cells") j["particle_spacing"] = 0.002;  // below the kernel
     if (std::string(row.key) == "position_correction") j["splat"] = "separable";         // it reads its deposit
+    if (std::string(row.key) == "projection_iterations") j["pressure_force"] = "splat_adjoint";
     const Scene scene = parse(j);
     std::visit(
         [&](auto member) {
@@ -263,6 +264,22 @@ TEST_CASE("the position correction is off unless asked for, and needs the separa
   REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: obstacles[0].dynamic: not yet with \"position_correction\""));
   j["position_correction"] = 0;
   CHECK(parse(j).obstacles.at(0).dynamic);
+}
+
+TEST_CASE("the pressure projection is off unless asked for, and needs the splat-adjoint pressure and no obstacles",
+          "[scene]") {
+  CHECK(parse(valid_2d()).projection_iterations == 0);
+  Json j = valid_2d();
+  j["projection_iterations"] = 40;
+  REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: projection_iterations: needs \"pressure_force\": \"splat_adjoint\""));
+  j["pressure_force"] = "splat_adjoint";
+  CHECK(parse(j).projection_iterations == 40);
+  j["projection_iterations"] = 1;  // its first iteration reads the last step's solution, its last writes the next's
+  REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: projection_iterations: must be 0 (no projection) or at least 2, got 1"));
+  j["projection_iterations"] = 2;
+  CHECK(parse(j).projection_iterations == 2);
+  j["obstacles"] = Json::parse(R"([{"shape": "box", "center": [0.5, 0.5], "half_extent": [0.05, 0.05]}])");
+  REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: projection_iterations: needs \"pressure_force\": \"splat_adjoint\" and no obstacles"));
 }
 
 TEST_CASE("whitewater is off unless asked for, and {} takes every default", "[scene][whitewater]") {

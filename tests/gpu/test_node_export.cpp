@@ -143,6 +143,44 @@ TEST_CASE("under the affine transfer a checkpoint carries the velocity gradients
                     Catch::StartsWith("liquid: the checkpoint's velocity gradients hold a non-finite value (particle 2)"));
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
+TEST_CASE("under the pressure projection a checkpoint carries its solution, and a view's grids change nothing",
+          "[gpu][liquid][export][projection]") {
+  std::string text = k_scene;
+  text.replace(text.find("\"substeps\": 5,"), 14,
+               "\"substeps\": 5, \"pressure_force\": \"splat_adjoint\", \"projection_iterations\": 8,");
+  const size_t obstacles = text.find(",\n  \"obstacles\"");  // the projection takes none yet
+  text.erase(obstacles, text.rfind("\n}") - obstacles);
+  const liquid::Scene scene = liquid::parse_scene(text, "checkpoint.json");
+  liquid::LiquidNode first(test::gpu(), scene);
+  test::run_steps(first, 25);
+  const liquid::LiquidNode::Checkpoint saved = first.save_checkpoint();
+  REQUIRE(saved.pressure.size() == 32u * 24u);  // the grid's cells
+  REQUIRE(std::any_of(saved.pressure.begin(), saved.pressure.end(), [](float p) { return p > 0.0f; }));
+  add_grids(first);  // what a view asks for between two frames
+  test::run_steps(first, 25);
+  const liquid::ParticleSnapshot expected = first.read_particles();
+
+  liquid::LiquidNode second(test::gpu(), scene);
+  second.restore_checkpoint(saved);
+  test::run_steps(second, 25);
+  CHECK(same_bits(second.read_particles().velocities, expected.velocities));
+  // The solution is state: restored as zero, the run differs.
+  liquid::LiquidNode::Checkpoint flat = saved;
+  std::fill(flat.pressure.begin(), flat.pressure.end(), 0.0f);
+  liquid::LiquidNode third(test::gpu(), scene);
+  third.restore_checkpoint(flat);
+  test::run_steps(third, 25);
+  CHECK_FALSE(same_bits(third.read_particles().velocities, expected.velocities));
+  liquid::LiquidNode::Checkpoint none = saved;
+  none.pressure.clear();
+  CHECK_THROWS_WITH(second.restore_checkpoint(none), Catch::Contains("does not match this scene"));
+  liquid::LiquidNode::Checkpoint broken = saved;
+  broken.pressure[2] = std::nanf("");
+  CHECK_THROWS_WITH(second.restore_checkpoint(broken),
+                    Catch::StartsWith("liquid: the checkpoint's pressure holds a non-finite value (texel 2)"));
+  REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
 TEST_CASE("grids rebuilt from the particles read the rest density of the initial lattice", "[gpu][liquid][export]") {
   liquid::LiquidNode node(test::gpu(), test::shipped_scene("rest_pool_2d"));
   liquid::VolumeFrame before = liquid::read_volume(test::gpu(), node);

@@ -13,8 +13,9 @@ namespace capture {
 namespace {
 
 // 02: the node's next time step follows its clock (adaptive steps). 03: a checksum of the content
-// closes the file. 06: the secondary particles' textures (whitewater) follow the bodies'.
-constexpr char k_magic[8] = {'L', 'Q', 'C', 'K', 'P', 'T', '0', '6'};
+// closes the file. 06: the secondary particles' textures (whitewater) follow the bodies'. 07: the
+// pressure projection's solution follows the whitewater.
+constexpr char k_magic[8] = {'L', 'Q', 'C', 'K', 'P', 'T', '0', '7'};
 
 class Writer {
  public:
@@ -106,6 +107,7 @@ void save_checkpoint(const std::filesystem::path& path, const CaptureCheckpoint&
   w.put_vector(c.node.affine);
   w.put_vector(c.node.bodies);
   w.put_vector(c.node.whitewater);
+  w.put_vector(c.node.pressure);
   w.put_vector(std::vector<char>(c.stats_csv.begin(), c.stats_csv.end()));
   w.put(fingerprint(w.bytes_));  // over everything before it
   engine::io::write_file_atomically(path, w.bytes_);
@@ -153,6 +155,7 @@ CaptureCheckpoint load_checkpoint(const std::filesystem::path& path) {
   c.node.affine = r.get_vector<glm::vec4>();
   c.node.bodies = r.get_vector<glm::vec4>();
   c.node.whitewater = r.get_vector<glm::vec4>();
+  c.node.pressure = r.get_vector<float>();
   const std::vector<char> stats = r.get_vector<char>();
   c.stats_csv.assign(stats.begin(), stats.end());
   r.get<uint64_t>();  // the checksum, checked above

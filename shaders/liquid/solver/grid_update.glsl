@@ -8,9 +8,12 @@
 #ifndef SPLAT_ADJOINT
 #define SPLAT_ADJOINT 0
 #endif
+#ifndef PROJECTION
+#define PROJECTION 0
+#endif
 
 layout(set = 0, binding = LIQUID_BINDING_GRID_SPLAT) uniform GRID_SAMPLER u_splat;
-#if SPLAT_ADJOINT
+#if SPLAT_ADJOINT || PROJECTION  // the projection's p in the potential's place
 layout(set = 0, binding = LIQUID_BINDING_GRID_POTENTIAL) uniform GRID_SAMPLER u_potential;
 #endif
 
@@ -38,6 +41,22 @@ float potential_at(ivec3 c, int a, int offset) {
 }
 #endif
 
+#if PROJECTION
+#include "liquid/solver/projection.glsl"
+// The projection's p (in u_potential) at the neighbour `side` (-1 or 1) cells from c along axis a,
+// as the difference at c needs it: beyond a wall the hydrostatic ghost, across the free surface from
+// a liquid cell the ghost-fluid value that puts p = 0 on the surface (projection_jacobi.frag).
+// pc and fc: c's p and liquid fraction.
+float projection_pressure_at(ivec3 c, float pc, float fc, int a, int side) {
+  ivec3 q = c;
+  q[a] += side;
+  if (q[a] < 0 || q[a] >= grid_cells()[a]) return pc + wall_ghost_rise_along(a, q[a]);
+  float fq = liquid_fraction(q);
+  if (fc >= k_surface_fraction && fq < k_surface_fraction) return pc * (1.0 - 1.0 / surface_distance(fc, fq));
+  return fetch_grid(u_potential, q).r;
+}
+#endif
+
 // Obstacle i's condition on the velocity at cell centre p: inside a static obstacle the liquid moves
 // with it; inside a dynamic one and within a cell of any surface, no relative velocity into it (a
 // body's force has no viscous part, so its inside may not drag the liquid along either:
@@ -61,7 +80,14 @@ vec3 grid_update(ivec3 c, vec4 splat) {
   bool fluid = splat.a > k_fluid_epsilon;
   vec3 velocity = fluid ? splat.rgb / splat.a : vec3(0.0);
 
-#if SPLAT_ADJOINT
+#if PROJECTION
+  // Central differences of the projection's p: the mean of the two faces' gradients.
+  vec3 grad_p = vec3(0.0);
+  float pc = fetch_grid(u_potential, c).r, fc = liquid_fraction(c);
+  [[unroll]] for (int a = 0; a < DIM; ++a)
+    grad_p[a] = projection_pressure_at(c, pc, fc, a, 1) - projection_pressure_at(c, pc, fc, a, -1);
+  MeshSample meshes = mesh_sample_at_cell(c, true);
+#elif SPLAT_ADJOINT
   // Central differences of Phi, with the hydrostatic ghost cells beyond the walls.
   vec3 grad_p = vec3(0.0);
   [[unroll]] for (int a = 0; a < DIM; ++a) grad_p[a] = potential_at(c, a, 1) - potential_at(c, a, -1);

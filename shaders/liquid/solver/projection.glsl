@@ -1,0 +1,25 @@
+// The pressure projection (scene key "projection_iterations" > 0): what its passes share. The liquid
+// fraction of a cell is the splat's density over rest density (with the walls' kernel coverage);
+// cells at or above k_surface_fraction are liquid, the others air, where the pressure is zero. The
+// free surface lies between a liquid cell and an air neighbour where the fraction crosses
+// k_surface_fraction (linear), and the pressure's zero is placed there (the ghost-fluid method,
+// Gibou et al. 2002). Include after common.glsl and pressure.glsl, with u_splat bound.
+#ifndef LIQUID_PROJECTION_GLSL
+#define LIQUID_PROJECTION_GLSL
+
+const float k_surface_fraction = 0.5;
+// The nearest the surface may be taken to a liquid cell's centre, in cells: closer, the ghost
+// pressure's weight 1/theta would let one noisy surface cell set its neighbours' pressure.
+const float k_min_surface_distance = 0.25;
+
+float liquid_fraction(ivec3 c) {
+  return u.density_scale * fetch_grid(u_splat, c).a / (cell_coverage(c) * u.rest_density);
+}
+
+// The distance, in cells, from the centre of liquid cell c (fraction fc) to the surface toward its
+// air neighbour (fraction fq < k_surface_fraction).
+float surface_distance(float fc, float fq) {
+  return max((fc - k_surface_fraction) / max(fc - fq, 1e-6), k_min_surface_distance);
+}
+
+#endif
