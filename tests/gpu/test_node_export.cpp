@@ -42,6 +42,15 @@ bool same_bits(const std::vector<glm::vec4>& a, const std::vector<glm::vec4>& b)
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec4)) == 0;
 }
 
+// The particles' velocities after a node of `scene` restored from `checkpoint` runs `steps` steps.
+std::vector<glm::vec4> velocities_resumed(const liquid::Scene& scene, const liquid::LiquidNode::Checkpoint& checkpoint,
+                                          int steps) {
+  liquid::LiquidNode node(test::gpu(), scene);
+  node.restore_checkpoint(checkpoint);
+  test::run_steps(node, steps);
+  return node.read_particles().velocities;
+}
+
 // Runs one frame that rebuilds the grids of the current particles (no step).
 void add_grids(liquid::LiquidNode& node) {
   engine::graph::RenderGraph graph(&test::gpu());
@@ -122,24 +131,18 @@ TEST_CASE("under the affine transfer a checkpoint carries the velocity gradients
   test::run_steps(first, 25);
   const liquid::ParticleSnapshot expected = first.read_particles();
 
-  liquid::LiquidNode second(test::gpu(), scene);
-  second.restore_checkpoint(saved);
-  test::run_steps(second, 25);
-  CHECK(same_bits(second.read_particles().velocities, expected.velocities));
+  CHECK(same_bits(velocities_resumed(scene, saved, 25), expected.velocities));
   // The gradients are state: restored as zero, the run differs.
   liquid::LiquidNode::Checkpoint flat = saved;
   std::fill(flat.affine.begin(), flat.affine.end(), glm::vec4(0.0f));
-  liquid::LiquidNode third(test::gpu(), scene);
-  third.restore_checkpoint(flat);
-  test::run_steps(third, 25);
-  CHECK_FALSE(same_bits(third.read_particles().velocities, expected.velocities));
+  CHECK_FALSE(same_bits(velocities_resumed(scene, flat, 25), expected.velocities));
   // A checkpoint of the chapter's transfer does not fit.
   liquid::LiquidNode::Checkpoint none = saved;
   none.affine.clear();
-  CHECK_THROWS_WITH(second.restore_checkpoint(none), Catch::Contains("does not match this scene"));
+  CHECK_THROWS_WITH(first.restore_checkpoint(none), Catch::Contains("does not match this scene"));
   liquid::LiquidNode::Checkpoint broken = saved;
   broken.affine[2].y = std::nanf("");
-  CHECK_THROWS_WITH(second.restore_checkpoint(broken),
+  CHECK_THROWS_WITH(first.restore_checkpoint(broken),
                     Catch::StartsWith("liquid: the checkpoint's velocity gradients hold a non-finite value (particle 2)"));
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
@@ -160,23 +163,17 @@ TEST_CASE("under the pressure projection a checkpoint carries its solution, and 
   test::run_steps(first, 25);
   const liquid::ParticleSnapshot expected = first.read_particles();
 
-  liquid::LiquidNode second(test::gpu(), scene);
-  second.restore_checkpoint(saved);
-  test::run_steps(second, 25);
-  CHECK(same_bits(second.read_particles().velocities, expected.velocities));
+  CHECK(same_bits(velocities_resumed(scene, saved, 25), expected.velocities));
   // The solution is state: restored as zero, the run differs.
   liquid::LiquidNode::Checkpoint flat = saved;
   std::fill(flat.pressure.begin(), flat.pressure.end(), 0.0f);
-  liquid::LiquidNode third(test::gpu(), scene);
-  third.restore_checkpoint(flat);
-  test::run_steps(third, 25);
-  CHECK_FALSE(same_bits(third.read_particles().velocities, expected.velocities));
+  CHECK_FALSE(same_bits(velocities_resumed(scene, flat, 25), expected.velocities));
   liquid::LiquidNode::Checkpoint none = saved;
   none.pressure.clear();
-  CHECK_THROWS_WITH(second.restore_checkpoint(none), Catch::Contains("does not match this scene"));
+  CHECK_THROWS_WITH(first.restore_checkpoint(none), Catch::Contains("does not match this scene"));
   liquid::LiquidNode::Checkpoint broken = saved;
   broken.pressure[2] = std::nanf("");
-  CHECK_THROWS_WITH(second.restore_checkpoint(broken),
+  CHECK_THROWS_WITH(first.restore_checkpoint(broken),
                     Catch::StartsWith("liquid: the checkpoint's pressure holds a non-finite value (texel 2)"));
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
