@@ -79,7 +79,8 @@ PressurePass::PressurePass(engine::vk::Context& context, const SolverVariant& va
 PressureImages PressurePass::create_images(engine::graph::RenderGraph& graph) const {
   const engine::vk::ImageDesc desc = variant_.layout.image_desc(k_pressure_format, 0);
   PressureImages images{graph.create_image("liquid.pressure", desc), graph.create_image("liquid.potential", desc), {}, {}};
-  if (variant_.pressure_scratch() || variant_.projection())  // the body force reads P after the spread; the iterations
+  // The body force reads P after the spread; the projection's iterations alternate with `potential`.
+  if (variant_.pressure_scratch() || variant_.projection())
     images.scratch = graph.create_image("liquid.potential_scratch", desc);
   if (projection_pressure_)
     images.phi = graph.import_image(projection_pressure_->name(), *projection_pressure_);
@@ -92,8 +93,8 @@ void PressurePass::add_projection_to(engine::graph::RenderGraph& graph, const en
   PressureImages& p = step.pressure;
   const GridCells cells{variant_, step.region, nearest_};
   using engine::graph::AttachmentOptions;
-  // The divergence into `pressure`, then the iterations from p.phi through `potential` and `pressure`'s
-  // partner `scratch`-less pair: the last writes p.phi again.
+  // The divergence into `pressure`; then the iterations, from p.phi (the last step's p) through
+  // `potential` and `scratch` in turn, the last one writing p.phi again.
   p.pressure = add_grid_cells_pass<ImageHandle>(
       graph, *divergence_, uniforms, cells,
       [&](engine::passes::PassBindings& bindings, PassBuilder& b, const AttachmentOptions& load) {
