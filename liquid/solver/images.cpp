@@ -34,7 +34,8 @@ void check_step_images(const StepImages& images, const SolverVariant& variant) {
   expect(images.mesh_field, variant.meshes, "mesh_field");
   expect(images.pressure.pressure, variant.splat_adjoint(), "pressure.pressure");
   expect(images.pressure.potential, variant.splat_adjoint(), "pressure.potential");
-  expect(images.pressure.scratch, variant.pressure_scratch() || variant.projection(), "pressure.scratch");
+  expect(images.pressure.scratch, variant.pressure_scratch(), "pressure.scratch");
+  expect(images.pressure.system, variant.projection(), "pressure.system");
 }
 
 }  // namespace liquid

@@ -41,6 +41,7 @@ struct GridImages {
 struct PressureImages {
   ImageHandle pressure, potential, scratch;
   ImageHandle phi;
+  ImageHandle system;  // the pressure projection's per cell: (h^2 div u* / dt, the diagonal's weight)
 };
 
 // One step's images, as the passes leave them: the splat stage writes `splat` (and `region`), the

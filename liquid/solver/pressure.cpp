@@ -53,12 +53,12 @@ PressurePass::PressurePass(engine::vk::Context& context, const SolverVariant& va
     engine::vk::GraphicsPipelineDesc divergence = grid_pipeline(
         "liquid.projection_divergence", variant, variant.shader(shaders::projection_divergence_frag),
         LIQUID_BINDING_PRESSURE_SPLAT, specialization);
+    divergence.color_formats = {k_projection_system_format};
     divergence_.emplace(context, divergence);
     engine::vk::GraphicsPipelineDesc jacobi = grid_pipeline(
         "liquid.projection_jacobi", variant, variant.shader(shaders::projection_jacobi_frag),
-        LIQUID_BINDING_PRESSURE_SPLAT, specialization);
-    jacobi.bindings.push_back({LIQUID_BINDING_PROJECTION_PRESSURE, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
-    jacobi.bindings.push_back({LIQUID_BINDING_PROJECTION_DIVERGENCE, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
+        LIQUID_BINDING_PROJECTION_PRESSURE, specialization);
+    jacobi.bindings.push_back({LIQUID_BINDING_PROJECTION_SYSTEM, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
     jacobi_.emplace(context, jacobi);
     constexpr VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
                                         VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
@@ -78,12 +78,14 @@ PressurePass::PressurePass(engine::vk::Context& context, const SolverVariant& va
 
 PressureImages PressurePass::create_images(engine::graph::RenderGraph& graph) const {
   const engine::vk::ImageDesc desc = variant_.layout.image_desc(k_pressure_format, 0);
-  PressureImages images{graph.create_image("liquid.pressure", desc), graph.create_image("liquid.potential", desc), {}, {}};
-  // The body force reads P after the spread; the projection's iterations alternate with `potential`.
-  if (variant_.pressure_scratch() || variant_.projection())
-    images.scratch = graph.create_image("liquid.potential_scratch", desc);
-  if (projection_pressure_)
+  PressureImages images{graph.create_image("liquid.pressure", desc), graph.create_image("liquid.potential", desc), {}, {}, {}};
+  // The body force reads P after the spread.
+  if (variant_.pressure_scratch()) images.scratch = graph.create_image("liquid.potential_scratch", desc);
+  if (projection_pressure_) {
     images.phi = graph.import_image(projection_pressure_->name(), *projection_pressure_);
+    images.system = graph.create_image("liquid.projection_system",
+                                       variant_.layout.image_desc(k_projection_system_format, 0));
+  }
   return images;
 }
 
@@ -93,24 +95,23 @@ void PressurePass::add_projection_to(engine::graph::RenderGraph& graph, const en
   PressureImages& p = step.pressure;
   const GridCells cells{variant_, step.region, nearest_};
   using engine::graph::AttachmentOptions;
-  // The divergence into `pressure`; then the iterations, from p.phi (the last step's p) through
-  // `potential` and `scratch` in turn, the last one writing p.phi again.
-  p.pressure = add_grid_cells_pass<ImageHandle>(
+  // The system into `system`; then the iterations, from p.phi (the last step's p) through
+  // `pressure` and `potential` in turn, the last one writing p.phi again.
+  p.system = add_grid_cells_pass<ImageHandle>(
       graph, *divergence_, uniforms, cells,
       [&](engine::passes::PassBindings& bindings, PassBuilder& b, const AttachmentOptions& load) {
         bindings.bind_image(b, LIQUID_BINDING_PRESSURE_SPLAT, step.splat, nearest_.handle());
-        return b.write(p.pressure, Access::ColorAttachmentWrite, load);
+        return b.write(p.system, Access::ColorAttachmentWrite, load);
       });
   ImageHandle source = p.phi;
   for (int i = 0; i < variant_.projection_iterations; ++i) {
     const bool last = i + 1 == variant_.projection_iterations;
-    ImageHandle& target = last ? p.phi : (i % 2 == 0 ? p.potential : p.scratch);
+    ImageHandle& target = last ? p.phi : (i % 2 == 0 ? p.pressure : p.potential);
     target = add_grid_cells_pass<ImageHandle>(
         graph, *jacobi_, uniforms, cells,
         [&](engine::passes::PassBindings& bindings, PassBuilder& b, const AttachmentOptions& load) {
-          bindings.bind_image(b, LIQUID_BINDING_PRESSURE_SPLAT, step.splat, nearest_.handle());
           bindings.bind_image(b, LIQUID_BINDING_PROJECTION_PRESSURE, source, nearest_.handle());
-          bindings.bind_image(b, LIQUID_BINDING_PROJECTION_DIVERGENCE, p.pressure, nearest_.handle());
+          bindings.bind_image(b, LIQUID_BINDING_PROJECTION_SYSTEM, p.system, nearest_.handle());
           return b.write(target, Access::ColorAttachmentWrite, load);
         });
     source = target;

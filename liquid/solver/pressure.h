@@ -24,6 +24,8 @@ namespace liquid {
 
 // R32F: the cells' pressure and its smoothed potential, m^2/s^2.
 constexpr VkFormat k_pressure_format = VK_FORMAT_R32_SFLOAT;
+// RG32F: the pressure projection's system, one cell's row of the Poisson equation.
+constexpr VkFormat k_projection_system_format = VK_FORMAT_R32G32_SFLOAT;
 
 class PressurePass {
  public:

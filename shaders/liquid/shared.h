@@ -86,9 +86,9 @@
 // Splat-adjoint pressure passes: the splat (pressure.frag), the cells' pressure (potential.frag).
 #define LIQUID_BINDING_PRESSURE_SPLAT 1
 #define LIQUID_BINDING_POTENTIAL_PRESSURE 1
-// The pressure projection's Jacobi passes: the last iterate and the divergence (and the splat at 1).
+// The pressure projection's Jacobi passes: the last iterate and the system (the divergence pass's).
 #define LIQUID_BINDING_PROJECTION_PRESSURE 2
-#define LIQUID_BINDING_PROJECTION_DIVERGENCE 3
+#define LIQUID_BINDING_PROJECTION_SYSTEM 3
 // The separable splat's and potential's passes along one axis: the grid they spread.
 #define LIQUID_BINDING_BLUR_SOURCE 1
 #define LIQUID_BINDING_BLUR_SOURCE_UPPER 2  // the 3D deposit's second grid (the z pass)

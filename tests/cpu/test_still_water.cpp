@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace liquid;
@@ -20,6 +21,22 @@ TEST_CASE("the surface level is the mean top particle of the middle columns plus
   // Half of the middle columns are 40 mm (top particle at 37.5 mm), half 50 mm (47.5 mm).
   CHECK(particle_surface_level(particles, length, s) == Approx(0.5 * (0.0375 + 0.0475) + 0.5 * s).epsilon(0.01));
   CHECK(std::isnan(particle_surface_level(ParticleSnapshot{}, length, s)));
+}
+
+TEST_CASE("the surface level's columns tile the middle of the tank with no sliver at its edges", "[still]") {
+  // Particle columns 4.5 mm apart, 40 mm deep, but the one at x = 51.5 mm, just inside the middle
+  // 80 % (from 50 mm), only 10 mm deep (its top layer drifted aside). Columns of the tank's own
+  // width (0.5 m / 55) would cut a 4.5 mm sliver at 50 mm holding that column alone; columns
+  // tiling the middle pair it with the next one, whose top stands at the level.
+  const double length = 0.5, s = 0.0045;
+  ParticleSnapshot particles;
+  for (double x = 0.002; x < length; x += s) {
+    const double top = std::abs(x - 0.0515) < 1e-6 ? 0.01 : 0.04;
+    for (double y = 0.5 * s; y < top; y += s) particles.positions.emplace_back(float(x), float(y), 0.0f, 1.0f);
+  }
+  double highest = 0.0;
+  for (const glm::vec4& p : particles.positions) highest = std::max(highest, double(p.y));
+  CHECK(particle_surface_level(particles, length, s) == Approx(highest + 0.5 * s).epsilon(1e-6));
 }
 
 TEST_CASE("the density profile's slope is read against hydrostatics", "[still]") {

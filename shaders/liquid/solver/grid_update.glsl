@@ -55,6 +55,25 @@ float projection_pressure_at(ivec3 c, float pc, float fc, int a, int side) {
   if (fc >= k_surface_fraction && fq < k_surface_fraction) return pc * (1.0 - 1.0 / surface_distance(fc, fq));
   return fetch_grid(u_potential, q).r;
 }
+
+// Twice the projection's dp/dx_a (in cells) at an air cell c (fraction fc) that borders the liquid
+// along axis a: across the surface between a liquid neighbour q and c, p falls from q's to 0 over
+// the distance theta, so dp/dx_a = side p_q / theta (the mean of both sides where both are liquid).
+// Without it the surface cell keeps only g dt, and the top particles, whose velocity blends it with
+// the liquid cell below, sink into the layer under them.
+float projection_air_gradient(ivec3 c, float fc, int a) {
+  float sum = 0.0, sides = 0.0;
+  [[unroll]] for (int side = -1; side <= 1; side += 2) {
+    ivec3 q = c;
+    q[a] += side;
+    if (q[a] < 0 || q[a] >= grid_cells()[a]) continue;
+    float fq = liquid_fraction(q);
+    if (fq < k_surface_fraction) continue;
+    sum += float(side) * fetch_grid(u_potential, q).r / surface_distance(fq, fc);
+    sides += 1.0;
+  }
+  return sides > 0.0 ? 2.0 * sum / sides : 0.0;
+}
 #endif
 
 // Obstacle i's condition on the velocity at cell centre p: inside a static obstacle the liquid moves
@@ -85,7 +104,9 @@ vec3 grid_update(ivec3 c, vec4 splat) {
   vec3 grad_p = vec3(0.0);
   float pc = fetch_grid(u_potential, c).r, fc = liquid_fraction(c);
   [[unroll]] for (int a = 0; a < DIM; ++a)
-    grad_p[a] = projection_pressure_at(c, pc, fc, a, 1) - projection_pressure_at(c, pc, fc, a, -1);
+    grad_p[a] = fc >= k_surface_fraction
+                    ? projection_pressure_at(c, pc, fc, a, 1) - projection_pressure_at(c, pc, fc, a, -1)
+                    : projection_air_gradient(c, fc, a);
   MeshSample meshes = mesh_sample_at_cell(c, true);
 #elif SPLAT_ADJOINT
   // Central differences of Phi, with the hydrostatic ghost cells beyond the walls.

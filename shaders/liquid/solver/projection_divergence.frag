@@ -1,8 +1,11 @@
 #version 450
-// Pressure projection, first pass: the divergence of the velocity the step would have without
-// pressure, u* = u + dt (g + f_ext), where u is the splat's. Face velocities are the means of the two
-// cells' (a cell the splat does not reach takes its neighbour's); a wall's face carries none.
-// Output: target 0 = div u* (1/s), in liquid cells; 0 in air.
+// Pressure projection, first pass: each liquid cell's row of the Poisson equation lap p = div u* / dt
+// that the Jacobi passes solve, where u* = u + dt (g + f_ext) is the velocity the step would have
+// without pressure (u the splat's). The divergence takes face velocities as the means of the two
+// cells' (a cell the splat does not reach takes its neighbour's); a wall's face carries none. The
+// row's diagonal counts 1 per liquid neighbour and 1/theta per air one (the ghost pressure
+// p (1 - 1/theta) that puts p = 0 on the surface: projection.glsl); a wall's face drops out.
+// Output: target 0 = (h^2 div u* / dt, the diagonal's weight) in liquid cells; (0, 0) in air.
 #extension GL_GOOGLE_include_directive : require
 #include "liquid/common.glsl"
 #include "liquid/solver/grid_fragment.glsl"
@@ -12,7 +15,7 @@ layout(set = 0, binding = LIQUID_BINDING_PRESSURE_SPLAT) uniform GRID_SAMPLER u_
 
 #include "liquid/solver/projection.glsl"
 
-layout(location = 0) out float out_divergence;
+layout(location = 0) out vec2 out_system;
 
 // u* at cell c, and whether the splat reaches it.
 bool provisional_velocity(ivec3 c, out vec3 velocity) {
@@ -23,25 +26,30 @@ bool provisional_velocity(ivec3 c, out vec3 velocity) {
 
 void main() {
   ivec3 c;
-  if (!grid_fragment_cell(c) || liquid_fraction(c) < k_surface_fraction) {
-    out_divergence = 0.0;
+  if (!grid_fragment_cell(c)) {
+    out_system = vec2(0.0);
+    return;
+  }
+  float fc = liquid_fraction(c);
+  if (fc < k_surface_fraction) {
+    out_system = vec2(0.0);
     return;
   }
   ivec3 n = grid_cells();
   vec3 here;
   provisional_velocity(c, here);
-  float divergence = 0.0;
+  float divergence = 0.0, weight = 0.0;
   [[unroll]] for (int a = 0; a < DIM; ++a) {
     [[unroll]] for (int side = -1; side <= 1; side += 2) {
       ivec3 q = c;
       q[a] += side;
-      float face = 0.0;  // a wall's
-      if (q[a] >= 0 && q[a] < n[a]) {
-        vec3 there;
-        face = provisional_velocity(q, there) ? 0.5 * (here[a] + there[a]) : here[a];
-      }
-      divergence += float(side) * face;
+      if (q[a] < 0 || q[a] >= n[a]) continue;  // a wall: no flow, no term
+      vec3 there;
+      divergence += float(side) * (provisional_velocity(q, there) ? 0.5 * (here[a] + there[a]) : here[a]);
+      float fq = liquid_fraction(q);
+      weight += fq >= k_surface_fraction ? 1.0 : 1.0 / surface_distance(fc, fq);
     }
   }
-  out_divergence = divergence / cell_size();
+  float h = cell_size();
+  out_system = vec2(h * divergence / u.dt, weight);  // h^2 (divergence / h) / dt
 }
