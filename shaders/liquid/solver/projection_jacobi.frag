@@ -4,7 +4,8 @@
 // then takes u' = u* - dt grad p. Each liquid cell's row comes from the divergence pass: walls drop
 // out (no flow through them, Neumann), air neighbours enter the diagonal only (p = 0 on the surface,
 // projection.glsl), so their p, which every iteration writes as 0, adds nothing to the sum. The
-// first iteration starts from the last step's p.
+// first iteration starts from the last step's p (where a cell has just turned to air, its old p
+// enters that one iteration's sum; the iterations after it read 0 there).
 // Output: target 0 = p (m^2/s^2); 0 in air.
 #extension GL_GOOGLE_include_directive : require
 #include "liquid/common.glsl"
