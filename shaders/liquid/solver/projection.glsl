@@ -12,9 +12,11 @@ const float k_surface_fraction = 0.5;
 // pressure's weight 1/theta would let one noisy surface cell set its neighbours' pressure.
 const float k_min_surface_distance = 0.25;
 
-float liquid_fraction(ivec3 c) {
-  return u.density_scale * fetch_grid(u_splat, c).a / (cell_coverage(c) * u.rest_density);
+// Of cell c whose splat is `splat` (for a pass that has read it already), and of cell c.
+float liquid_fraction(ivec3 c, vec4 splat) {
+  return u.density_scale * splat.a / (cell_coverage(c) * u.rest_density);
 }
+float liquid_fraction(ivec3 c) { return liquid_fraction(c, fetch_grid(u_splat, c)); }
 
 // The distance, in cells, from the centre of liquid cell c (fraction fc) to the surface toward its
 // air neighbour (fraction fq < k_surface_fraction).

@@ -17,11 +17,9 @@ layout(set = 0, binding = LIQUID_BINDING_PRESSURE_SPLAT) uniform GRID_SAMPLER u_
 
 layout(location = 0) out vec2 out_system;
 
-// u* at cell c, and whether the splat reaches it.
-bool provisional_velocity(ivec3 c, out vec3 velocity) {
-  vec4 s = fetch_grid(u_splat, c);
-  velocity = s.rgb / max(s.a, k_fluid_epsilon) + u.dt * (u.gravity + external_acceleration(cell_center(c)));
-  return s.a > k_fluid_epsilon;
+// u* at cell c whose splat is s.
+vec3 provisional_velocity(ivec3 c, vec4 s) {
+  return s.rgb / max(s.a, k_fluid_epsilon) + u.dt * (u.gravity + external_acceleration(cell_center(c)));
 }
 
 void main() {
@@ -30,23 +28,23 @@ void main() {
     out_system = vec2(0.0);
     return;
   }
-  float fc = liquid_fraction(c);
+  vec4 splat = fetch_grid(u_splat, c);
+  float fc = liquid_fraction(c, splat);
   if (fc < k_surface_fraction) {
     out_system = vec2(0.0);
     return;
   }
   ivec3 n = grid_cells();
-  vec3 here;
-  provisional_velocity(c, here);
+  vec3 here = provisional_velocity(c, splat);
   float divergence = 0.0, weight = 0.0;
   [[unroll]] for (int a = 0; a < DIM; ++a) {
     [[unroll]] for (int side = -1; side <= 1; side += 2) {
       ivec3 q = c;
       q[a] += side;
       if (q[a] < 0 || q[a] >= n[a]) continue;  // a wall: no flow, no term
-      vec3 there;
-      divergence += float(side) * (provisional_velocity(q, there) ? 0.5 * (here[a] + there[a]) : here[a]);
-      float fq = liquid_fraction(q);
+      vec4 s = fetch_grid(u_splat, q);  // one read for the face's velocity and q's fraction
+      divergence += float(side) * (s.a > k_fluid_epsilon ? 0.5 * (here[a] + provisional_velocity(q, s)[a]) : here[a]);
+      float fq = liquid_fraction(q, s);
       weight += fq >= k_surface_fraction ? 1.0 : 1.0 / surface_distance(fc, fq);
     }
   }
