@@ -180,7 +180,7 @@ struct Checkpoint {
   std::vector<glm::vec4> positions, velocities;  // the whole particle textures, inactive texels too
   std::vector<glm::vec4> affine;                 // the affine transfer's C_p textures, one after another
   std::vector<glm::vec4> bodies;                 // the body-state texture (dynamic obstacles' state)
-  std::vector<float> pressure;                   // the pressure projection's p per texel of its grid (empty without)
+  std::vector<float> pressure;                   // the pressure projection's (p, psi) per texel of its grid (empty without)
   std::vector<glm::vec4> whitewater;  // the secondary particles' textures, positions then velocities (empty without)
 };
 

@@ -23,6 +23,13 @@ std::vector<engine::vk::DescriptorBinding> grid_bindings(const SolverVariant& va
   return bindings;
 }
 
+// (u', fluid flag) and rho / rho0, and under the pressure projection the density correction.
+std::vector<VkFormat> grid_formats(const SolverVariant& variant) {
+  std::vector<VkFormat> formats{k_grid_velocity_format, k_density_format};
+  if (variant.projection()) formats.push_back(k_density_correction_format);
+  return formats;
+}
+
 }  // namespace
 
 GridPass::GridPass(engine::vk::Context& context, const SolverVariant& variant,
@@ -34,7 +41,7 @@ GridPass::GridPass(engine::vk::Context& context, const SolverVariant& variant,
                     .vertex = grid_pass_shaders(variant).vertex,
                     .geometry = grid_pass_shaders(variant).geometry,
                     .fragment = variant.shader(shaders::grid_frag),
-                    .color_formats = {k_grid_velocity_format, k_density_format},
+                    .color_formats = grid_formats(variant),
                     .bindings = grid_bindings(variant),
                     .specialization = specialization}),
       nearest_(context, VK_FILTER_NEAREST),
@@ -52,9 +59,17 @@ void GridPass::add_to(engine::graph::RenderGraph& graph, const engine::vk::Unifo
         if (variant_.splat_adjoint())
           bindings.bind_image(b, LIQUID_BINDING_GRID_POTENTIAL, step.pressure.phi, nearest_.handle());
         bind_mesh_field(bindings, b, step.mesh_field, nearest_);
-        return GridImages{b.write(step.grids.velocity, Access::ColorAttachmentWrite, load),
-                          b.write(step.grids.density, Access::ColorAttachmentWrite, load)};
+        GridImages written{b.write(step.grids.velocity, Access::ColorAttachmentWrite, load),
+                           b.write(step.grids.density, Access::ColorAttachmentWrite, load), {}};
+        if (variant_.projection())
+          written.correction = b.write(step.grids.correction, Access::ColorAttachmentWrite, load);
+        return written;
       });
+}
+
+ImageHandle GridPass::create_correction(engine::graph::RenderGraph& graph) const {
+  if (!variant_.projection()) return {};
+  return graph.create_image("liquid.density_correction", variant_.layout.image_desc(k_density_correction_format, 0));
 }
 
 }  // namespace liquid

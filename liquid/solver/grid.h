@@ -1,6 +1,7 @@
 // Section 4, the grid pass: one full-screen pass over the grid (one layer per slice in 3D) that
 // turns the splat into density and pressure, takes the pressure's finite-difference gradient, adds
-// gravity, external forces and the obstacles' pressure, and enforces the walls.
+// gravity, external forces and the obstacles' pressure, and enforces the walls. Under the pressure
+// projection it also writes the density correction that moves the particles (projection.glsl).
 // Shader: shaders/liquid/solver/grid.frag.
 #pragma once
 
@@ -23,6 +24,10 @@ class GridPass {
   // shapes, the mesh field (with meshes) and the active region (with one); writes the updated
   // velocity (u', fluid flag) and rho / rho0 into `step.grids`.
   void add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms, StepImages& step) const;
+
+  // Under the pressure projection the step's image for the density correction the pass also writes
+  // (GridImages::correction), a transient of `graph`; an invalid handle without.
+  ImageHandle create_correction(engine::graph::RenderGraph& graph) const;
 
  private:
   engine::vk::GraphicsPipeline pipeline_;

@@ -28,6 +28,7 @@ void check_step_images(const StepImages& images, const SolverVariant& variant) {
   expect(images.splat, true, "splat");
   expect(images.grids.velocity, true, "grids.velocity");
   expect(images.grids.density, true, "grids.density");
+  expect(images.grids.correction, variant.projection(), "grids.correction");
   expect(images.bodies, true, "bodies");
   expect(images.body_targets, true, "body_targets");
   expect(images.body_shapes, true, "body_shapes");

@@ -31,8 +31,9 @@ struct WhitewaterImages {
 };
 
 struct GridImages {
-  ImageHandle velocity;  // (u', fluid flag)
-  ImageHandle density;   // rho / rho0
+  ImageHandle velocity;    // (u', fluid flag)
+  ImageHandle density;     // rho / rho0
+  ImageHandle correction;  // the pressure projection's density correction, -grad psi (m), a transient
 };
 
 // The splat-adjoint pressure's grids (liquid/solver/pressure.h): the cells' pressure P, the

@@ -24,6 +24,8 @@ std::vector<engine::vk::DescriptorBinding> particle_bindings(const SolverVariant
       {LIQUID_BINDING_PARTICLE_DEPOSIT, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
       {LIQUID_BINDING_PARTICLE_DEPOSIT_UPPER, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT},
       {LIQUID_BINDING_BODIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT}};
+  if (variant.projection())
+    bindings.push_back({LIQUID_BINDING_PARTICLE_CORRECTION, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
   add_body_shapes_binding(bindings, VK_SHADER_STAGE_FRAGMENT_BIT);
   add_mesh_field_binding(variant.meshes, bindings);
   return bindings;
@@ -73,6 +75,7 @@ void ParticleUpdatePass::add_to(engine::graph::RenderGraph& graph, const engine:
         bindings.bind_image(b, LIQUID_BINDING_PARTICLE_DEPOSIT_UPPER,
                             correct && step.deposit_upper.valid() ? step.deposit_upper : step.splat, s);
         bindings.bind_image(b, LIQUID_BINDING_BODIES, step.bodies, s);
+        if (variant_.projection()) bindings.bind_image(b, LIQUID_BINDING_PARTICLE_CORRECTION, step.grids.correction, s);
         bind_body_shapes(bindings, b, step.body_shapes, linear_);
         bind_mesh_field(bindings, b, step.mesh_field, linear_);
         ParticleImages written{b.write(step.particle_targets.positions, Access::ColorAttachmentWrite),

@@ -59,10 +59,11 @@ PressurePass::PressurePass(engine::vk::Context& context, const SolverVariant& va
         "liquid.projection_jacobi", variant, variant.shader(shaders::projection_jacobi_frag),
         LIQUID_BINDING_PROJECTION_PRESSURE, specialization);
     jacobi.bindings.push_back({LIQUID_BINDING_PROJECTION_SYSTEM, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
+    jacobi.color_formats = {k_projection_pressure_format};
     jacobi_.emplace(context, jacobi);
     constexpr VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
                                         VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    const engine::vk::ImageDesc desc = variant.layout.image_desc(k_pressure_format, usage);
+    const engine::vk::ImageDesc desc = variant.layout.image_desc(k_projection_pressure_format, usage);
     projection_pressure_.emplace(context, desc, "liquid.projection_pressure");
     const std::vector<std::byte> zeros(size_t(desc.width) * desc.height * desc.depth_or_layers *
                                        engine::vk::format_texel_size(desc.format));
@@ -77,7 +78,9 @@ PressurePass::PressurePass(engine::vk::Context& context, const SolverVariant& va
 }
 
 PressureImages PressurePass::create_images(engine::graph::RenderGraph& graph) const {
-  const engine::vk::ImageDesc desc = variant_.layout.image_desc(k_pressure_format, 0);
+  // Under the projection the two are its Jacobi iterations' ping-pong.
+  const engine::vk::ImageDesc desc =
+      variant_.layout.image_desc(projection_pressure_ ? k_projection_pressure_format : k_pressure_format, 0);
   PressureImages images{graph.create_image("liquid.pressure", desc), graph.create_image("liquid.potential", desc), {}, {}, {}};
   // The body force reads P after the spread.
   if (variant_.pressure_scratch()) images.scratch = graph.create_image("liquid.potential_scratch", desc);

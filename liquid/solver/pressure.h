@@ -16,6 +16,7 @@
 #include "liquid/solver/separable_blur.h"
 #include "liquid/solver/variant.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -24,8 +25,12 @@ namespace liquid {
 
 // R32F: the cells' pressure and its smoothed potential, m^2/s^2.
 constexpr VkFormat k_pressure_format = VK_FORMAT_R32_SFLOAT;
-// RG32F: the pressure projection's system, one cell's row of the Poisson equation.
-constexpr VkFormat k_projection_system_format = VK_FORMAT_R32G32_SFLOAT;
+// RGBA32F: the pressure projection's system, one cell's rows of its two Poisson equations (the
+// pressure's and the density correction's, which share the diagonal).
+constexpr VkFormat k_projection_system_format = VK_FORMAT_R32G32B32A32_SFLOAT;
+// RG32F: the pressure projection's solution (p in m^2/s^2, the density correction's psi in m^2).
+constexpr VkFormat k_projection_pressure_format = VK_FORMAT_R32G32_SFLOAT;
+constexpr size_t k_projection_pressure_channels = 2;
 
 class PressurePass {
  public:

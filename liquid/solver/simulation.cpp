@@ -168,7 +168,7 @@ LiquidImages Simulation::add_to(engine::graph::RenderGraph& graph, int steps) {
   step.particles = particles(s.current);
   step.particle_targets = particles(1 - s.current);
   step.splat = import(s.splat);
-  step.grids = {import(s.grid_velocity), import(s.density)};
+  step.grids = {import(s.grid_velocity), import(s.density), grid_->create_correction(graph)};
   if (pressure_) step.pressure = pressure_->create_images(graph);
   step.bodies = import(s.bodies[s.body_current]);
   step.body_targets = import(s.bodies[1 - s.body_current]);
@@ -231,7 +231,7 @@ LiquidImages Simulation::add_grids_to(engine::graph::RenderGraph& graph, const L
   StepImages step;
   step.particles = {images.positions, images.velocities, affine_handles_};
   step.splat = images.splat;
-  step.grids = {images.grid_velocity, images.density};
+  step.grids = {images.grid_velocity, images.density, grid_->create_correction(graph)};
   if (pressure_) step.pressure = pressure_->create_images(graph);
   step.bodies = images.bodies;
   step.body_shapes = body_shapes_handle_;

@@ -106,9 +106,9 @@ class Simulation {
  private:
   // Refuses a checkpoint whose values no run reaches (ArgumentError naming the value).
   void check_checkpoint_values(const Checkpoint& checkpoint) const;
-  // The pressure projection's kept solution (null without) and its texel count (0 without).
+  // The pressure projection's kept solution (null without) and its float count (0 without).
   engine::vk::Image* projection_pressure() const;
-  size_t projection_texels() const;
+  size_t projection_values() const;
   // The step's splat, pressure and grid passes (the splat-adjoint pressure's when the variant has it).
   // `stepping` false: the grids for a view at the current time (dt 0), which change no state.
   void add_grid_passes(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& slice, StepImages& step,

@@ -16,9 +16,9 @@ engine::vk::Image* Simulation::projection_pressure() const {
   return pressure_ ? pressure_->projection_pressure() : nullptr;
 }
 
-size_t Simulation::projection_texels() const {
+size_t Simulation::projection_values() const {
   const engine::vk::Image* p = projection_pressure();
-  return p ? size_t(p->desc().width) * p->desc().height * p->desc().depth_or_layers : 0;
+  return p ? size_t(p->desc().width) * p->desc().height * p->desc().depth_or_layers * k_projection_pressure_channels : 0;
 }
 
 Checkpoint Simulation::save_checkpoint() {
@@ -41,7 +41,7 @@ Checkpoint Simulation::save_checkpoint() {
                                   size_t(bodies.desc().width) * bodies.desc().height);
   if (whitewater_) c.whitewater = whitewater_->save();
   if (engine::vk::Image* p = projection_pressure())
-    c.pressure = texels_as<float>(engine::graph::download_image(context_, *p), projection_texels());
+    c.pressure = texels_as<float>(engine::graph::download_image(context_, *p), projection_values());
   return c;
 }
 
@@ -66,7 +66,8 @@ void Simulation::check_checkpoint_values(const Checkpoint& c) const {
     if (!finite(glm::vec3(c.bodies[i])) || !std::isfinite(c.bodies[i].w))
       refuse("body state holds a non-finite value (texel " + std::to_string(i) + ")");
   for (size_t i = 0; i < c.pressure.size(); ++i)
-    if (!std::isfinite(c.pressure[i])) refuse("pressure holds a non-finite value (texel " + std::to_string(i) + ")");
+    if (!std::isfinite(c.pressure[i]))
+      refuse("pressure holds a non-finite value (texel " + std::to_string(i / k_projection_pressure_channels) + ")");
   // The active particles' C_p (the texels past them are never read).
   const size_t texels = c.positions.size();
   for (size_t i = 0; i < c.affine.size(); ++i)
@@ -91,7 +92,7 @@ void Simulation::restore_checkpoint(const Checkpoint& c) {
   const engine::vk::ImageDesc& body_desc = state_->bodies[0].desc();
   if (c.positions.size() != texels || c.velocities.size() != texels || c.emitted.size() != scene_.emitters.size() ||
       c.poses.size() != scene_.obstacles.size() || c.bodies.size() != size_t(body_desc.width) * body_desc.height ||
-      c.affine.size() != texels * state_->affine[0].size() || c.pressure.size() != projection_texels())
+      c.affine.size() != texels * state_->affine[0].size() || c.pressure.size() != projection_values())
     throw ArgumentError("liquid: the checkpoint does not match this scene (" + std::to_string(c.positions.size()) +
                         " particle texels, " + std::to_string(c.emitted.size()) + " emitters, " +
                         std::to_string(c.poses.size()) + " obstacles; the scene has " + std::to_string(texels) +

@@ -24,6 +24,8 @@ namespace liquid {
 constexpr VkFormat k_particle_format = VK_FORMAT_R32G32B32A32_SFLOAT;  // positions and velocities
 constexpr VkFormat k_grid_velocity_format = VK_FORMAT_R32G32B32A32_SFLOAT;
 constexpr VkFormat k_density_format = VK_FORMAT_R16_SFLOAT;  // rho / rho0, for rendering
+// The pressure projection's density correction per cell, -grad psi (m; projection.glsl).
+constexpr VkFormat k_density_correction_format = VK_FORMAT_R32G32B32A32_SFLOAT;
 constexpr VkFormat k_body_format = VK_FORMAT_R32G32B32A32_SFLOAT;  // body state, the liquid's force and torque
 
 // The splat's format for a scene's `requested` one and what the device can blend into. Auto takes

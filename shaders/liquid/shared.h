@@ -101,6 +101,8 @@
 // particle pass's fine density for the position correction. 3D: its upper slices' shares too.
 #define LIQUID_BINDING_PARTICLE_DEPOSIT 6
 #define LIQUID_BINDING_PARTICLE_DEPOSIT_UPPER 10
+// Under the pressure projection: the grid pass's density correction, -grad psi (projection.glsl).
+#define LIQUID_BINDING_PARTICLE_CORRECTION 11
 // The particle pass's own specialization constant, after the scene's (liquid/solver/specialization.h):
 // whether it runs the position correction.
 #define LIQUID_PARTICLE_POSITION_CORRECTION_ID 13

@@ -157,7 +157,7 @@ TEST_CASE("under the pressure projection a checkpoint carries its solution, and 
   liquid::LiquidNode first(test::gpu(), scene);
   test::run_steps(first, 25);
   const liquid::LiquidNode::Checkpoint saved = first.save_checkpoint();
-  REQUIRE(saved.pressure.size() == 32u * 24u);  // the grid's cells
+  REQUIRE(saved.pressure.size() == 2u * 32u * 24u);  // the grid's cells' (p, psi)
   REQUIRE(std::any_of(saved.pressure.begin(), saved.pressure.end(), [](float p) { return p > 0.0f; }));
   add_grids(first);  // what a view asks for between two frames
   test::run_steps(first, 25);
@@ -172,7 +172,7 @@ TEST_CASE("under the pressure projection a checkpoint carries its solution, and 
   none.pressure.clear();
   CHECK_THROWS_WITH(first.restore_checkpoint(none), Catch::Contains("does not match this scene"));
   liquid::LiquidNode::Checkpoint broken = saved;
-  broken.pressure[2] = std::nanf("");
+  broken.pressure[5] = std::nanf("");  // texel 2's psi
   CHECK_THROWS_WITH(first.restore_checkpoint(broken),
                     Catch::StartsWith("liquid: the checkpoint's pressure holds a non-finite value (texel 2)"));
   REQUIRE_NO_VALIDATION_MESSAGES();

@@ -307,24 +307,35 @@ TEST_CASE("the pressure projection keeps a sloshing tank's period and its motion
 namespace {
 
 // The sloshing tank filled flat (liquid_validate's still water) with `physics`'s liquid: its surface
-// from the particles at `times`.
-std::vector<double> still_levels(const liquid::Scene& physics, int dimension, liquid::GridPath path,
-                                 std::vector<double> times) {
+// from the particles at `times`, the density profile below it at the last, and the depth the
+// particles fill at rest density.
+struct StillWater {
+  std::vector<double> levels;
+  liquid::DensityProfile profile;
+  double rest_depth = 0.0;
+};
+StillWater still_water(const liquid::Scene& physics, int dimension, liquid::GridPath path, std::vector<double> times) {
   const liquid::SloshingTank tank = liquid::sloshing_tank(dimension, 64);
   const double still = liquid::tank_still_depth(physics, tank);
   const liquid::Scene scene = liquid::tank_scene(physics, tank, [&](double) { return still; });
   liquid::LiquidNode node(dimension == 3 ? test::gpu_for(path) : test::gpu(), scene,
                           dimension == 3 ? test::options_for(path) : liquid::LiquidOptions{});
-  const double dt = simulation_of(node).setup().time_step;
-  std::vector<double> levels;
+  const liquid::SimulationSetup& setup = simulation_of(node).setup();
+  StillWater out;
+  out.rest_depth = liquid::settled_depth(scene, size_t(setup.initial_particles));
   int done = 0;
   for (double t : times) {
-    const int to = int(std::lround(t / dt));
+    const int to = int(std::lround(t / setup.time_step));
     test::run_steps(node, to - done);
     done = to;
-    levels.push_back(liquid::particle_surface_level(node.read_particles(), tank.length, scene.particle_spacing));
+    out.levels.push_back(liquid::particle_surface_level(node.read_particles(), tank.length, scene.particle_spacing));
   }
-  return levels;
+  out.profile = liquid::density_profile(node.read_density_ratio(), setup, out.levels.back());
+  return out;
+}
+std::vector<double> still_levels(const liquid::Scene& physics, int dimension, liquid::GridPath path,
+                                 std::vector<double> times) {
+  return still_water(physics, dimension, path, std::move(times)).levels;
 }
 
 // The same in rest_pool_2d's regime with the given position correction.
@@ -358,17 +369,24 @@ TEST_CASE("the position correction keeps a pool's surface where it settled", "[g
 
 // docs/physics.md, "A pressure projection": the projection's pressure holds the surface cell's
 // particles too (its gradient across the surface reaches the air cell above), so a pool at rest
-// keeps its level and its top layer. Measured 2026-12-07: 97.27 mm at 1 s and at 3 s (without the
-// gradient in the air cell 93.5 mm at 1 s, the top layer sunk into the one below, and 92.3 mm at
-// 3 s).
-TEST_CASE("under the pressure projection a pool at rest keeps its level", "[gpu][liquid][physics][projection][still]") {
+// keeps its level and its top layer; its density correction spreads the particles to rest density,
+// so the liquid below the surface is not denser at the bottom and fills the depth its mass makes at
+// rest density. Measured 2026-12-07 (1 s, 3 s): without the correction 97.27 mm at both, the depth
+// at rest density 98.29 mm, the density slope 2.8 times the pressure law's; with it 98.00 and
+// 98.03 mm, the slope -0.0002 /m against the law's 0.20 /m.
+TEST_CASE("under the pressure projection a pool at rest keeps its level and its density", "[gpu][liquid][physics][projection][still]") {
   liquid::Scene physics = test::shipped_scene("rest_pool_2d");
   physics.projection_iterations = 40;
   physics.pic_ratio = 0.002f;
-  const std::vector<double> levels = still_levels(physics, 2, liquid::GridPath::VertexLayer, {1.0, 3.0});
+  const StillWater still = still_water(physics, 2, liquid::GridPath::VertexLayer, {1.0, 3.0});
+  const std::vector<double>& levels = still.levels;
   const double depth = 0.1;
-  INFO("surface " << 1e3 * levels[0] << " mm at 1 s, " << 1e3 * levels[1] << " mm at 3 s");
-  CHECK(std::abs(levels[0] - levels[1]) < 0.005 * depth);  // the target: 0.5 % of the depth
-  CHECK(levels[0] > 0.96 * depth);                         // the top layer not sunk either
+  INFO("surface " << 1e3 * levels[0] << " mm at 1 s, " << 1e3 * levels[1] << " mm at 3 s, "
+                  << 1e3 * still.rest_depth << " mm at rest density; density slope " << still.profile.slope
+                  << " /m over " << still.profile.rows << " rows, the pressure law's " << still.profile.hydrostatic);
+  CHECK(std::abs(levels[0] - levels[1]) < 0.005 * depth);             // the target: 0.5 % of the depth
+  CHECK(std::abs(levels[1] - still.rest_depth) < 0.005 * depth);      // neither packed nor spread
+  REQUIRE(still.profile.rows >= 4);
+  CHECK(std::abs(still.profile.slope) < 0.1 * still.profile.hydrostatic);  // the target: incompressible
   REQUIRE_NO_VALIDATION_MESSAGES();
 }

@@ -34,9 +34,9 @@ uint64_t fingerprint(std::string_view text);
 
 // The largest checkpoint.bin read back: 2^26 particles of five vec4 textures (position, velocity and
 // the affine transfer's three of C_p) and two per whitewater slot (at most 8 a particle), the
-// pressure projection's grid of up to 2^28 floats (a 645^3 grid), and the table.
+// pressure projection's grid of up to 2^29 floats (p and psi of a 645^3 grid), and the table.
 inline constexpr std::uintmax_t k_max_checkpoint_bytes =
-    (std::uintmax_t(1) << 26) * (80 + 8 * 32) + (std::uintmax_t(1) << 28) * 4 + (std::uintmax_t(256) << 20);
+    (std::uintmax_t(1) << 26) * (80 + 8 * 32) + (std::uintmax_t(1) << 29) * 4 + (std::uintmax_t(256) << 20);
 
 // Throws std::runtime_error naming `source` when the checkpoint disagrees with the run recorded in
 // capture.json: its frame outside the plan, its clock not at that frame's time, or its table not

@@ -10,8 +10,10 @@
 // SPLAT_ADJOINT (the scene's "pressure_force": "splat_adjoint"): the gradient is taken of the
 // potential Phi = W^T P that potential.frag smoothed from pressure.frag's P with the splat's own
 // kernel, which makes the pressure force the gradient of an energy (docs/physics.md).
-// Outputs: target 0 = (u', fluid flag), target 1 = rho / rho0 (for rendering and diagnostics). The
-// update itself is grid_update.glsl's.
+// PROJECTION (the scene's "projection_iterations"): the gradient is the pressure projection's p's, and
+// the pass also writes the density correction's step -grad psi that moves the particles (projection.glsl).
+// Outputs: target 0 = (u', fluid flag), target 1 = rho / rho0 (for rendering and diagnostics),
+// PROJECTION: target 2 = (-grad psi (m), 0). The update itself is grid_update.glsl's.
 #extension GL_GOOGLE_include_directive : require
 #define LIQUID_BODIES
 #include "liquid/common.glsl"
@@ -20,15 +22,25 @@
 
 layout(location = 0) out vec4 out_velocity;
 layout(location = 1) out float out_density;
+#if PROJECTION
+layout(location = 2) out vec4 out_correction;
+#endif
 
 void main() {
   ivec3 c;
   if (!grid_fragment_cell(c)) {
     out_velocity = vec4(0.0);
     out_density = 0.0;
+#if PROJECTION
+    out_correction = vec4(0.0);
+#endif
     return;
   }
   vec4 splat = fetch_grid(u_splat, c);
-  out_velocity = vec4(grid_update(c, splat), splat.a > k_fluid_epsilon ? 1.0 : 0.0);
+  vec3 correction;
+  out_velocity = vec4(grid_update(c, splat, correction), splat.a > k_fluid_epsilon ? 1.0 : 0.0);
+#if PROJECTION
+  out_correction = vec4(correction, 0.0);
+#endif
   out_density = u.density_scale * splat.a / u.rest_density;
 }

@@ -43,17 +43,17 @@ float potential_at(ivec3 c, int a, int offset) {
 
 #if PROJECTION
 #include "liquid/solver/projection.glsl"
-// The projection's p (in u_potential) at the neighbour `side` (-1 or 1) cells from c along axis a,
-// as the difference at c needs it: beyond a wall the hydrostatic ghost, across the free surface from
-// a liquid cell the ghost-fluid value that puts p = 0 on the surface (projection_jacobi.frag).
-// pc and fc: c's p and liquid fraction.
-float projection_pressure_at(ivec3 c, float pc, float fc, int a, int side) {
+// The projection's (p, psi) (in u_potential) at the neighbour `side` (-1 or 1) cells from c along
+// axis a, as the difference at c needs them: beyond a wall p's hydrostatic ghost and psi's own (no
+// flow through it), across the free surface from a liquid cell the ghost-fluid values that put
+// p = psi = 0 on the surface (projection_jacobi.frag). sc and fc: c's (p, psi) and liquid fraction.
+vec2 projection_solution_at(ivec3 c, vec2 sc, float fc, int a, int side) {
   ivec3 q = c;
   q[a] += side;
-  if (q[a] < 0 || q[a] >= grid_cells()[a]) return pc + wall_ghost_rise_along(a, q[a]);
+  if (q[a] < 0 || q[a] >= grid_cells()[a]) return vec2(sc.x + wall_ghost_rise_along(a, q[a]), sc.y);
   float fq = liquid_fraction(q);
-  if (fc >= k_surface_fraction && fq < k_surface_fraction) return pc * (1.0 - 1.0 / surface_distance(fc, fq));
-  return fetch_grid(u_potential, q).r;
+  if (fc >= k_surface_fraction && fq < k_surface_fraction) return sc * (1.0 - 1.0 / surface_distance(fc, fq));
+  return fetch_grid(u_potential, q).rg;
 }
 
 // Twice the projection's dp/dx_a (in cells) at an air cell c (fraction fc) that borders the liquid
@@ -91,8 +91,10 @@ vec3 obstacle_condition(int i, vec3 p, vec3 velocity, MeshSample meshes) {
 }
 
 // u' of cell c whose splat is `splat`: the splatted velocity, accelerated by -grad P + g + f_ext
-// over dt, then no flow through the walls or into obstacles.
-vec3 grid_update(ivec3 c, vec4 splat) {
+// over dt, then no flow through the walls or into obstacles. Under the pressure projection also
+// `correction`, the density correction's step -grad psi (m) in a liquid cell (0 elsewhere, and
+// without the projection).
+vec3 grid_update(ivec3 c, vec4 splat, out vec3 correction) {
   ivec3 n = grid_cells();
   float h = cell_size();
   float dt = u.dt;
@@ -100,20 +102,29 @@ vec3 grid_update(ivec3 c, vec4 splat) {
   vec3 velocity = fluid ? splat.rgb / splat.a : vec3(0.0);
 
 #if PROJECTION
-  // Central differences of the projection's p: the mean of the two faces' gradients.
-  vec3 grad_p = vec3(0.0);
-  float pc = fetch_grid(u_potential, c).r, fc = liquid_fraction(c);
-  [[unroll]] for (int a = 0; a < DIM; ++a)
-    grad_p[a] = fc >= k_surface_fraction
-                    ? projection_pressure_at(c, pc, fc, a, 1) - projection_pressure_at(c, pc, fc, a, -1)
-                    : projection_air_gradient(c, fc, a);
+  // Central differences of the projection's p and psi: the mean of the two faces' gradients.
+  vec3 grad_p = vec3(0.0), grad_psi = vec3(0.0);
+  vec2 sc = fetch_grid(u_potential, c).rg;
+  float fc = liquid_fraction(c);
+  [[unroll]] for (int a = 0; a < DIM; ++a) {
+    if (fc >= k_surface_fraction) {
+      vec2 difference = projection_solution_at(c, sc, fc, a, 1) - projection_solution_at(c, sc, fc, a, -1);
+      grad_p[a] = difference.x;
+      grad_psi[a] = difference.y;
+    } else {
+      grad_p[a] = projection_air_gradient(c, fc, a);
+    }
+  }
+  correction = -grad_psi / (2.0 * h);
   MeshSample meshes = mesh_sample_at_cell(c, true);
 #elif SPLAT_ADJOINT
+  correction = vec3(0.0);
   // Central differences of Phi, with the hydrostatic ghost cells beyond the walls.
   vec3 grad_p = vec3(0.0);
   [[unroll]] for (int a = 0; a < DIM; ++a) grad_p[a] = potential_at(c, a, 1) - potential_at(c, a, -1);
   MeshSample meshes = mesh_sample_at_cell(c, true);
 #else
+  correction = vec3(0.0);
   // Wall coverage is a product over the axes, so each neighbour's is the centre's with one factor
   // swapped: 3 factors per axis instead of a full product per neighbour.
   vec3 below = vec3(1.0), here = vec3(1.0), above = vec3(1.0);
@@ -169,6 +180,10 @@ vec3 grid_update(ivec3 c, vec4 splat) {
   velocity.z = 0.0;
 #endif
   return velocity;
+}
+vec3 grid_update(ivec3 c, vec4 splat) {
+  vec3 unused;
+  return grid_update(c, splat, unused);
 }
 
 #endif

@@ -7,7 +7,8 @@
 //   x_mid = x_p + dt/2 u'(x_p),  x_p' = x_p + dt u'(x_mid)
 // (the chapter's printed formula drops x_p from both lines). Texels past the active count are
 // inactive (w = 0); texels in an emitter's range this step are spawned at its nozzle. Under the
-// affine transfer (AFFINE) it also writes C_p, the gradient of u' at x_p.
+// affine transfer (AFFINE) it also writes C_p, the gradient of u' at x_p. Under the pressure
+// projection (PROJECTION) the particle then moves by its density correction, -grad psi.
 #extension GL_GOOGLE_include_directive : require
 #define LIQUID_BODIES
 #include "liquid/common.glsl"
@@ -22,6 +23,9 @@ layout(set = 0, binding = LIQUID_BINDING_PARTICLE_DEPOSIT_UPPER) uniform GRID_SA
 // A constant, not a branch on the uniform: with `if (u.position_correction > 0.0)` lavapipe (Mesa
 // 22.3) grew by 1.5 MB a step, whatever the value (it specializes shaders on uniforms that branches read).
 layout(constant_id = LIQUID_PARTICLE_POSITION_CORRECTION_ID) const bool POSITION_CORRECTION = false;
+#if PROJECTION
+layout(set = 0, binding = LIQUID_BINDING_PARTICLE_CORRECTION) uniform GRID_SAMPLER u_correction;  // -grad psi
+#endif
 
 layout(location = 0) in vec2 v_uv;
 layout(location = 0) out vec4 out_position;
@@ -72,6 +76,12 @@ float fine_excess(ivec3 c) {
   return max(fine - max(coarse, 1.0), 0.0);
 }
 
+// A correction's step, at most a quarter cell long.
+vec3 quarter_cell_at_most(vec3 step_) {
+  float length_ = length(step_), most = 0.25 * cell_size();
+  return length_ > most ? step_ * (most / length_) : step_;
+}
+
 // The position correction: down the gradient of the bilinear interpolant of fine_excess(), scaled
 // by beta h^2, at most a quarter cell.
 vec3 position_correction(vec3 x) {
@@ -89,10 +99,27 @@ vec3 position_correction(vec3 x) {
 #if DIM == 2
   gradient.z = 0.0;
 #endif
-  vec3 step_ = -u.position_correction * cell_size() * gradient;  // gradient is per cell
-  float length_ = length(step_), most = 0.25 * cell_size();
-  return length_ > most ? step_ * (most / length_) : step_;
+  return quarter_cell_at_most(-u.position_correction * cell_size() * gradient);  // gradient is per cell
 }
+
+#if PROJECTION
+// The projection's density correction at x (projection.glsl): the grid pass's -grad psi,
+// interpolated like the velocity so that the particles' steps vary smoothly (the gradient of psi's
+// own bilinear interpolant is constant within a cell and converges on its centres, where it gathered
+// the particles into rows), at most a quarter cell.
+vec3 density_correction(vec3 x) {
+  ivec3 base;
+  vec3 f;
+  grid_corners(x, base, f);
+  vec3 step_ = vec3(0.0);
+  for (int i = 0; i < k_grid_corners; ++i) {
+    ivec3 o = ivec3(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+    vec3 t = mix(1.0 - f, f, vec3(o));
+    step_ += t.x * t.y * t.z * fetch_grid(u_correction, base + o).xyz;
+  }
+  return quarter_cell_at_most(step_);
+}
+#endif
 
 uint hash(uint x) {
   x ^= x >> 16;
@@ -189,6 +216,9 @@ void main() {
   vec3 x_mid = clamp_to_bounds(x + 0.5 * dt * u_new, lo, hi);
   vec3 x_new = clamp_to_bounds(x + dt * grid_velocity(x_mid), lo, hi);
   if (POSITION_CORRECTION) x_new = clamp_to_bounds(x_new + position_correction(x), lo, hi);
+#if PROJECTION
+  x_new = clamp_to_bounds(x_new + density_correction(x), lo, hi);
+#endif
 
   // Obstacles: a particle that ended inside (or within half a cell of) an obstacle is moved back
   // to its surface and loses its velocity into it, relative to the obstacle's material there.

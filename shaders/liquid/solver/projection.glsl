@@ -4,6 +4,12 @@
 // free surface lies between a liquid cell and an air neighbour where the fraction crosses
 // k_surface_fraction (linear), and the pressure's zero is placed there (the ghost-fluid method,
 // Gibou et al. 2002). Include after common.glsl and pressure.glsl, with u_splat bound.
+// The same Jacobi passes solve a second equation beside it, for the density correction (Kugelstadt
+// et al. 2019, "Implicit density projection for volume conserving liquids"): lap psi = -rate (rho /
+// rho0 - 1), psi = 0 on the surface, whose gradient moves the particles (particle.frag) by
+// d = -grad psi, so that div d = rate (rho / rho0 - 1) spreads packed liquid and gathers sparse
+// liquid. It moves positions only: the velocities are the projection's alone, so the correction
+// adds no energy (a divergence target in the velocity did, and FLIP kept it: docs/physics.md).
 #ifndef LIQUID_PROJECTION_GLSL
 #define LIQUID_PROJECTION_GLSL
 
@@ -11,6 +17,13 @@ const float k_surface_fraction = 0.5;
 // The nearest the surface may be taken to a liquid cell's centre, in cells: closer, the ghost
 // pressure's weight 1/theta would let one noisy surface cell set its neighbours' pressure.
 const float k_min_surface_distance = 0.25;
+// The share of a cell's density error the correction takes away per step: a fraction, so that the
+// splat's sampling noise from one step to the next moves the particles little.
+const float k_density_correction_rate = 0.2;
+// Near the surface (air within the kernel's reach) only an excess above this share counts: the
+// splat's reading there falls with the surface's distance, and the particles' jitter about it is
+// not packing; correcting every small excess there, and no deficit, would ratchet the surface up.
+const float k_surface_excess_margin = 0.1;
 
 // Of cell c whose splat is `splat` (for a pass that has read it already), and of cell c.
 float liquid_fraction(ivec3 c, vec4 splat) {

@@ -5,7 +5,11 @@
 // cells' (a cell the splat does not reach takes its neighbour's); a wall's face carries none. The
 // row's diagonal counts 1 per liquid neighbour and 1/theta per air one (the ghost pressure
 // p (1 - 1/theta) that puts p = 0 on the surface: projection.glsl); a wall's face drops out.
-// Output: target 0 = (h^2 div u* / dt, the diagonal's weight) in liquid cells; (0, 0) in air.
+// The density correction's row shares the diagonal; its right side is -rate e h^2, e = rho / rho0 - 1
+// where no air lies within the kernel's reach of the cell (along the axes, ceil(r) cells away), and
+// only its excess beyond a margin elsewhere: a cell near the surface reads the air above it as a
+// deficit that gathering liquid into it would not fill, only draw the surface down.
+// Output: target 0 = (h^2 div u* / dt, the diagonal's weight, -rate e h^2, 0) in liquid cells; 0 in air.
 #extension GL_GOOGLE_include_directive : require
 #include "liquid/common.glsl"
 #include "liquid/solver/grid_fragment.glsl"
@@ -15,7 +19,7 @@ layout(set = 0, binding = LIQUID_BINDING_PRESSURE_SPLAT) uniform GRID_SAMPLER u_
 
 #include "liquid/solver/projection.glsl"
 
-layout(location = 0) out vec2 out_system;
+layout(location = 0) out vec4 out_system;
 
 // u* at cell c whose splat is s.
 vec3 provisional_velocity(ivec3 c, vec4 s) {
@@ -25,18 +29,20 @@ vec3 provisional_velocity(ivec3 c, vec4 s) {
 void main() {
   ivec3 c;
   if (!grid_fragment_cell(c)) {
-    out_system = vec2(0.0);
+    out_system = vec4(0.0);
     return;
   }
   vec4 splat = fetch_grid(u_splat, c);
   float fc = liquid_fraction(c, splat);
   if (fc < k_surface_fraction) {
-    out_system = vec2(0.0);
+    out_system = vec4(0.0);
     return;
   }
   ivec3 n = grid_cells();
   vec3 here = provisional_velocity(c, splat);
   float divergence = 0.0, weight = 0.0;
+  int reach = int(ceil(u.kernel_radius));
+  bool deep = true;
   [[unroll]] for (int a = 0; a < DIM; ++a) {
     [[unroll]] for (int side = -1; side <= 1; side += 2) {
       ivec3 q = c;
@@ -46,8 +52,12 @@ void main() {
       divergence += float(side) * (s.a > k_fluid_epsilon ? 0.5 * (here[a] + provisional_velocity(q, s)[a]) : here[a]);
       float fq = liquid_fraction(q, s);
       weight += fq >= k_surface_fraction ? 1.0 : 1.0 / surface_distance(fc, fq);
+      q[a] = clamp(c[a] + side * reach, 0, n[a] - 1);  // the kernel's reach; a wall is no air
+      deep = deep && fq >= k_surface_fraction && liquid_fraction(q) >= k_surface_fraction;
     }
   }
   float h = cell_size();
-  out_system = vec2(h * divergence / u.dt, weight);  // h^2 (divergence / h) / dt
+  float error = deep ? fc - 1.0 : max(fc - 1.0 - k_surface_excess_margin, 0.0);
+  // h^2 (divergence / h) / dt, and the correction's h^2 (-rate e)
+  out_system = vec4(h * divergence / u.dt, weight, -k_density_correction_rate * error * h * h, 0.0);
 }

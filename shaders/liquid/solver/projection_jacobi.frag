@@ -6,7 +6,8 @@
 // projection.glsl), so their p, which every iteration writes as 0, adds nothing to the sum. The
 // first iteration starts from the last step's p (where a cell has just turned to air, its old p
 // enters that one iteration's sum; the iterations after it read 0 there).
-// Output: target 0 = p (m^2/s^2); 0 in air.
+// The density correction's psi (m^2, projection.glsl) is solved beside p, by the same rows' weights.
+// Output: target 0 = (p (m^2/s^2), psi (m^2)); 0 in air.
 #extension GL_GOOGLE_include_directive : require
 #include "liquid/common.glsl"
 #include "liquid/solver/grid_fragment.glsl"
@@ -14,27 +15,27 @@
 layout(set = 0, binding = LIQUID_BINDING_PROJECTION_PRESSURE) uniform GRID_SAMPLER u_pressure;
 layout(set = 0, binding = LIQUID_BINDING_PROJECTION_SYSTEM) uniform GRID_SAMPLER u_system;
 
-layout(location = 0) out float out_pressure;
+layout(location = 0) out vec2 out_pressure;
 
 void main() {
   ivec3 c;
   if (!grid_fragment_cell(c)) {
-    out_pressure = 0.0;
+    out_pressure = vec2(0.0);
     return;
   }
-  vec2 row = fetch_grid(u_system, c).rg;  // (h^2 div u* / dt, the diagonal's weight)
+  vec4 row = fetch_grid(u_system, c);  // (h^2 div u* / dt, the diagonal's weight, -rate e h^2)
   if (row.y <= 0.0) {  // air
-    out_pressure = 0.0;
+    out_pressure = vec2(0.0);
     return;
   }
   ivec3 n = grid_cells();
-  float neighbours = 0.0;
+  vec2 neighbours = vec2(0.0);
   [[unroll]] for (int a = 0; a < DIM; ++a) {
     [[unroll]] for (int side = -1; side <= 1; side += 2) {
       ivec3 q = c;
       q[a] += side;
-      if (q[a] >= 0 && q[a] < n[a]) neighbours += fetch_grid(u_pressure, q).r;
+      if (q[a] >= 0 && q[a] < n[a]) neighbours += fetch_grid(u_pressure, q).rg;
     }
   }
-  out_pressure = (neighbours - row.x) / row.y;
+  out_pressure = (neighbours - row.xz) / row.y;
 }
