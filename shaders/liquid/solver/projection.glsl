@@ -21,8 +21,9 @@ const float k_min_surface_distance = 0.25;
 // splat's sampling noise from one step to the next moves the particles little.
 const float k_density_correction_rate = 0.2;
 // Near the surface (air within the kernel's reach) only an excess above this share counts: the
-// splat's reading there falls with the surface's distance, and the particles' jitter about it is
-// not packing; correcting every small excess there, and no deficit, would ratchet the surface up.
+// splat reads low there for the air, so a deficit says nothing, and a correction that spreads every
+// small excess and gathers no deficit could only ever raise the surface. With it the pools keep
+// their level (docs/physics.md, "The density correction", which also gives a run without it).
 const float k_surface_excess_margin = 0.1;
 
 // Of cell c whose splat is `splat` (for a pass that has read it already), and of cell c.
