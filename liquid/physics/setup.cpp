@@ -153,10 +153,15 @@ bool inside_any_obstacle(const Scene& scene, const std::vector<PlacedObstacle>& 
 //   eta(d) = integral_0^d (1 + g x / k)^(1/gamma) dx
 //          = (k / g) ((1 + g d / k)^(1 + 1/gamma) - 1) / (1 + 1/gamma),
 // inverted in closed form. Started uncompressed, a pool falls onto itself and rings for seconds.
+// Not under the pressure projection: that liquid is incompressible, rest density at every depth,
+// and its density correction would spread a compressed start back out, lifting the whole pool
+// while its first waves run (docs/physics.md, "The density correction").
 class HydrostaticStart {
  public:
   HydrostaticStart(const Scene& scene, const FluidBlock& block, glm::ivec3 counts, const SimulationSetup& setup) {
-    if (scene.pressure_force != PressureForce::SplatAdjoint || scene.mode != SimulationMode::Liquid) return;
+    if (scene.pressure_force != PressureForce::SplatAdjoint || scene.mode != SimulationMode::Liquid ||
+        scene.projection_iterations > 0)
+      return;
     int axis = -1;
     for (int a = 0; a < scene.dimension; ++a)
       if (scene.gravity[a] != 0.0f) axis = axis < 0 ? a : scene.dimension;  // more than one: none

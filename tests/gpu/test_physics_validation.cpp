@@ -372,8 +372,9 @@ TEST_CASE("the position correction keeps a pool's surface where it settled", "[g
 // keeps its level and its top layer; its density correction spreads the particles to rest density,
 // so the liquid below the surface is not denser at the bottom and fills the depth its mass makes at
 // rest density. Measured 2026-12-07 (1 s, 3 s): without the correction 97.27 mm at both, the depth
-// at rest density 98.29 mm, the density slope 2.8 times the pressure law's; with it 98.00 and
-// 98.03 mm, the slope -0.0002 /m against the law's 0.20 /m.
+// at rest density 98.29 mm, the density slope 2.8 times the pressure law's; with it (and the
+// lattice started at rest density, not compressed as the equation of state would have it) 98.36
+// and 98.37 mm, the slope -0.0009 /m against the law's 0.20 /m.
 TEST_CASE("under the pressure projection a pool at rest keeps its level and its density", "[gpu][liquid][physics][projection][still]") {
   liquid::Scene physics = test::shipped_scene("rest_pool_2d");
   physics.projection_iterations = 40;
