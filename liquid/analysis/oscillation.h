@@ -49,9 +49,9 @@ Scene tank_scene(const Scene& physics, const SloshingTank& tank, const std::func
 double tank_still_depth(const Scene& physics, const SloshingTank& tank);
 
 // The section of the liquid each particle of `scene` stands for at rest (m^2): spacing^2, and in 3D
-// its volume over the tank's width. In 3D the lattice fills only whole spacings across (ten in
-// the six cells of sloshing_tank()) and then spreads over the whole width, so the blocks' extent
-// would overstate it.
+// its volume over the tank's width. In 3D the blocks fill whole spacings across (tank_scene()
+// snaps the spacing to the width) but their columns, spread over L, may be a hair wider than a
+// spacing, so the blocks' extent would overstate it.
 double particle_section(const Scene& scene);
 
 // The depth the liquid of `particles` particles settles to over the tank's floor (m): their

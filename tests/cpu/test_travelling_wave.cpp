@@ -44,13 +44,15 @@ TEST_CASE("the pulse's particles hold its hump on whole layers of still water", 
     const SimulationSetup setup = make_setup(scene, DeviceLimits{});
     ParticleSnapshot particles;
     particles.positions = setup.positions;
-    // Each particle stands for s^2 of the section, in 3D its volume over the tank's width (the
-    // lattice fills ten spacings of the 10.97 across and spreads over the rest).
+    // Each particle stands for s^2 of the section, in 3D its volume over the tank's width (which
+    // the lattice fills with whole spacings: the spacing is snapped to it).
     const double area = particle_section(scene);
     CHECK(area == Approx(dimension == 2 ? s * s : s * s * s / pulse.tank.width).epsilon(1e-5));  // float domain
-    // The depth it settles to: the still layers and the hump's volume over L, in 3D over the
-    // share of the width the lattice fills.
-    const double filled = dimension == 2 ? 1.0 : std::floor(pulse.tank.width / s + 1e-4) * s / pulse.tank.width;
+    if (dimension == 3) CHECK(std::abs(pulse.tank.width / s - std::round(pulse.tank.width / s)) < 1e-4);
+    // The depth it settles to: the still layers and the hump's volume over L, times the share of L
+    // the whole spacings along it fill (all of it in 2D; the columns spread over the rest).
+    const double filled = std::floor(length / s + 1e-4) * s / length;
+    if (dimension == 2) CHECK(filled == Approx(1.0));
     const double hump = pulse.height * pulse.half_width * std::sqrt(0.5 * std::numbers::pi) / length;
     CHECK(settled_depth(scene, particles.positions.size()) ==
           Approx(filled * (still + hump)).margin(0.1 * s));
