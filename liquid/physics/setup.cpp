@@ -126,8 +126,13 @@ void check_grid_limits(const Scene& scene, const SimulationSetup& setup, const D
 // force: the chapter's differences P itself, and carving to half the band still left 0.8 m/s,
 // three quarters leaves it falling freely (0.026 m/s); the splat adjoint differences P smoothed
 // by the kernel once more, so the push reaches a kernel radius further: 0.32 m/s at three
-// quarters, 0.052 at one band, free fall at one and a half.
-float carved_share(const Scene& scene) { return scene.pressure_force == PressureForce::SplatAdjoint ? 1.5f : 0.75f; }
+// quarters, 0.052 at one band, free fall at one and a half. Under the pressure projection a static
+// obstacle adds no density (it is solid to the solve): the block is carved to the particles' skin
+// only, where the particle pass would move them; a band's gap would drop the pool into it.
+float carved_share(const Scene& scene) {
+  if (scene.projection_iterations > 0) return float(LIQUID_OBSTACLE_SKIN_CELLS / double(scene.kernel_radius_cells));
+  return scene.pressure_force == PressureForce::SplatAdjoint ? 1.5f : 0.75f;
+}
 
 std::vector<PlacedObstacle> obstacles_at_start(const Scene& scene, float band) {
   std::vector<PlacedObstacle> placed;

@@ -54,6 +54,7 @@ PressurePass::PressurePass(engine::vk::Context& context, const SolverVariant& va
         "liquid.projection_divergence", variant, variant.shader(shaders::projection_divergence_frag),
         LIQUID_BINDING_PRESSURE_SPLAT, specialization);
     divergence.color_formats = {k_projection_system_format};
+    add_mesh_field_binding(variant.meshes, divergence.bindings);  // the static obstacles' solid cells
     divergence_.emplace(context, divergence);
     engine::vk::GraphicsPipelineDesc jacobi = grid_pipeline(
         "liquid.projection_jacobi", variant, variant.shader(shaders::projection_jacobi_frag),
@@ -104,6 +105,7 @@ void PressurePass::add_projection_to(engine::graph::RenderGraph& graph, const en
       graph, *divergence_, uniforms, cells,
       [&](engine::passes::PassBindings& bindings, PassBuilder& b, const AttachmentOptions& load) {
         bindings.bind_image(b, LIQUID_BINDING_PRESSURE_SPLAT, step.splat, nearest_.handle());
+        bind_mesh_field(bindings, b, step.mesh_field, nearest_);
         return b.write(p.system, Access::ColorAttachmentWrite, load);
       });
   ImageHandle source = p.phi;

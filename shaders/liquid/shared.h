@@ -61,6 +61,9 @@
 // The closest point of a cell no seed reached, and what a mesh's field draw leaves in the other
 // meshes' channels (MIN blending keeps the smaller); above any band.
 #define LIQUID_MESH_FAR 1.0e4
+// How far from a static obstacle's surface the particle pass keeps the particles, in cells
+// (particle.frag); under the pressure projection also how far the fill carves the blocks around it.
+#define LIQUID_OBSTACLE_SKIN_CELLS 0.5
 
 // Secondary particles (liquid/solver/whitewater.h): the most slots a liquid particle owns, and the
 // kinds a slot's position.w holds (0: free).

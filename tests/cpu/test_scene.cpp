@@ -266,7 +266,7 @@ TEST_CASE("the position correction is off unless asked for, and needs the separa
   CHECK(parse(j).obstacles.at(0).dynamic);
 }
 
-TEST_CASE("the pressure projection is off unless asked for, and needs the splat-adjoint pressure and no obstacles",
+TEST_CASE("the pressure projection is off unless asked for, and needs the splat-adjoint pressure and no bodies",
           "[scene]") {
   CHECK(parse(valid_2d()).projection_iterations == 0);
   Json j = valid_2d();
@@ -279,7 +279,10 @@ TEST_CASE("the pressure projection is off unless asked for, and needs the splat-
   j["projection_iterations"] = 2;
   CHECK(parse(j).projection_iterations == 2);
   j["obstacles"] = Json::parse(R"([{"shape": "box", "center": [0.5, 0.5], "half_extent": [0.05, 0.05]}])");
-  REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: projection_iterations: needs \"pressure_force\": \"splat_adjoint\" and no obstacles"));
+  CHECK(parse(j).obstacles.size() == 1);  // a static obstacle is solid to the projection
+  j["obstacles"][0]["dynamic"] = true;
+  j["obstacles"][0]["density"] = 500;
+  REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: obstacles[0].dynamic: not yet with \"projection_iterations\""));
 }
 
 TEST_CASE("whitewater is off unless asked for, and {} takes every default", "[scene][whitewater]") {

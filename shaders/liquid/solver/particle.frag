@@ -227,7 +227,7 @@ void main() {
   // velocity change here would be momentum the body's force does not count; the grid pass's
   // no-inflow condition removes it on the next step, where the body exchange pass counts it
   // (docs/physics.md, "Bodies that float").
-  float skin = 0.5 * cell_size();
+  float skin = LIQUID_OBSTACLE_SKIN_CELLS * cell_size();
   [[unroll]] for (int pass = 0; pass < 2; ++pass) {
     MeshSample meshes = mesh_sample(x_new, true);
 #define LIQUID_PUSH_OUT(i) push_out(i, meshes, skin, lo, hi, x_new, v);

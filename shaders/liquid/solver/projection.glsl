@@ -26,9 +26,47 @@ const float k_density_correction_rate = 0.2;
 // their level (docs/physics.md, "The density correction", which also gives a run without it).
 const float k_surface_excess_margin = 0.1;
 
-// Of cell c whose splat is `splat` (for a pass that has read it already), and of cell c.
+// Static obstacles: a cell whose centre lies inside one is solid, like a wall: its faces carry the
+// obstacle's velocity (none through a still one) and it drops out of its liquid neighbours' rows
+// (Neumann), so the liquid rests on it with its hydrostatic pressure instead of meeting a free
+// surface there. Dynamic bodies are not solid to the projection.
+// The nearest static obstacle at cell c's centre: its index (-1: none) and signed distance (m).
+struct StaticObstacle {
+  int index;
+  float distance;
+};
+StaticObstacle nearest_static_obstacle(ivec3 c) {
+  StaticObstacle nearest = StaticObstacle(-1, LIQUID_MESH_FAR);
+  if (obstacle_count() == 0) return nearest;
+  vec3 p = cell_center(c);
+  MeshSample meshes = mesh_sample_at_cell(c, false);
+#define LIQUID_NEAREST_STATIC(i)                                    \
+  if (i < obstacle_count() && !obstacle_dynamic(i)) {               \
+    float d = obstacle_distance(i, p, meshes);                      \
+    if (d < nearest.distance) nearest = StaticObstacle(i, d);       \
+  }
+  FOR_EACH_OBSTACLE(LIQUID_NEAREST_STATIC)
+#undef LIQUID_NEAREST_STATIC
+  return nearest;
+}
+bool solid_cell(ivec3 c) { return nearest_static_obstacle(c).distance < 0.0; }
+
+// The liquid beside a static obstacle ends about a quarter cell past the particles' skin (half a
+// spacing, a spacing being about half a cell), in cells from the obstacle's surface.
+const float k_obstacle_liquid_edge_cells = LIQUID_OBSTACLE_SKIN_CELLS - 0.25;
+
+// Of cell c whose splat is `splat` (for a pass that has read it already), and of cell c: over the
+// kernel's share inside the domain less its share past the nearest static obstacle's liquid edge
+// (the plane there: the body table's lattice share). 0 in a solid cell.
 float liquid_fraction(ivec3 c, vec4 splat) {
-  return u.density_scale * splat.a / (cell_coverage(c) * u.rest_density);
+  float coverage = cell_coverage(c);
+  StaticObstacle o = nearest_static_obstacle(c);
+  if (o.distance < 0.0) return 0.0;
+  if (o.index >= 0) {
+    float share = share_past_plane(o.distance / cell_size() - k_obstacle_liquid_edge_cells);
+    coverage = max(coverage - share, k_min_body_coverage);
+  }
+  return u.density_scale * splat.a / (coverage * u.rest_density);
 }
 float liquid_fraction(ivec3 c) { return liquid_fraction(c, fetch_grid(u_splat, c)); }
 

@@ -2,13 +2,15 @@
 // Pressure projection, first pass: each liquid cell's row of the Poisson equation lap p = div u* / dt
 // that the Jacobi passes solve, where u* = u + dt (g + f_ext) is the velocity the step would have
 // without pressure (u the splat's). The divergence takes face velocities as the means of the two
-// cells' (a cell the splat does not reach takes its neighbour's); a wall's face carries none. The
-// row's diagonal counts 1 per liquid neighbour and 1/theta per air one (the ghost pressure
-// p (1 - 1/theta) that puts p = 0 on the surface: projection.glsl); a wall's face drops out.
+// cells' (a cell the splat does not reach takes its neighbour's); a wall's face carries none, a solid
+// cell's (a static obstacle's: projection.glsl) the obstacle's velocity. The row's diagonal counts
+// 1 per liquid neighbour and 1/theta per air one (the ghost pressure p (1 - 1/theta) that puts
+// p = 0 on the surface: projection.glsl); a wall's or a solid cell's face drops out.
 // The density correction's row shares the diagonal; its right side is -rate e h^2, e = rho / rho0 - 1
-// where no air lies within the kernel's reach of the cell (along the axes, ceil(r) cells away), and
-// only its excess beyond a margin elsewhere: a cell near the surface reads the air above it as a
-// deficit that gathering liquid into it would not fill, only draw the surface down.
+// where no air lies within the kernel's reach of the cell (along the axes, ceil(r) cells away) and no
+// static obstacle either, and only its excess beyond a margin elsewhere: a cell near the surface
+// reads the air above it as a deficit that gathering liquid into it would not fill, only draw the
+// surface down; beside an obstacle the particles' skin leaves a gap the same way.
 // Output: target 0 = (h^2 div u* / dt, the diagonal's weight, -rate e h^2, 0) in liquid cells; 0 in air.
 #extension GL_GOOGLE_include_directive : require
 #include "liquid/common.glsl"
@@ -33,7 +35,7 @@ void main() {
     return;
   }
   vec4 splat = fetch_grid(u_splat, c);
-  float fc = liquid_fraction(c, splat);
+  float fc = liquid_fraction(c, splat);  // 0 in a solid cell: no row
   if (fc < k_surface_fraction) {
     out_system = vec4(0.0);
     return;
@@ -42,12 +44,20 @@ void main() {
   vec3 here = provisional_velocity(c, splat);
   float divergence = 0.0, weight = 0.0;
   int reach = int(ceil(u.kernel_radius));
-  bool deep = true;
+  float h = cell_size();
+  bool deep = nearest_static_obstacle(c).distance >= float(reach) * h;
   [[unroll]] for (int a = 0; a < DIM; ++a) {
     [[unroll]] for (int side = -1; side <= 1; side += 2) {
       ivec3 q = c;
       q[a] += side;
       if (q[a] < 0 || q[a] >= n[a]) continue;  // a wall: no flow, no term
+      StaticObstacle solid = nearest_static_obstacle(q);
+      if (solid.distance < 0.0) {  // the obstacle's flow through the face, no term
+        vec3 face = cell_center(c);
+        face[a] += 0.5 * float(side) * h;
+        divergence += float(side) * obstacle_velocity_at(solid.index, face)[a];
+        continue;
+      }
       vec4 s = fetch_grid(u_splat, q);  // one read for the face's velocity and q's fraction
       divergence += float(side) * (s.a > k_fluid_epsilon ? 0.5 * (here[a] + provisional_velocity(q, s)[a]) : here[a]);
       float fq = liquid_fraction(q, s);
@@ -56,7 +66,6 @@ void main() {
       deep = deep && fq >= k_surface_fraction && liquid_fraction(q) >= k_surface_fraction;
     }
   }
-  float h = cell_size();
   float error = deep ? fc - 1.0 : max(fc - 1.0 - k_surface_excess_margin, 0.0);
   // h^2 (divergence / h) / dt, and the correction's h^2 (-rate e)
   out_system = vec4(h * divergence / u.dt, weight, -k_density_correction_rate * error * h * h, 0.0);
