@@ -15,8 +15,12 @@
 
 const float k_surface_fraction = 0.5;
 // The nearest the surface may be taken to a liquid cell's centre, in cells: closer, the ghost
-// pressure's weight 1/theta would let one noisy surface cell set its neighbours' pressure.
-const float k_min_surface_distance = 0.25;
+// pressure's weight 1/theta would let one noisy surface cell set its neighbours' pressure. Small:
+// wherever the clamp holds, the pressure no longer follows the surface's height, and a wave whose
+// height stays within it loses its restoring force there (at a quarter cell a 2D pulse of 0.3
+// cells ran 11 to 20 % slow at 64 cells, and in 3D its first mode froze: docs/physics.md, "The
+// surface's nearest distance").
+const float k_min_surface_distance = 0.05;
 // The share of a cell's density error the correction takes away per step: a fraction, so that the
 // splat's sampling noise from one step to the next moves the particles little.
 const float k_density_correction_rate = 0.2;
