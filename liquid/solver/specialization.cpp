@@ -3,6 +3,7 @@
 #include "liquid/solver/gpu_types.h"
 #include "liquid/solver/uniforms.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace liquid {
@@ -18,6 +19,9 @@ std::vector<int32_t> scene_specialization(const Scene& scene, const SimulationSe
   constants[specialization_id::integer_gamma] = integer_gamma ? int32_t(setup.gamma) : 0;
   constants[specialization_id::has_emitters] = scene.emitters.empty() ? 0 : 1;
   constants[specialization_id::ground_hills] = int32_t(scene.ground.size());
+  const bool walls_continued = std::all_of(setup.wall_share_beyond.begin(), setup.wall_share_beyond.end(),
+                                           [](float share) { return share == 0.0f; });
+  constants[specialization_id::walls_continued] = walls_continued ? 1 : 0;
   return constants;
 }
 

@@ -32,6 +32,9 @@ layout(constant_id = 9) const bool SHALLOW_WATER = false;  // printed pressure f
 layout(constant_id = 10) const int INTEGER_GAMMA = 0;      // gamma when it is an integer 1..8, else 0
 layout(constant_id = 11) const bool HAS_EMITTERS = false;
 layout(constant_id = 12) const int GROUND_HILLS = 0;       // shallow water: hills of the ground b(x, y)
+// The walls' kernel table is all zeros (the separable splat, whose walls are the liquid continued
+// through them): every cell's wall coverage is 1, without a pass over the table per read.
+layout(constant_id = 13) const bool WALLS_CONTINUED = false;
 
 int obstacle_count() { return OBSTACLE_COUNT; }
 

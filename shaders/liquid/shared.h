@@ -108,7 +108,7 @@
 #define LIQUID_BINDING_PARTICLE_CORRECTION 11
 // The particle pass's own specialization constant, after the scene's (liquid/solver/specialization.h):
 // whether it runs the position correction.
-#define LIQUID_PARTICLE_POSITION_CORRECTION_ID 13
+#define LIQUID_PARTICLE_POSITION_CORRECTION_ID 14
 // The body-state texture, read where dynamic obstacles are evaluated (grid, particle, body passes).
 #define LIQUID_BINDING_BODIES 5
 // The body force and exchange passes read the splat at LIQUID_BINDING_GRID_SPLAT, as the grid pass

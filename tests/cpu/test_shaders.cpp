@@ -98,7 +98,8 @@ std::map<std::string, uint32_t> expected_ids() {
                                       {"SHALLOW_WATER", id::shallow_water},
                                       {"INTEGER_GAMMA", id::integer_gamma},
                                       {"HAS_EMITTERS", id::has_emitters},
-                                      {"GROUND_HILLS", id::ground_hills}};
+                                      {"GROUND_HILLS", id::ground_hills},
+                                      {"WALLS_CONTINUED", id::walls_continued}};
   for (int i = 0; i < liquid::gpu::k_max_obstacles; ++i)
     ids["OBSTACLE_KIND_" + std::to_string(i)] = uint32_t(id::first_obstacle_kind + size_t(i));
   return ids;

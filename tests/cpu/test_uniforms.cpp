@@ -50,10 +50,10 @@ TEST_CASE("the uniform block carries the setup's parameters and the step's input
 
 TEST_CASE("the shaders' specialization follows the scene's features", "[setup]") {
   // constant_id layout of shaders/liquid/common.glsl (tests/cpu/test_shaders.cpp checks the ids):
-  // obstacle count, 8 kinds, shallow water, integer gamma, emitters, ground hills.
+  // obstacle count, 8 kinds, shallow water, integer gamma, emitters, ground hills, walls continued.
   namespace id = specialization_id;
   const std::vector<int32_t> dam = scene_specialization(scene_of("dam_break_2d.json"), setup_of("dam_break_2d.json"));
-  CHECK(dam == std::vector<int32_t>{0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 5, 0, 0});
+  CHECK(dam == std::vector<int32_t>{0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 5, 0, 0, 1});  // the separable splat's walls
 
   const std::vector<int32_t> obstacles = scene_specialization(scene_of("obstacles_2d.json"), setup_of("obstacles_2d.json"));
   REQUIRE(obstacles.size() == id::count);
@@ -67,6 +67,8 @@ TEST_CASE("the shaders' specialization follows the scene's features", "[setup]")
   CHECK(shallow[id::ground_hills] == 3);
 
   CHECK(scene_specialization(scene_of("paper_3d.json"), setup_of("paper_3d.json"))[id::has_emitters] == 1);  // the jet
+  // Point sprites read the walls' coverage from the table.
+  CHECK(scene_specialization(scene_of("paper_3d.json"), setup_of("paper_3d.json"))[id::walls_continued] == 0);
 
   Scene fractional = load_scene(k_scene_dir / "dam_break_2d.json");
   fractional.gamma = 6.5f;

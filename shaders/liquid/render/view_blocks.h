@@ -9,12 +9,12 @@
 // Raymarch: the specialization constant that makes it draw the liquid alone over a host's targets
 // (its id follows the scene's constants of common.glsl; raymarch.cpp checks that), and the one that
 // leaves out the march and the liquid for the screen tiles no coarse ray saw liquid in.
-#define LIQUID_RAYMARCH_COMPOSITE_ID 13
-#define LIQUID_RAYMARCH_BACKGROUND_ONLY_ID 14
+#define LIQUID_RAYMARCH_COMPOSITE_ID 14
+#define LIQUID_RAYMARCH_BACKGROUND_ONLY_ID 15
 // Compositing: how the colour is written for the host's target format (LIQUID_RAYMARCH_OUTPUT_ID):
 // display-encoded (UNORM targets), linear for an sRGB target (the hardware encodes it), or linear
 // radiance times the exposure for an HDR float target.
-#define LIQUID_RAYMARCH_OUTPUT_ID 15
+#define LIQUID_RAYMARCH_OUTPUT_ID 16
 #define LIQUID_OUTPUT_DISPLAY 0
 #define LIQUID_OUTPUT_LINEAR 1
 #define LIQUID_OUTPUT_HDR 2
@@ -36,7 +36,7 @@
 
 // 2D view: the specialization constant that draws the liquid (and obstacles) alone, with alpha,
 // into a rectangle of a host's target (its id follows the scene's constants of common.glsl).
-#define LIQUID_VIEW2D_PANEL_ID 13
+#define LIQUID_VIEW2D_PANEL_ID 14
 
 // Height field: which mesh a draw makes.
 #define LIQUID_HEIGHT_FIELD_GROUND 0

@@ -9,6 +9,7 @@
 // Selected with comparisons, not an indexed read: an index that differs between fragments is a
 // gather on lavapipe.
 float kernel_mass_beyond(int k) {
+  if (WALLS_CONTINUED) return 0.0;
   float beyond = 0.0;
   [[unroll]] for (int i = 0; i < LIQUID_WALL_TABLE_SIZE; ++i)
     beyond = k == i ? u.wall_kernel_beyond[i / 4][i % 4] : beyond;
