@@ -46,15 +46,16 @@ float potential_at(ivec3 c, int a, int offset) {
 // The projection's (p, psi) (in u_potential) at the neighbour `side` (-1 or 1) cells from c along
 // axis a, as the difference at c needs them: beyond a wall p's hydrostatic ghost and psi's own (no
 // flow through it), in a solid cell c's continued as still water's, p + g.n h both ways (under an
-// overhang too, where the liquid presses against it from below), across the free surface from a liquid cell the ghost-fluid values
-// that put p = psi = 0 on the surface (projection_jacobi.frag). sc and fc: c's (p, psi) and liquid
-// fraction.
+// overhang too, where the liquid presses against it from below), across the free surface from a
+// liquid cell the ghost-fluid values that put p = psi = 0 on the surface (projection_jacobi.frag).
+// sc and fc: c's (p, psi) and liquid fraction.
 vec2 projection_solution_at(ivec3 c, vec2 sc, float fc, int a, int side) {
   ivec3 q = c;
   q[a] += side;
   if (q[a] < 0 || q[a] >= grid_cells()[a]) return vec2(sc.x + wall_ghost_rise_along(a, q[a]), sc.y);
-  if (solid_cell(q)) return vec2(sc.x + float(side) * u.gravity[a] * cell_size(), sc.y);
-  float fq = liquid_fraction(q);
+  StaticObstacle nearest = nearest_static_obstacle(q);
+  if (nearest.distance < 0.0) return vec2(sc.x + float(side) * u.gravity[a] * cell_size(), sc.y);
+  float fq = liquid_fraction(q, fetch_grid(u_splat, q), nearest);
   if (fc >= k_surface_fraction && fq < k_surface_fraction) return sc * (1.0 - 1.0 / surface_distance(fc, fq));
   return fetch_grid(u_potential, q).rg;
 }

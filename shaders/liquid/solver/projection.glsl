@@ -53,18 +53,16 @@ StaticObstacle nearest_static_obstacle(ivec3 c) {
 #undef LIQUID_NEAREST_STATIC
   return nearest;
 }
-bool solid_cell(ivec3 c) { return nearest_static_obstacle(c).distance < 0.0; }
 
 // The liquid beside a static obstacle ends about a quarter cell past the particles' skin (half a
 // spacing, a spacing being about half a cell), in cells from the obstacle's surface.
 const float k_obstacle_liquid_edge_cells = LIQUID_OBSTACLE_SKIN_CELLS - 0.25;
 
-// Of cell c whose splat is `splat` (for a pass that has read it already), and of cell c: over the
-// kernel's share inside the domain less its share past the nearest static obstacle's liquid edge
-// (the plane there: the body table's lattice share). 0 in a solid cell.
-float liquid_fraction(ivec3 c, vec4 splat) {
+// Of cell c whose splat is `splat` and nearest static obstacle `o` (for a pass that has them
+// already), and of cell c: over the kernel's share inside the domain less its share past the
+// obstacle's liquid edge (the plane there: the body table's lattice share). 0 in a solid cell.
+float liquid_fraction(ivec3 c, vec4 splat, StaticObstacle o) {
   float coverage = cell_coverage(c);
-  StaticObstacle o = nearest_static_obstacle(c);
   if (o.distance < 0.0) return 0.0;
   if (o.index >= 0) {
     float share = share_past_plane(o.distance / cell_size() - k_obstacle_liquid_edge_cells);
@@ -72,6 +70,7 @@ float liquid_fraction(ivec3 c, vec4 splat) {
   }
   return u.density_scale * splat.a / (coverage * u.rest_density);
 }
+float liquid_fraction(ivec3 c, vec4 splat) { return liquid_fraction(c, splat, nearest_static_obstacle(c)); }
 float liquid_fraction(ivec3 c) { return liquid_fraction(c, fetch_grid(u_splat, c)); }
 
 // The distance, in cells, from the centre of liquid cell c (fraction fc) to the surface toward its

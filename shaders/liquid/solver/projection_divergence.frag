@@ -35,7 +35,8 @@ void main() {
     return;
   }
   vec4 splat = fetch_grid(u_splat, c);
-  float fc = liquid_fraction(c, splat);  // 0 in a solid cell: no row
+  StaticObstacle nearest = nearest_static_obstacle(c);
+  float fc = liquid_fraction(c, splat, nearest);  // 0 in a solid cell: no row
   if (fc < k_surface_fraction) {
     out_system = vec4(0.0);
     return;
@@ -45,7 +46,7 @@ void main() {
   float divergence = 0.0, weight = 0.0;
   int reach = int(ceil(u.kernel_radius));
   float h = cell_size();
-  bool deep = nearest_static_obstacle(c).distance >= float(reach) * h;
+  bool deep = nearest.distance >= float(reach) * h;
   [[unroll]] for (int a = 0; a < DIM; ++a) {
     [[unroll]] for (int side = -1; side <= 1; side += 2) {
       ivec3 q = c;
@@ -60,7 +61,7 @@ void main() {
       }
       vec4 s = fetch_grid(u_splat, q);  // one read for the face's velocity and q's fraction
       divergence += float(side) * (s.a > k_fluid_epsilon ? 0.5 * (here[a] + provisional_velocity(q, s)[a]) : here[a]);
-      float fq = liquid_fraction(q, s);
+      float fq = liquid_fraction(q, s, solid);
       weight += fq >= k_surface_fraction ? 1.0 : 1.0 / surface_distance(fc, fq);
       q[a] = clamp(c[a] + side * reach, 0, n[a] - 1);  // the kernel's reach; a wall is no air
       deep = deep && fq >= k_surface_fraction && liquid_fraction(q) >= k_surface_fraction;
