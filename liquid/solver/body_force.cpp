@@ -60,16 +60,19 @@ BodyForcePass::BodyForcePass(engine::vk::Context& context, const SolverVariant& 
       dynamic_obstacles_(dynamic_obstacles(scene)),
       obstacles_(uint32_t(scene.obstacles.size())),
       cells_(uint32_t(variant.layout.cell_count())),
-      particle_mass_(setup.particle_mass) {}
+      particle_mass_(setup.particle_mass),
+      projection_(variant.projection()) {}
 
 BodyForceImages BodyForcePass::add_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
                                       const StepImages& step, int active) const {
   const engine::vk::ImageDesc desc{engine::vk::ImageKind::Image2D, 1, obstacles_, 1, k_body_format, 0};
   BodyForceImages out{graph.create_image("liquid.body_force", desc), graph.create_image("liquid.body_torque", desc)};
-  // Per body its pressure, then its exchange, adding into the targets the first pass clears.
+  // Per body its pressure, then its exchange, adding into the targets the first pass clears. Under
+  // the projection the pressure carries what the body's motion asks of the liquid: no exchange.
   bool first = true;
   for (const int body : dynamic_obstacles_)
     for (const bool exchange : {false, true}) {
+      if (exchange && projection_) continue;
       const engine::graph::AttachmentOptions start =
           first ? engine::graph::clear_to(0, 0, 0, 0) : engine::graph::AttachmentOptions{engine::graph::LoadOp::Load, {}};
       first = false;
@@ -82,7 +85,9 @@ BodyForceImages BodyForcePass::add_to(engine::graph::RenderGraph& graph, const e
             bindings.bind_image(b, LIQUID_BINDING_BODIES, step.bodies, s);
             bind_body_shapes(bindings, b, step.body_shapes, linear_);
             if (exchange) bindings.bind_image(b, LIQUID_BINDING_BODY_PARTICLES, step.particles.positions, s);
-            if (!exchange) bindings.bind_image(b, LIQUID_BINDING_BODY_CELL_PRESSURE, step.pressure.pressure, s);
+            // The equation of state's P, or the projection's last iteration.
+            const ImageHandle pressure = projection_ ? step.pressure.phi : step.pressure.pressure;
+            if (!exchange) bindings.bind_image(b, LIQUID_BINDING_BODY_CELL_PRESSURE, pressure, s);
             return BodyForceImages{b.write(out.force, Access::ColorAttachmentBlend, start),
                                    b.write(out.torque, Access::ColorAttachmentBlend, start)};
           },

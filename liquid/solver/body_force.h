@@ -48,6 +48,7 @@ class BodyForcePass {
   uint32_t obstacles_ = 0;
   uint32_t cells_ = 0;
   float particle_mass_ = 0.0f;
+  bool projection_ = false;  // the force from the projection's p, no exchange pass
 };
 
 }  // namespace liquid

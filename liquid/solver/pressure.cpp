@@ -30,11 +30,11 @@ engine::vk::GraphicsPipelineDesc grid_pipeline(const char* name, const SolverVar
       .specialization = specialization};
 }
 
-// P's pass also reads the bodies (their kernel coverage) and the mesh field.
-engine::vk::GraphicsPipelineDesc pressure_pipeline(const SolverVariant& variant,
-                                                   const std::vector<int32_t>& specialization) {
-  engine::vk::GraphicsPipelineDesc desc = grid_pipeline("liquid.pressure", variant, variant.shader(shaders::pressure_frag),
-                                                        LIQUID_BINDING_PRESSURE_SPLAT, specialization);
+// A pass that also reads the bodies (their kernel coverage, or their solid cells) and the mesh field.
+engine::vk::GraphicsPipelineDesc obstacle_grid_pipeline(const char* name, const SolverVariant& variant,
+                                                        std::span<const uint32_t> fragment,
+                                                        const std::vector<int32_t>& specialization) {
+  engine::vk::GraphicsPipelineDesc desc = grid_pipeline(name, variant, fragment, LIQUID_BINDING_PRESSURE_SPLAT, specialization);
   desc.bindings.push_back({LIQUID_BINDING_BODIES, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
   add_body_shapes_binding(desc.bindings, VK_SHADER_STAGE_FRAGMENT_BIT);
   add_mesh_field_binding(variant.meshes, desc.bindings);
@@ -45,16 +45,15 @@ engine::vk::GraphicsPipelineDesc pressure_pipeline(const SolverVariant& variant,
 
 PressurePass::PressurePass(engine::vk::Context& context, const SolverVariant& variant,
                            const std::vector<int32_t>& specialization)
-    : pressure_(context, pressure_pipeline(variant, specialization)),
+    : pressure_(context, obstacle_grid_pipeline("liquid.pressure", variant, variant.shader(shaders::pressure_frag),
+                                                specialization)),
       nearest_(context, VK_FILTER_NEAREST),
       linear_(context, VK_FILTER_LINEAR),
       variant_(variant) {
   if (variant.projection()) {
-    engine::vk::GraphicsPipelineDesc divergence = grid_pipeline(
-        "liquid.projection_divergence", variant, variant.shader(shaders::projection_divergence_frag),
-        LIQUID_BINDING_PRESSURE_SPLAT, specialization);
+    engine::vk::GraphicsPipelineDesc divergence = obstacle_grid_pipeline(
+        "liquid.projection_divergence", variant, variant.shader(shaders::projection_divergence_frag), specialization);
     divergence.color_formats = {k_projection_system_format};
-    add_mesh_field_binding(variant.meshes, divergence.bindings);  // the static obstacles' solid cells
     divergence_.emplace(context, divergence);
     engine::vk::GraphicsPipelineDesc jacobi = grid_pipeline(
         "liquid.projection_jacobi", variant, variant.shader(shaders::projection_jacobi_frag),
@@ -105,6 +104,8 @@ void PressurePass::add_projection_to(engine::graph::RenderGraph& graph, const en
       graph, *divergence_, uniforms, cells,
       [&](engine::passes::PassBindings& bindings, PassBuilder& b, const AttachmentOptions& load) {
         bindings.bind_image(b, LIQUID_BINDING_PRESSURE_SPLAT, step.splat, nearest_.handle());
+        bindings.bind_image(b, LIQUID_BINDING_BODIES, step.bodies, nearest_.handle());
+        bind_body_shapes(bindings, b, step.body_shapes, linear_);
         bind_mesh_field(bindings, b, step.mesh_field, nearest_);
         return b.write(p.system, Access::ColorAttachmentWrite, load);
       });

@@ -266,7 +266,7 @@ TEST_CASE("the position correction is off unless asked for, and needs the separa
   CHECK(parse(j).obstacles.at(0).dynamic);
 }
 
-TEST_CASE("the pressure projection is off unless asked for, and needs the splat-adjoint pressure and no bodies",
+TEST_CASE("the pressure projection is off unless asked for, and needs the splat-adjoint pressure",
           "[scene]") {
   CHECK(parse(valid_2d()).projection_iterations == 0);
   Json j = valid_2d();
@@ -282,7 +282,7 @@ TEST_CASE("the pressure projection is off unless asked for, and needs the splat-
   CHECK(parse(j).obstacles.size() == 1);  // a static obstacle is solid to the projection
   j["obstacles"][0]["dynamic"] = true;
   j["obstacles"][0]["density"] = 500;
-  REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: obstacles[0].dynamic: not yet with \"projection_iterations\""));
+  CHECK(parse(j).obstacles[0].dynamic);  // and a body too
 }
 
 TEST_CASE("whitewater is off unless asked for, and {} takes every default", "[scene][whitewater]") {

@@ -30,6 +30,7 @@ struct Pool {
   float spacings_per_cell = 2.0f;
   float kernel_radius_cells = 3.0f;
   float pic_ratio = 0.3f;
+  int projection_iterations = 0;  // 0: the equation of state
 };
 
 liquid::Scene pool_scene(const Pool& pool, float density, float bottom_height, glm::vec3 velocity = glm::vec3(0.0f)) {
@@ -51,6 +52,7 @@ liquid::Scene pool_scene(const Pool& pool, float density, float bottom_height, g
   // water is hydrostatic (docs/physics.md, "Bodies that float").
   scene.pressure_force = liquid::PressureForce::SplatAdjoint;
   scene.splat = liquid::SplatMode::Separable;
+  scene.projection_iterations = pool.projection_iterations;
   glm::vec3 top = pool.domain;
   top.y = pool.depth;
   scene.fluid_blocks.push_back({glm::vec3(0.0f), top, glm::vec3(0.0f)});
@@ -723,4 +725,10 @@ TEST_CASE("the shipped floating-box scenes stay stable for 5 s, every body insid
     test::require_conserved(node, d, count);
   }
   REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("projection drafts experiment", "[.][projection_drafts]") {
+  Pool pool;
+  pool.projection_iterations = 10;
+  for (float density : {500.0f, 300.0f, 800.0f}) check_floating_box(pool, k_settle_2d_seconds, k_measure_seconds, density);
 }

@@ -12,12 +12,27 @@
 // the surface integral of Phi = W^T P, which still water holds
 // hydrostatic (grad Phi = g) whatever its single cells' P do (docs/physics.md, "Bodies that float").
 // The torque: rotating the body moves its coverage the same way about its centre.
+// PROJECTION: the body is solid to the pressure projection (projection.glsl), and p / rho0 is the
+// projection's, the liquid's pressure on the body's faces with whatever the body's motion asks of
+// the liquid (so no exchange pass). The cells inside the body, where dC/dX is nonzero too, have no
+// p: there it is continued from the liquid cells nearest along the axes as still water's,
+// p_q + g.(x_c - x_q), their mean (solid_pressure()). Where p is hydrostatic the sum is then
+// rho0 |g| times the body's share below the surface: Archimedes.
 #extension GL_GOOGLE_include_directive : require
 #define LIQUID_BODIES
 #include "liquid/common.glsl"
 #include "liquid/solver/pressure.glsl"
 
+#ifndef PROJECTION
+#define PROJECTION 0
+#endif
+
+// The equation of state's P, or the projection's (p / rho0, psi).
 layout(set = 0, binding = LIQUID_BINDING_BODY_CELL_PRESSURE) uniform GRID_SAMPLER u_cell_pressure;
+#if PROJECTION
+layout(set = 0, binding = LIQUID_BINDING_GRID_SPLAT) uniform GRID_SAMPLER u_splat;
+#include "liquid/solver/projection.glsl"
+#endif
 
 layout(push_constant) uniform BodyForcePush {
   int body;  // the obstacle
@@ -34,6 +49,51 @@ float state_pressure(float tait) {
   float ratio = pow(ratio_power, 1.0 / u.gamma);
   return u.stiffness * u.gamma / (u.gamma + 1.0) * (ratio_power * ratio - 1.0);
 }
+
+#if PROJECTION
+// p / rho0 (m^2/s^2) at liquid cell q, or 0 where q is air or solid (`liquid` false).
+float liquid_pressure(ivec3 q, out bool liquid) {
+  SolidObstacle o = nearest_solid_obstacle(q);
+  liquid = o.distance >= 0.0 && liquid_fraction(q, fetch_grid(u_splat, q), o) >= k_surface_fraction;
+  return liquid ? fetch_grid(u_cell_pressure, q).r : 0.0;
+}
+
+// p / rho0 at solid cell c, continued from the nearest liquid cell along each axis within the
+// kernel's reach (past it dC/dX is zero) as still water's pressure, the candidates' mean; 0 where
+// none is found (above the surface). A cell of air between stops the search.
+float solid_pressure(ivec3 c) {
+  const ivec3 n = grid_cells();
+  const int reach = int(ceil(u.kernel_radius)) + 1;
+  float sum = 0.0, count = 0.0;
+  [[unroll]] for (int a = 0; a < DIM; ++a) {
+    [[unroll]] for (int side = -1; side <= 1; side += 2) {
+      for (int k = 1; k <= reach; ++k) {
+        ivec3 q = c;
+        q[a] += side * k;
+        if (q[a] < 0 || q[a] >= n[a]) break;
+        if (nearest_solid_obstacle(q).distance < 0.0) continue;  // still inside
+        bool liquid;
+        float p = liquid_pressure(q, liquid);
+        if (liquid) {
+          sum += p + dot(u.gravity, cell_center(c) - cell_center(q));
+          count += 1.0;
+        }
+        break;
+      }
+    }
+  }
+  return count > 0.0 ? max(sum / count, 0.0) : 0.0;
+}
+
+// The pressure (p / rho0, m^2/s^2) that acts on the body's coverage at cell c.
+float cell_pressure(ivec3 c) {
+  if (nearest_solid_obstacle(c).distance < 0.0) return solid_pressure(c);
+  bool liquid;
+  return liquid_pressure(c, liquid);
+}
+#else
+float cell_pressure(ivec3 c) { return state_pressure(fetch_grid(u_cell_pressure, c).r); }
+#endif
 
 #if DIM == 3
 const float k_cell_power = 3.0;
@@ -53,11 +113,12 @@ void main() {
   const vec3 x = cell_center(c);
   // The coverage changes within r of the surface, and the differences reach a cell further.
   if (abs(obstacle_distance(pc.body, x)) >= (u.kernel_radius + 1.0) * h) return;
-  if (liquid_coverage(c) <= k_min_body_coverage) return;  // under the clamp C does not move
+  // Under the clamp C does not move (the projection's liquid fraction has no such clamp).
+  if (PROJECTION == 0 && liquid_coverage(c) <= k_min_body_coverage) return;
   // C = the walls' share - the bodies' shares at x and at its images (liquid_coverage), so
   // dC/dX = the gradient of this body's share at each image q, and a turn about the centre moves
   // it by (q - X) x that gradient.
-  const float p = state_pressure(fetch_grid(u_cell_pressure, c).r);
+  const float p = cell_pressure(c);
   if (p == 0.0) return;
   const float weight = u.rest_density * p * pow(h, k_cell_power);
   for (int k = 0; k < body_image_count(); ++k) {

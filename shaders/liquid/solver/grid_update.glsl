@@ -53,7 +53,7 @@ vec2 projection_solution_at(ivec3 c, vec2 sc, float fc, int a, int side) {
   ivec3 q = c;
   q[a] += side;
   if (q[a] < 0 || q[a] >= grid_cells()[a]) return vec2(sc.x + wall_ghost_rise_along(a, q[a]), sc.y);
-  StaticObstacle nearest = nearest_static_obstacle(q);
+  SolidObstacle nearest = nearest_solid_obstacle(q);
   if (nearest.distance < 0.0) return vec2(sc.x + float(side) * u.gravity[a] * cell_size(), sc.y);
   float fq = liquid_fraction(q, fetch_grid(u_splat, q), nearest);
   if (fc >= k_surface_fraction && fq < k_surface_fraction) return sc * (1.0 - 1.0 / surface_distance(fc, fq));

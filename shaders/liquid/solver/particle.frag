@@ -23,6 +23,9 @@ layout(set = 0, binding = LIQUID_BINDING_PARTICLE_DEPOSIT_UPPER) uniform GRID_SA
 // A constant, not a branch on the uniform: with `if (u.position_correction > 0.0)` lavapipe (Mesa
 // 22.3) grew by 1.5 MB a step, whatever the value (it specializes shaders on uniforms that branches read).
 layout(constant_id = LIQUID_PARTICLE_POSITION_CORRECTION_ID) const bool POSITION_CORRECTION = false;
+#ifndef PROJECTION
+#define PROJECTION 0
+#endif
 #if PROJECTION
 layout(set = 0, binding = LIQUID_BINDING_PARTICLE_CORRECTION) uniform GRID_SAMPLER u_correction;  // -grad psi
 #endif
@@ -154,15 +157,18 @@ void emit(int index, EmitterRange e) {
 
 // Obstacle i: a particle at x inside it or within `skin` of it is moved back to that distance from
 // its surface (kept in [lo, hi]) and loses its velocity v into it, relative to the obstacle's
-// material there; a dynamic one's only to a tenth of `skin`, and keeps its velocity (main()).
+// material there. Under the equation of state a dynamic body's only to a tenth of `skin`, keeping
+// its velocity (main()): its force is the liquid's density over its kernel coverage, which a gap
+// would read low; under the projection a body is solid as a static obstacle is (projection.glsl).
 void push_out(int i, MeshSample meshes, float skin, vec3 lo, vec3 hi, inout vec3 x, inout vec3 v) {
   if (i >= obstacle_count()) return;
   float d = obstacle_distance(i, x, meshes);
-  float reach = obstacle_dynamic(i) ? 0.1 * skin : skin;
+  bool light_touch = obstacle_dynamic(i) && PROJECTION == 0;
+  float reach = light_touch ? 0.1 * skin : skin;
   if (d >= reach) return;
   vec3 normal = obstacle_normal(i, x, meshes);
   x = clamp_to_bounds(x + (reach - d) * normal, lo, hi);
-  if (obstacle_dynamic(i)) return;
+  if (light_touch) return;
   float into = dot(v - obstacle_velocity_at(i, x), normal);
   if (into < 0.0) v -= into * normal;
 }

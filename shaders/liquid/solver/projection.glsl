@@ -30,38 +30,47 @@ const float k_density_correction_rate = 0.2;
 // their level (docs/physics.md, "The density correction", which also gives a run without it).
 const float k_surface_excess_margin = 0.1;
 
-// Static obstacles: a cell whose centre lies inside one is solid, like a wall: its faces carry the
+// Solid obstacles: a cell whose centre lies inside one is solid, like a wall: its faces carry the
 // obstacle's velocity (none through a still one) and it drops out of its liquid neighbours' rows
 // (Neumann), so the liquid rests on it with its hydrostatic pressure instead of meeting a free
-// surface there. Dynamic bodies are not solid to the projection.
-// The nearest static obstacle at cell c's centre: its index (-1: none) and signed distance (m).
-struct StaticObstacle {
+// surface there. The static obstacles are solid in every pass that includes this file; the dynamic
+// bodies in the passes that read their state (LIQUID_BODIES: the row, grid and body force passes),
+// so the liquid moves with a body and its pressure on it is the body's force (body_force.vert).
+// The nearest solid obstacle at cell c's centre: its index (-1: none) and signed distance (m).
+struct SolidObstacle {
   int index;
   float distance;
 };
-StaticObstacle nearest_static_obstacle(ivec3 c) {
-  StaticObstacle nearest = StaticObstacle(-1, LIQUID_MESH_FAR);
+bool solid_to_projection(int i) {
+#ifdef LIQUID_BODIES
+  return i < obstacle_count();
+#else
+  return i < obstacle_count() && !obstacle_dynamic(i);
+#endif
+}
+SolidObstacle nearest_solid_obstacle(ivec3 c) {
+  SolidObstacle nearest = SolidObstacle(-1, LIQUID_MESH_FAR);
   if (obstacle_count() == 0) return nearest;
   vec3 p = cell_center(c);
   MeshSample meshes = mesh_sample_at_cell(c, false);
-#define LIQUID_NEAREST_STATIC(i)                                    \
-  if (i < obstacle_count() && !obstacle_dynamic(i)) {               \
+#define LIQUID_NEAREST_SOLID(i)                                     \
+  if (solid_to_projection(i)) {                                     \
     float d = obstacle_distance(i, p, meshes);                      \
-    if (d < nearest.distance) nearest = StaticObstacle(i, d);       \
+    if (d < nearest.distance) nearest = SolidObstacle(i, d);        \
   }
-  FOR_EACH_OBSTACLE(LIQUID_NEAREST_STATIC)
-#undef LIQUID_NEAREST_STATIC
+  FOR_EACH_OBSTACLE(LIQUID_NEAREST_SOLID)
+#undef LIQUID_NEAREST_SOLID
   return nearest;
 }
 
-// The liquid beside a static obstacle ends about a quarter cell past the particles' skin (half a
+// The liquid beside a solid obstacle ends about a quarter cell past the particles' skin (half a
 // spacing, a spacing being about half a cell), in cells from the obstacle's surface.
 const float k_obstacle_liquid_edge_cells = LIQUID_OBSTACLE_SKIN_CELLS - 0.25;
 
-// Of cell c whose splat is `splat` and nearest static obstacle `o` (for a pass that has them
+// Of cell c whose splat is `splat` and nearest solid obstacle `o` (for a pass that has them
 // already), and of cell c: over the kernel's share inside the domain less its share past the
 // obstacle's liquid edge (the plane there: the body table's lattice share). 0 in a solid cell.
-float liquid_fraction(ivec3 c, vec4 splat, StaticObstacle o) {
+float liquid_fraction(ivec3 c, vec4 splat, SolidObstacle o) {
   float coverage = cell_coverage(c);
   if (o.distance < 0.0) return 0.0;
   if (o.index >= 0) {
@@ -70,7 +79,7 @@ float liquid_fraction(ivec3 c, vec4 splat, StaticObstacle o) {
   }
   return u.density_scale * splat.a / (coverage * u.rest_density);
 }
-float liquid_fraction(ivec3 c, vec4 splat) { return liquid_fraction(c, splat, nearest_static_obstacle(c)); }
+float liquid_fraction(ivec3 c, vec4 splat) { return liquid_fraction(c, splat, nearest_solid_obstacle(c)); }
 float liquid_fraction(ivec3 c) { return liquid_fraction(c, fetch_grid(u_splat, c)); }
 
 // The distance, in cells, from the centre of liquid cell c (fraction fc) to the surface toward its

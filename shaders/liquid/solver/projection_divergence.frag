@@ -2,17 +2,19 @@
 // Pressure projection, first pass: each liquid cell's row of the Poisson equation lap p = div u* / dt
 // that the Jacobi passes solve, where u* = u + dt (g + f_ext) is the velocity the step would have
 // without pressure (u the splat's). The divergence takes face velocities as the means of the two
-// cells' (a cell the splat does not reach takes its neighbour's); a wall's face carries none, a solid
-// cell's (a static obstacle's: projection.glsl) the obstacle's velocity. The row's diagonal counts
-// 1 per liquid neighbour and 1/theta per air one (the ghost pressure p (1 - 1/theta) that puts
-// p = 0 on the surface: projection.glsl); a wall's or a solid cell's face drops out.
+// cells' (a cell the splat does not reach takes its neighbour's); a wall's face carries none, a
+// solid cell's (a static obstacle's or a dynamic body's: projection.glsl) the obstacle's velocity.
+// The row's diagonal counts 1 per liquid neighbour and 1/theta per air one (the ghost pressure
+// p (1 - 1/theta) that puts p = 0 on the surface: projection.glsl); a wall's or a solid cell's face
+// drops out.
 // The density correction's row shares the diagonal; its right side is -rate e h^2, e = rho / rho0 - 1
 // where no air lies within the kernel's reach of the cell (along the axes, ceil(r) cells away) and no
-// static obstacle either, and only its excess beyond a margin elsewhere: a cell near the surface
+// solid obstacle either, and only its excess beyond a margin elsewhere: a cell near the surface
 // reads the air above it as a deficit that gathering liquid into it would not fill, only draw the
 // surface down; beside an obstacle the particles' skin leaves a gap the same way.
 // Output: target 0 = (h^2 div u* / dt, the diagonal's weight, -rate e h^2, 0) in liquid cells; 0 in air.
 #extension GL_GOOGLE_include_directive : require
+#define LIQUID_BODIES  // the bodies are solid (projection.glsl)
 #include "liquid/common.glsl"
 #include "liquid/solver/grid_fragment.glsl"
 #include "liquid/solver/pressure.glsl"
@@ -35,7 +37,7 @@ void main() {
     return;
   }
   vec4 splat = fetch_grid(u_splat, c);
-  StaticObstacle nearest = nearest_static_obstacle(c);
+  SolidObstacle nearest = nearest_solid_obstacle(c);
   float fc = liquid_fraction(c, splat, nearest);  // 0 in a solid cell: no row
   if (fc < k_surface_fraction) {
     out_system = vec4(0.0);
@@ -52,7 +54,7 @@ void main() {
       ivec3 q = c;
       q[a] += side;
       if (q[a] < 0 || q[a] >= n[a]) continue;  // a wall: no flow, no term
-      StaticObstacle solid = nearest_static_obstacle(q);
+      SolidObstacle solid = nearest_solid_obstacle(q);
       if (solid.distance < 0.0) {  // the obstacle's flow through the face, no term
         vec3 face = cell_center(c);
         face[a] += 0.5 * float(side) * h;
