@@ -6,6 +6,7 @@
 #include "liquid/physics/body.h"
 #include "liquid/physics/mesh.h"
 #include "liquid/solver/simulation.h"
+#include "shaders/liquid/shared.h"
 #include "tests/gpu/liquid_helpers.h"
 #include "tests/support/meshes.h"
 
@@ -727,8 +728,62 @@ TEST_CASE("the shipped floating-box scenes stay stable for 5 s, every body insid
   REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
-TEST_CASE("projection drafts experiment", "[.][projection_drafts]") {
-  Pool pool;
+// Under the pressure projection ("projection_iterations") a body is solid to the liquid and its
+// force is the projection's pressure on it (body_force.vert). The pools above with 10 iterations.
+Pool under_projection(Pool pool) {
   pool.projection_iterations = 10;
-  for (float density : {500.0f, 300.0f, 800.0f}) check_floating_box(pool, k_settle_2d_seconds, k_measure_seconds, density);
+  return pool;
+}
+
+// Archimedes for 300, 500 and 800 kg/m^3 in 2D (measured 0.9, 1.2 and 0.9 % short; the equation of
+// state floats the 300 one 19.6 % short) and 500 in 3D (0.7 %; 800: 3.2 % short, 300: 9 % short,
+// docs/physics.md, "Bodies under the projection").
+TEST_CASE("under the pressure projection boxes of 300 500 and 800 kg/m^3 float at their drafts in 2D", "[gpu][liquid][bodies]") {
+  for (const float density : {300.0f, 500.0f, 800.0f})
+    check_floating_box(under_projection(Pool{}), k_settle_2d_seconds, k_measure_seconds, density);
+  REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("under the pressure projection a 3D box of half the water's density floats at its draft", "[gpu][liquid][bodies]") {
+  check_floating_box(under_projection(coarse_3d_pool()), k_settle_3d_seconds, k_measure_seconds);
+  REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+// A box of 1,200 kg/m^3 in a liquid of PIC 0.002 per step sinks to the floor: within 1.2 s its lowest
+// corner rests where the integrator stops a body under the projection, the particles' skin (half a
+// cell, here one spacing) above it (measured: there from 1.0 s). Not yet checked: that it stays flat
+// there (from 1.5 s a torque tips it over and it tumbles: docs/physics.md, "Bodies under the
+// projection").
+TEST_CASE("under the pressure projection a 2D box denser than water sinks to the floor", "[gpu][liquid][bodies]") {
+  const Pool pool = under_projection(deep_pool(0.002f));
+  liquid::LiquidNode node(test::gpu(), pool_scene(pool, 1200.0f, 0.05f));
+  const int count = node.active_particles();
+  run_body(node, 1.2);
+  const liquid::BodyState b = node.read_bodies().at(0);
+  // Its lowest corner: the centre less the box's half extent along y in the world frame.
+  const glm::vec3 across = b.pose.orientation * glm::vec3(pool.half_extent.x, 0.0f, 0.0f);
+  const glm::vec3 up = b.pose.orientation * glm::vec3(0.0f, pool.half_extent.y, 0.0f);
+  const double bottom = b.pose.center.y - std::abs(across.y) - std::abs(up.y);
+  const double skin = LIQUID_OBSTACLE_SKIN_CELLS * node.cell_size();
+  INFO("lowest corner " << bottom << " m above the floor after " << node.time() << " s (the skin " << skin
+                        << " m), vertical speed " << b.pose.velocity.y << " m/s, liquid force " << b.force.y << " N/m");
+  CHECK(bottom < skin + 0.01 * node.scene().particle_spacing);
+  test::require_conserved(node, node.diagnose(), count);
+  REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+// A box of the water's density stays where it is put, as the test above under the equation of state
+// (measured: 0 to +3.3 % of its start height over 5 s).
+TEST_CASE("under the pressure projection a 2D box as dense as water stays where it is put", "[gpu][liquid][bodies]") {
+  const Pool pool = under_projection(deep_pool());
+  liquid::LiquidNode node(test::gpu(), pool_scene(pool, 1000.0f, 0.05f));
+  const double start = 0.05 + pool.half_extent.y;
+  const Track track = run_body(node, 5.0);
+  double lowest = start, highest = start;
+  for (double y : track.height) lowest = std::min(lowest, y), highest = std::max(highest, y);
+  WARN("neutral box under the projection: " << 100.0 * (lowest - start) / start << " to " << 100.0 * (highest - start) / start
+                                            << " % of its start height");
+  CHECK(lowest > 0.95 * start);
+  CHECK(highest < 1.05 * start);
+  REQUIRE_NO_VALIDATION_MESSAGES();
 }

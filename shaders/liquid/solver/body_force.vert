@@ -12,12 +12,17 @@
 // the surface integral of Phi = W^T P, which still water holds
 // hydrostatic (grad Phi = g) whatever its single cells' P do (docs/physics.md, "Bodies that float").
 // The torque: rotating the body moves its coverage the same way about its centre.
-// PROJECTION: the body is solid to the pressure projection (projection.glsl), and p / rho0 is the
-// projection's, the liquid's pressure on the body's faces with whatever the body's motion asks of
-// the liquid (so no exchange pass). The cells inside the body, where dC/dX is nonzero too, have no
-// p: there it is continued from the liquid cells nearest along the axes as still water's,
+// PROJECTION: the body is solid to the pressure projection (projection.glsl), and the force is the
+// projection's pressure on it, with whatever the body's motion asks of the liquid (so no exchange
+// pass): summed over the faces between neighbouring cells c and q (the walls' faces included),
+// F = sum_f rho0 p_f (S_q - S_c) n h^(d-1), with n the axis from c to q, S the body's share of each
+// cell (force_share()) and p_f the mean of the two cells' p / rho0. The cells inside the body have
+// no p: there it is continued from the liquid cells nearest along the axes as still water's,
 // p_q + g.(x_c - x_q), their mean (solid_pressure()). Where p is hydrostatic the sum is then
-// rho0 |g| times the body's share below the surface: Archimedes.
+// rho0 |g| times the body's volume below the surface: Archimedes. (The cell form above,
+// sum_c p_c grad S_c by central differences, is the same sum inside the grid, but it lost the face
+// on a wall, half a cell's share: a box on the floor lost half its bottom's push and was pressed
+// down.)
 #extension GL_GOOGLE_include_directive : require
 #define LIQUID_BODIES
 #include "liquid/common.glsl"
@@ -91,8 +96,27 @@ float cell_pressure(ivec3 c) {
   bool liquid;
   return liquid_pressure(c, liquid);
 }
+
+// The body's share of the cell (a cube one cell wide) centred at p: the projection's force needs the
+// volume it takes from the liquid, not the kernel's view of it. A box's is the product of its slabs'
+// overlaps with the cell along its own axes (exact while it is aligned with the grid); a sphere's
+// or a mesh's the plane's, 1/2 - d/h clamped. With the kernel's share, smoothed over r cells, a box
+// whose draft is within r of its bottom counted some of its bottom's share above the surface and
+// floated high (3D, 300 kg/m^3: 10 % short at r = 2).
+float force_share(vec3 p) {
+  float h = cell_size();
+  if (obstacle_kind(pc.body) != LIQUID_OBSTACLE_BOX) return clamp(0.5 - obstacle_distance(pc.body, p) / h, 0.0, 1.0);
+  vec3 local = quat_rotate_inverse(obstacle_frame(pc.body).orientation, obstacle_offset(pc.body, p)) / h;
+  vec3 e = u.obstacles[pc.body].box_half_extent / h;
+  float share = 1.0;
+  [[unroll]] for (int a = 0; a < DIM; ++a) share *= clamp(min(local[a] + 0.5, e[a]) - max(local[a] - 0.5, -e[a]), 0.0, 1.0);
+  return share;
+}
+const float k_force_share_reach_cells = 0.5;  // how far past the surface force_share changes
 #else
 float cell_pressure(ivec3 c) { return state_pressure(fetch_grid(u_cell_pressure, c).r); }
+float force_share(vec3 p) { return body_share_at(pc.body, p); }
+#define k_force_share_reach_cells u.kernel_radius
 #endif
 
 #if DIM == 3
@@ -111,10 +135,34 @@ void main() {
   v_torque = vec3(0.0);
   const float h = cell_size();
   const vec3 x = cell_center(c);
-  // The coverage changes within r of the surface, and the differences reach a cell further.
-  if (abs(obstacle_distance(pc.body, x)) >= (u.kernel_radius + 1.0) * h) return;
-  // Under the clamp C does not move (the projection's liquid fraction has no such clamp).
-  if (PROJECTION == 0 && liquid_coverage(c) <= k_min_body_coverage) return;
+  // The share changes within its reach of the surface, and the differences reach a cell further.
+  if (abs(obstacle_distance(pc.body, x)) >= (k_force_share_reach_cells + 1.0) * h) return;
+#if PROJECTION
+  // The faces on c's upper side along each axis, and on its lower side at a wall.
+  const float s_c = force_share(x);
+  const float p_c = cell_pressure(c);
+  const float area = u.rest_density * pow(h, k_cell_power - 1.0);
+  [[unroll]] for (int a = 0; a < DIM; ++a) {
+    [[unroll]] for (int side = -1; side <= 1; side += 2) {
+      ivec3 q = c;
+      q[a] += side;
+      const bool wall = q[a] < 0 || q[a] >= n[a];
+      if (side < 0 && !wall) continue;  // that face is q's upper one
+      vec3 face = x;
+      face[a] += 0.5 * float(side) * h;
+      // Beyond a wall no cell holds the body: its share is 0 and p is continued as still water's.
+      const float s_q = wall ? 0.0 : force_share(cell_center(q));
+      if (s_q == s_c) continue;
+      const float p_f = wall ? p_c + 0.5 * float(side) * h * u.gravity[a] : 0.5 * (p_c + cell_pressure(q));
+      vec3 f = vec3(0.0);
+      f[a] = float(side) * area * p_f * (s_q - s_c);
+      v_force += f;
+      v_torque += cross(obstacle_offset(pc.body, face), f);
+    }
+  }
+#else
+  // Under the clamp C does not move.
+  if (liquid_coverage(c) <= k_min_body_coverage) return;
   // C = the walls' share - the bodies' shares at x and at its images (liquid_coverage), so
   // dC/dX = the gradient of this body's share at each image q, and a turn about the centre moves
   // it by (q - X) x that gradient.
@@ -127,11 +175,12 @@ void main() {
     [[unroll]] for (int a = 0; a < DIM; ++a) {
       vec3 e = vec3(0.0);
       e[a] = h;
-      grad_share[a] = (body_share_at(pc.body, q + e) - body_share_at(pc.body, q - e)) / (2.0 * h);
+      grad_share[a] = (force_share(q + e) - force_share(q - e)) / (2.0 * h);
     }
     v_force += weight * grad_share;
     v_torque += cross(obstacle_offset(pc.body, q), weight * grad_share);
   }
+#endif
   if (dot(v_force, v_force) == 0.0 && dot(v_torque, v_torque) == 0.0) return;
   gl_Position = vec4(0.0, (float(pc.body) + 0.5) / float(obstacle_count()) * 2.0 - 1.0, 0.0, 1.0);
 }
