@@ -40,6 +40,48 @@ vec3 world_half_extent(int i, vec4 q) {
          abs(quat_rotate(q, vec3(0.0, 0.0, e.z)));
 }
 
+// A box against the wall of `axis` on `side` (-1 the low one) under the projection, `gap` short of
+// it: the corners past that plane are moved back (the centre with them), and the box meets the wall
+// at its corners, not at its centre. The contact point is the corners' mean weighted by how far each
+// is past the plane; if it moves into the wall, an impulse along the wall's normal there stops it
+// (inelastic, no friction), with the added mass and inertia. A box tilted on the floor then turns
+// back about its lower corner as the liquid presses it down, instead of being free to tip over: the
+// centre's stop gave no torque, and the liquid's own torque on a box resting half a cell above the
+// floor tipped it over (docs/physics.md, "Bodies under the projection").
+void box_wall_contact(int i, Body b, vec4 q, int axis, int side, float gap, inout vec3 x, inout vec3 v, inout vec3 w) {
+  const vec3 e = u.obstacles[i].box_half_extent;
+  const float wall = side < 0 ? gap : u.domain[axis] - gap;
+  float deepest = 0.0, weight = 0.0;
+  vec3 point = vec3(0.0);
+  [[unroll]] for (int k = 0; k < (DIM == 3 ? 8 : 4); ++k) {
+    const vec3 corner_sign = vec3((k & 1) != 0 ? 1.0 : -1.0, (k & 2) != 0 ? 1.0 : -1.0, DIM == 3 && (k & 4) != 0 ? 1.0 : -1.0);
+    const vec3 corner = x + quat_rotate(q, corner_sign * e);
+    const float past = side < 0 ? wall - corner[axis] : corner[axis] - wall;
+    deepest = max(deepest, past);
+    if (past > 0.0) {
+      point += past * corner;
+      weight += past;
+    }
+  }
+  if (weight <= 0.0) return;
+  point /= weight;
+  x[axis] -= float(side) * deepest;
+  vec3 n = vec3(0.0);
+  n[axis] = -float(side);  // into the domain
+  const vec3 r = point - x;
+  const float into = dot(v + cross(w, r), n);
+  if (into >= 0.0) return;
+  const float mass = b.mass + b.added_mass;
+  const vec3 inertia = b.inertia * (1.0 + b.added_inertia_ratio);
+  const vec3 turn = inertia_solve(q, inertia, cross(r, n));  // I^-1 (r x n)
+  const float impulse = -into / (1.0 / mass + dot(n, cross(turn, r)));
+  v += impulse * n / mass;
+  w += impulse * turn;
+#if DIM == 2
+  w.xy = vec2(0.0);
+#endif
+}
+
 void main() {
   const ivec2 texel = ivec2(gl_FragCoord.xy);
   const int i = texel.y;
@@ -78,7 +120,13 @@ void main() {
   // box on the floor was thrown up at 3 m/s: docs/physics.md, "Bodies under the projection").
   const vec3 e = world_half_extent(i, q) + (PROJECTION != 0 ? LIQUID_OBSTACLE_SKIN_CELLS * cell_size() : 0.0);
   const vec3 v_free = v;
+  const bool box_contact = PROJECTION != 0 && obstacle_kind(i) == LIQUID_OBSTACLE_BOX;
   [[unroll]] for (int axis = 0; axis < DIM; ++axis) {
+    if (box_contact) {
+      box_wall_contact(i, b, q, axis, -1, LIQUID_OBSTACLE_SKIN_CELLS * cell_size(), x, v, w);
+      box_wall_contact(i, b, q, axis, 1, LIQUID_OBSTACLE_SKIN_CELLS * cell_size(), x, v, w);
+      continue;
+    }
     const float lo = e[axis], hi = u.domain[axis] - e[axis];
     if (x[axis] < lo) {
       x[axis] = lo;

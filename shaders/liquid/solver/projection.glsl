@@ -70,9 +70,24 @@ const float k_obstacle_liquid_edge_cells = LIQUID_OBSTACLE_SKIN_CELLS - 0.25;
 // Of cell c whose splat is `splat` and nearest solid obstacle `o` (for a pass that has them
 // already), and of cell c: over the kernel's share inside the domain less its share past the
 // obstacle's liquid edge (the plane there: the body table's lattice share). 0 in a solid cell.
+// A cell beside a wall whose centre lies within the particles' skin of a body (the row under a body
+// that rests the skin above the floor: body.frag) holds the film of liquid the body rests on, liquid
+// at rest density wherever particles reach it. Read from its splat it was partly air, with p = 0
+// under one side of a box on the floor and the still water's pressure under the other: the box
+// tipped over toward its bare side and tumbled (docs/physics.md, "Bodies under the projection").
+bool film_under_body(ivec3 c, vec4 splat, SolidObstacle o) {
+  if (o.index < 0 || !obstacle_dynamic(o.index) || o.distance >= LIQUID_OBSTACLE_SKIN_CELLS * cell_size()) return false;
+  if (splat.a <= k_fluid_epsilon) return false;
+  ivec3 n = grid_cells();
+  bool beside_wall = false;
+  [[unroll]] for (int a = 0; a < DIM; ++a) beside_wall = beside_wall || c[a] == 0 || c[a] == n[a] - 1;
+  return beside_wall;
+}
+
 float liquid_fraction(ivec3 c, vec4 splat, SolidObstacle o) {
   float coverage = cell_coverage(c);
   if (o.distance < 0.0) return 0.0;
+  if (film_under_body(c, splat, o)) return 1.0;
   if (o.index >= 0) {
     float share = share_past_plane(o.distance / cell_size() - k_obstacle_liquid_edge_cells);
     coverage = max(coverage - share, k_min_body_coverage);
