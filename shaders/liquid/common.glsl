@@ -446,17 +446,18 @@ float ground_height(vec2 p) {
 }
 
 // External forces f_ext (eq. 2): brushes with a smooth (1 - d^2/R^2)^2 falloff.
+vec3 brush_acceleration(Brush b, vec3 p) {
+  vec3 d = p - b.position;
+#if DIM == 2
+  d.z = 0.0;
+#endif
+  float q = dot(d, d) / (b.radius * b.radius);
+  return q < 1.0 ? b.acceleration * (1.0 - q) * (1.0 - q) : vec3(0.0);
+}
+// At p, summed over the brushes.
 vec3 external_acceleration(vec3 p) {
   vec3 a = vec3(0.0);
-  for (int i = 0; i < u.brush_count; ++i) {
-    Brush b = u.brushes[i];
-    vec3 d = p - b.position;
-#if DIM == 2
-    d.z = 0.0;
-#endif
-    float q = dot(d, d) / (b.radius * b.radius);
-    if (q < 1.0) a += b.acceleration * (1.0 - q) * (1.0 - q);
-  }
+  for (int i = 0; i < u.brush_count; ++i) a += brush_acceleration(u.brushes[i], p);
   return a;
 }
 

@@ -25,9 +25,26 @@ layout(set = 0, binding = LIQUID_BINDING_PRESSURE_SPLAT) uniform GRID_SAMPLER u_
 
 layout(location = 0) out vec4 out_system;
 
-// u* at cell c whose splat is s.
-vec3 provisional_velocity(ivec3 c, vec4 s) {
-  return s.rgb / max(s.a, k_fluid_epsilon) + u.dt * (u.gravity + external_acceleration(cell_center(c)));
+// u* of a cell whose splat is s and where the brushes' acceleration is f.
+vec3 provisional_velocity(vec4 s, vec3 f) { return s.rgb / max(s.a, k_fluid_epsilon) + u.dt * (u.gravity + f); }
+
+// The brushes' acceleration f_ext at cell c's centre, and along each axis a at its neighbours' on
+// that axis (at [2 a] the lower, [2 a + 1] the upper), in one pass over the brushes: a pass per
+// neighbour (external_acceleration()) cost lavapipe more than half of this pass's time, brushes or
+// none (docs/physics.md, "A pressure projection").
+vec3 brush_accelerations(ivec3 c, out float along[2 * DIM]) {
+  vec3 x = cell_center(c), here = vec3(0.0);
+  [[unroll]] for (int k = 0; k < 2 * DIM; ++k) along[k] = 0.0;
+  for (int i = 0; i < u.brush_count; ++i) {
+    Brush b = u.brushes[i];
+    here += brush_acceleration(b, x);
+    [[unroll]] for (int k = 0; k < 2 * DIM; ++k) {
+      vec3 p = x;
+      p[k / 2] += (k % 2 == 0 ? -1.0 : 1.0) * cell_size();
+      along[k] += brush_acceleration(b, p)[k / 2];
+    }
+  }
+  return here;
 }
 
 void main() {
@@ -44,7 +61,8 @@ void main() {
     return;
   }
   ivec3 n = grid_cells();
-  vec3 here = provisional_velocity(c, splat);
+  float f_along[2 * DIM];
+  vec3 here = provisional_velocity(splat, brush_accelerations(c, f_along));
   float divergence = 0.0, weight = 0.0;
   int reach = int(ceil(u.kernel_radius));
   float h = cell_size();
@@ -62,7 +80,8 @@ void main() {
         continue;
       }
       vec4 s = fetch_grid(u_splat, q);  // one read for the face's velocity and q's fraction
-      divergence += float(side) * (s.a > k_fluid_epsilon ? 0.5 * (here[a] + provisional_velocity(q, s)[a]) : here[a]);
+      float there = s.rgb[a] / max(s.a, k_fluid_epsilon) + u.dt * (u.gravity[a] + f_along[2 * a + (side + 1) / 2]);
+      divergence += float(side) * (s.a > k_fluid_epsilon ? 0.5 * (here[a] + there) : here[a]);
       float fq = liquid_fraction(q, s, solid);
       weight += fq >= k_surface_fraction ? 1.0 : 1.0 / surface_distance(fc, fq);
       q[a] = clamp(c[a] + side * reach, 0, n[a] - 1);  // the kernel's reach; a wall is no air
