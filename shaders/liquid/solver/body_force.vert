@@ -63,9 +63,11 @@ float liquid_pressure(ivec3 q, out bool liquid) {
   return liquid ? fetch_grid(u_cell_pressure, q).r : 0.0;
 }
 
-// p / rho0 at solid cell c, continued from the nearest liquid cell along each axis within the
-// kernel's reach (past it dC/dX is zero) as still water's pressure, the candidates' mean; 0 where
-// none is found (above the surface). A cell of air between stops the search.
+// p / rho0 at solid cell c, continued from the nearest liquid cell along each axis (within the
+// kernel's reach plus one: the share changes only across faces within a cell and a half of the
+// surface, so the cells that need p find liquid within two) as still water's pressure, the
+// candidates' mean; 0 where none is found (above the surface). A cell of air between stops the
+// search.
 float solid_pressure(ivec3 c) {
   const ivec3 n = grid_cells();
   const int reach = int(ceil(u.kernel_radius)) + 1;
@@ -100,9 +102,9 @@ float cell_pressure(ivec3 c) {
 // The body's share of the cell (a cube one cell wide) centred at p: the projection's force needs the
 // volume it takes from the liquid, not the kernel's view of it. A box's is the product of its slabs'
 // overlaps with the cell along its own axes (exact while it is aligned with the grid); a sphere's
-// or a mesh's the plane's, 1/2 - d/h clamped. With the kernel's share, smoothed over r cells, a box
-// whose draft is within r of its bottom counted some of its bottom's share above the surface and
-// floated high (3D, 300 kg/m^3: 10 % short at r = 2).
+// or a mesh's the plane's, 1/2 - d/h clamped. The kernel's share, smoothed over r cells, counts
+// some of a box's bottom above the surface where its draft is within r cells (docs/physics.md,
+// "Bodies under the projection").
 float force_share(vec3 p) {
   float h = cell_size();
   if (obstacle_kind(pc.body) != LIQUID_OBSTACLE_BOX) return clamp(0.5 - obstacle_distance(pc.body, p) / h, 0.0, 1.0);
