@@ -56,9 +56,9 @@ float state_pressure(float tait) {
 }
 
 #if PROJECTION
-// p / rho0 (m^2/s^2) at liquid cell q, or 0 where q is air or solid (`liquid` false).
-float liquid_pressure(ivec3 q, out bool liquid) {
-  SolidObstacle o = nearest_solid_obstacle(q);
+// p / rho0 (m^2/s^2) at liquid cell q whose nearest solid obstacle is o, or 0 where q is air or
+// solid (`liquid` false).
+float liquid_pressure(ivec3 q, SolidObstacle o, out bool liquid) {
   liquid = o.distance >= 0.0 && liquid_fraction(q, fetch_grid(u_splat, q), o) >= k_surface_fraction;
   return liquid ? fetch_grid(u_cell_pressure, q).r : 0.0;
 }
@@ -78,9 +78,10 @@ float solid_pressure(ivec3 c) {
         ivec3 q = c;
         q[a] += side * k;
         if (q[a] < 0 || q[a] >= n[a]) break;
-        if (nearest_solid_obstacle(q).distance < 0.0) continue;  // still inside
+        SolidObstacle o = nearest_solid_obstacle(q);
+        if (o.distance < 0.0) continue;  // still inside
         bool liquid;
-        float p = liquid_pressure(q, liquid);
+        float p = liquid_pressure(q, o, liquid);
         if (liquid) {
           sum += p + dot(u.gravity, cell_center(c) - cell_center(q));
           count += 1.0;
@@ -94,9 +95,10 @@ float solid_pressure(ivec3 c) {
 
 // The pressure (p / rho0, m^2/s^2) that acts on the body's coverage at cell c.
 float cell_pressure(ivec3 c) {
-  if (nearest_solid_obstacle(c).distance < 0.0) return solid_pressure(c);
+  SolidObstacle o = nearest_solid_obstacle(c);
+  if (o.distance < 0.0) return solid_pressure(c);
   bool liquid;
-  return liquid_pressure(c, liquid);
+  return liquid_pressure(c, o, liquid);
 }
 
 // The body's share of the cell (a cube one cell wide) centred at p: the projection's force needs the
