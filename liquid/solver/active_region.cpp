@@ -39,10 +39,10 @@ int active_region_bands(const GridLayout& layout) {
   return (layout.cells.y + LIQUID_ACTIVE_REGION_BAND_ROWS - 1) / LIQUID_ACTIVE_REGION_BAND_ROWS;
 }
 
-int active_region_margin_cells(const SimulationSetup& setup) {
+int active_region_margin_cells(const SimulationSetup& setup, bool projection) {
   const int r = int(std::ceil(setup.kernel_radius_cells));
   const int splat = setup.splat == SplatMode::Separable ? r + 1 : 0;
-  return splat + (setup.splat_adjoint_pressure ? r + 2 : 1);
+  return splat + (setup.splat_adjoint_pressure && !projection ? r + 2 : 1);
 }
 
 ActiveRegion::ActiveRegion(engine::vk::Context& context, const GridLayout& layout,

@@ -39,8 +39,11 @@ namespace liquid {
 //   - the chapter's grid pass: one neighbour of every cell with liquid: + 1;
 //   - the splat-adjoint pressure: the grid pass takes the potential at those neighbours, which
 //     gathers the pressure r cells around them (the pressure is not zero outside the liquid near
-//     obstacles): + r + 2.
-int active_region_margin_cells(const SimulationSetup& setup);
+//     obstacles): + r + 2;
+//   - the pressure projection (`projection`, which takes the splat-adjoint key but spreads no
+//     potential): the grid pass reads p and the liquid fractions at one neighbour of every cell
+//     the particles read, and p is zero outside the liquid: + 1.
+int active_region_margin_cells(const SimulationSetup& setup, bool projection);
 // Bands of LIQUID_ACTIVE_REGION_BAND_ROWS rows per slice (the last may be shorter).
 int active_region_bands(const GridLayout& layout);
 

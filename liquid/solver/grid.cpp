@@ -18,6 +18,8 @@ std::vector<engine::vk::DescriptorBinding> grid_bindings(const SolverVariant& va
   add_body_shapes_binding(bindings, VK_SHADER_STAGE_FRAGMENT_BIT);
   if (variant.splat_adjoint())
     bindings.push_back({LIQUID_BINDING_GRID_POTENTIAL, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
+  if (variant.projection())
+    bindings.push_back({LIQUID_BINDING_GRID_PROJECTION_SYSTEM, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
   add_mesh_field_binding(variant.meshes, bindings);
   add_active_region_binding(variant, bindings);
   return bindings;
@@ -58,6 +60,8 @@ void GridPass::add_to(engine::graph::RenderGraph& graph, const engine::vk::Unifo
         bind_body_shapes(bindings, b, step.body_shapes, linear_);
         if (variant_.splat_adjoint())
           bindings.bind_image(b, LIQUID_BINDING_GRID_POTENTIAL, step.pressure.phi, nearest_.handle());
+        if (variant_.projection())  // the cells' liquid fractions
+          bindings.bind_image(b, LIQUID_BINDING_GRID_PROJECTION_SYSTEM, step.pressure.system, nearest_.handle());
         bind_mesh_field(bindings, b, step.mesh_field, nearest_);
         GridImages written{b.write(step.grids.velocity, Access::ColorAttachmentWrite, load),
                            b.write(step.grids.density, Access::ColorAttachmentWrite, load), {}};

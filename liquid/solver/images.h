@@ -42,7 +42,8 @@ struct GridImages {
 struct PressureImages {
   ImageHandle pressure, potential, scratch;
   ImageHandle phi;
-  ImageHandle system;  // the pressure projection's per cell: (h^2 div u* / dt, the diagonal's weight)
+  ImageHandle system;  // the pressure projection's per cell: (h^2 div u* / dt, the diagonal's weight,
+                       // the density correction's right side, the liquid fraction)
 };
 
 // One step's images, as the passes leave them: the splat stage writes `splat` (and `region`), the

@@ -53,7 +53,9 @@ PressurePass::PressurePass(engine::vk::Context& context, const SolverVariant& va
   if (variant.projection()) {
     engine::vk::GraphicsPipelineDesc divergence = obstacle_grid_pipeline(
         "liquid.projection_divergence", variant, variant.shader(shaders::projection_divergence_frag), specialization);
-    divergence.color_formats = {k_projection_system_format};
+    // The row pass also takes the first Jacobi iteration, from the last step's p.
+    divergence.bindings.push_back({LIQUID_BINDING_PROJECTION_PRESSURE, DescriptorKind::SampledImage, VK_SHADER_STAGE_FRAGMENT_BIT});
+    divergence.color_formats = {k_projection_system_format, k_projection_pressure_format};
     divergence_.emplace(context, divergence);
     engine::vk::GraphicsPipelineDesc jacobi = grid_pipeline(
         "liquid.projection_jacobi", variant, variant.shader(shaders::projection_jacobi_frag),
@@ -94,25 +96,34 @@ PressureImages PressurePass::create_images(engine::graph::RenderGraph& graph) co
 
 void PressurePass::add_projection_to(engine::graph::RenderGraph& graph, const engine::vk::UniformSlice& uniforms,
                                      StepImages& step, bool stepping) const {
-  if (!stepping) return;  // p.phi: the last step's p
   PressureImages& p = step.pressure;
   const GridCells cells{variant_, step.region, nearest_};
   using engine::graph::AttachmentOptions;
-  // The system into `system`; then the iterations, from p.phi (the last step's p) through
-  // `pressure` and `potential` in turn, the last one writing p.phi again.
-  p.system = add_grid_cells_pass<ImageHandle>(
+  // The rows into `system` and the first iteration from p.phi (the last step's p) into `pressure`;
+  // then the other iterations through `potential` and `pressure` in turn, the last one writing p.phi
+  // again. Without a step only the cells' liquid fractions are needed (the grid pass reads them), and
+  // p.phi stays the last step's p.
+  struct Rows {
+    ImageHandle system, first_iterate;
+  };
+  const Rows rows = add_grid_cells_pass<Rows>(
       graph, *divergence_, uniforms, cells,
       [&](engine::passes::PassBindings& bindings, PassBuilder& b, const AttachmentOptions& load) {
         bindings.bind_image(b, LIQUID_BINDING_PRESSURE_SPLAT, step.splat, nearest_.handle());
+        bindings.bind_image(b, LIQUID_BINDING_PROJECTION_PRESSURE, p.phi, nearest_.handle());
         bindings.bind_image(b, LIQUID_BINDING_BODIES, step.bodies, nearest_.handle());
         bind_body_shapes(bindings, b, step.body_shapes, linear_);
         bind_mesh_field(bindings, b, step.mesh_field, nearest_);
-        return b.write(p.system, Access::ColorAttachmentWrite, load);
+        return Rows{b.write(p.system, Access::ColorAttachmentWrite, load),
+                    b.write(p.pressure, Access::ColorAttachmentWrite, load)};
       });
-  ImageHandle source = p.phi;
-  for (int i = 0; i < variant_.projection_iterations; ++i) {
+  p.system = rows.system;
+  p.pressure = rows.first_iterate;
+  if (!stepping) return;
+  ImageHandle source = p.pressure;
+  for (int i = 1; i < variant_.projection_iterations; ++i) {  // the scene allows no fewer than 2
     const bool last = i + 1 == variant_.projection_iterations;
-    ImageHandle& target = last ? p.phi : (i % 2 == 0 ? p.pressure : p.potential);
+    ImageHandle& target = last ? p.phi : (i % 2 == 1 ? p.potential : p.pressure);
     target = add_grid_cells_pass<ImageHandle>(
         graph, *jacobi_, uniforms, cells,
         [&](engine::passes::PassBindings& bindings, PassBuilder& b, const AttachmentOptions& load) {

@@ -124,7 +124,7 @@ gpu::SolverUniforms Simulation::uniforms_for(const StepInputs& step) const {
   gpu::SolverUniforms u = make_uniforms(scene_, setup_, step);
   u.atlas_columns = variant_.layout.tiles.x;
   u.atlas_rows = variant_.layout.tiles.y;
-  u.active_region_margin_cells = active_region_margin_cells(setup_);
+  u.active_region_margin_cells = active_region_margin_cells(setup_, variant_.projection());
   return u;
 }
 

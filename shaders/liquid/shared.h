@@ -86,6 +86,9 @@
 // Grid pass: the splatted grid; with the splat-adjoint pressure, the smoothed pressure Phi.
 #define LIQUID_BINDING_GRID_SPLAT 1
 #define LIQUID_BINDING_GRID_POTENTIAL 2
+// Grid pass under the pressure projection: the row pass's system, whose 4th channel is the cells'
+// liquid fraction.
+#define LIQUID_BINDING_GRID_PROJECTION_SYSTEM 3
 // Splat-adjoint pressure passes: the splat (pressure.frag), the cells' pressure (potential.frag).
 #define LIQUID_BINDING_PRESSURE_SPLAT 1
 #define LIQUID_BINDING_POTENTIAL_PRESSURE 1

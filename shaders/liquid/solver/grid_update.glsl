@@ -43,40 +43,75 @@ float potential_at(ivec3 c, int a, int offset) {
 
 #if PROJECTION
 #include "liquid/solver/projection.glsl"
-// The projection's (p, psi) (in u_potential) at the neighbour `side` (-1 or 1) cells from c along
-// axis a, as the difference at c needs them: beyond a wall p's hydrostatic ghost and psi's own (no
-// flow through it), in a solid cell c's continued as still water's, p + g.n h both ways (under an
-// overhang too, where the liquid presses against it from below), across the free surface from a
-// liquid cell the ghost-fluid values that put p = psi = 0 on the surface (projection_jacobi.frag).
-// sc and fc: c's (p, psi) and liquid fraction.
-vec2 projection_solution_at(ivec3 c, vec2 sc, float fc, int a, int side) {
-  ivec3 q = c;
-  q[a] += side;
-  if (q[a] < 0 || q[a] >= grid_cells()[a]) return vec2(sc.x + wall_ghost_rise_along(a, q[a]), sc.y);
-  SolidObstacle nearest = nearest_solid_obstacle(q);
-  if (nearest.distance < 0.0) return vec2(sc.x + float(side) * u.gravity[a] * cell_size(), sc.y);
-  float fq = liquid_fraction(q, fetch_grid(u_splat, q), nearest);
-  if (fc >= k_surface_fraction && fq < k_surface_fraction) return sc * (1.0 - 1.0 / surface_distance(fc, fq));
-  return fetch_grid(u_potential, q).rg;
-}
+layout(set = 0, binding = LIQUID_BINDING_GRID_PROJECTION_SYSTEM) uniform GRID_SAMPLER u_projection_system;
 
-// Twice the projection's dp/dx_a (in cells) at an air cell c (fraction fc) that borders the liquid
-// along axis a: across the surface between a liquid neighbour q and c, p falls from q's to 0 over
-// the distance theta, so dp/dx_a = side p_q / theta (the mean of both sides where both are liquid).
-// Without it the surface cell keeps only g dt, and the top particles, whose velocity blends it with
-// the liquid cell below, sink into the layer under them.
-float projection_air_gradient(ivec3 c, float fc, int a) {
-  float sum = 0.0, sides = 0.0;
-  [[unroll]] for (int side = -1; side <= 1; side += 2) {
+// Cell c's liquid fraction as the row pass found it (k_solid_cell_fraction in a solid cell): one read
+// instead of the splat, the walls' coverage and the obstacles again at every neighbour.
+float stored_fraction(ivec3 c) { return fetch_grid(u_projection_system, c).w; }
+
+// Twice the projection's gradients of p and psi (in cells, central differences: the mean of the two
+// faces') at cell c, whose (p, psi) is sc and row (the row pass's system) `row`.
+// In a liquid cell the differences take each neighbour q's (p, psi), or where q is not liquid its
+// stand-in: beyond a wall p's hydrostatic ghost and psi's own (no flow through it); in a solid cell
+// c's continued as still water's, p + g.n h both ways (under an overhang too, where the liquid presses
+// against it from below); across the free surface the ghost-fluid values that put p = psi = 0 on the
+// surface (projection_jacobi.frag).
+// In an air cell that borders the liquid along an axis, p falls across the surface from a liquid
+// neighbour's to 0 over the distance theta, so dp/dx = side p_q / theta (the mean of both sides where
+// both are liquid); psi's gradient is 0 there. Without it the surface cell keeps only g dt, and the
+// top particles, whose velocity blends it with the liquid cell below, sink into the layer under them.
+// Cost, under lavapipe: every neighbour is read once, with no branch per neighbour (a fragment group
+// that straddles the surface ran both sides of one), and its fraction only where it can matter: a
+// liquid cell whose diagonal counts exactly its neighbours inside the grid has only liquid ones (an
+// air neighbour adds 1 / theta > 1, a solid one nothing), and an air cell whose neighbours' p are all
+// 0 has a zero gradient whatever they are. The fractions were half the pass's reads.
+void projection_gradients(ivec3 c, vec2 sc, vec4 row, out vec3 grad_p, out vec3 grad_psi) {
+  ivec3 n = grid_cells();
+  float fc = max(row.w, 0.0);  // a solid cell's is 0, as liquid_fraction() gives
+  bool liquid = fc >= k_surface_fraction;
+  vec2 neighbour[2 * DIM];  // (p, psi) at the lower [2 a] and upper [2 a + 1] neighbour along axis a
+  float inside = 0.0;      // the neighbours inside the grid
+  bool any_pressure = false;
+  [[unroll]] for (int k = 0; k < 2 * DIM; ++k) {
     ivec3 q = c;
-    q[a] += side;
-    if (q[a] < 0 || q[a] >= grid_cells()[a]) continue;
-    float fq = liquid_fraction(q);
-    if (fq < k_surface_fraction) continue;
-    sum += float(side) * fetch_grid(u_potential, q).r / surface_distance(fq, fc);
-    sides += 1.0;
+    q[k / 2] += k % 2 == 0 ? -1 : 1;
+    neighbour[k] = fetch_grid(u_potential, q).rg;  // fetch_grid clamps q into the grid
+    bool in_grid = q[k / 2] >= 0 && q[k / 2] < n[k / 2];
+    inside += in_grid ? 1.0 : 0.0;
+    any_pressure = any_pressure || (in_grid && neighbour[k].x != 0.0);
   }
-  return sides > 0.0 ? 2.0 * sum / sides : 0.0;
+  float fraction[2 * DIM];
+  bool mixed = liquid ? row.y != inside : any_pressure;
+  [[unroll]] for (int k = 0; k < 2 * DIM; ++k) fraction[k] = 1.0;  // liquid
+  if (mixed) {
+    [[unroll]] for (int k = 0; k < 2 * DIM; ++k) {
+      ivec3 q = c;
+      q[k / 2] += k % 2 == 0 ? -1 : 1;
+      fraction[k] = stored_fraction(q);
+    }
+  }
+  grad_p = grad_psi = vec3(0.0);
+  [[unroll]] for (int a = 0; a < DIM; ++a) {
+    vec2 difference = vec2(0.0);
+    float air_sum = 0.0, air_sides = 0.0;
+    [[unroll]] for (int side = -1; side <= 1; side += 2) {
+      int k = 2 * a + (side + 1) / 2;
+      int qa = c[a] + side;
+      bool wall = qa < 0 || qa >= n[a];
+      float fq = fraction[k];
+      vec2 sq = neighbour[k];
+      bool solid = fq == k_solid_cell_fraction, liquid_q = fq >= k_surface_fraction;
+      vec2 value = wall ? vec2(sc.x + wall_ghost_rise_along(a, qa), sc.y)
+                 : solid ? vec2(sc.x + float(side) * u.gravity[a] * cell_size(), sc.y)
+                 : liquid_q ? sq : sc * (1.0 - 1.0 / surface_distance(fc, fq));
+      difference += float(side) * value;
+      bool beside_liquid = !wall && liquid_q;
+      air_sum += beside_liquid ? float(side) * sq.x / surface_distance(fq, fc) : 0.0;
+      air_sides += beside_liquid ? 1.0 : 0.0;
+    }
+    grad_p[a] = liquid ? difference.x : (air_sides > 0.0 ? 2.0 * air_sum / air_sides : 0.0);
+    grad_psi[a] = liquid ? difference.y : 0.0;
+  }
 }
 #endif
 
@@ -107,18 +142,8 @@ vec3 grid_update(ivec3 c, vec4 splat, out vec3 correction) {
 
 #if PROJECTION
   // Central differences of the projection's p and psi: the mean of the two faces' gradients.
-  vec3 grad_p = vec3(0.0), grad_psi = vec3(0.0);
-  vec2 sc = fetch_grid(u_potential, c).rg;
-  float fc = liquid_fraction(c);
-  [[unroll]] for (int a = 0; a < DIM; ++a) {
-    if (fc >= k_surface_fraction) {
-      vec2 difference = projection_solution_at(c, sc, fc, a, 1) - projection_solution_at(c, sc, fc, a, -1);
-      grad_p[a] = difference.x;
-      grad_psi[a] = difference.y;
-    } else {
-      grad_p[a] = projection_air_gradient(c, fc, a);
-    }
-  }
+  vec3 grad_p, grad_psi;
+  projection_gradients(c, fetch_grid(u_potential, c).rg, fetch_grid(u_projection_system, c), grad_p, grad_psi);
   correction = -grad_psi / (2.0 * h);
   MeshSample meshes = mesh_sample_at_cell(c, true);
 #elif SPLAT_ADJOINT

@@ -94,6 +94,10 @@ float liquid_fraction(ivec3 c, vec4 splat, SolidObstacle o) {
   }
   return u.density_scale * splat.a / (coverage * u.rest_density);
 }
+// The row pass keeps each cell's fraction in its system's 4th channel (projection_divergence.frag),
+// this in a solid cell.
+const float k_solid_cell_fraction = -1.0;
+
 float liquid_fraction(ivec3 c, vec4 splat) { return liquid_fraction(c, splat, nearest_solid_obstacle(c)); }
 float liquid_fraction(ivec3 c) { return liquid_fraction(c, fetch_grid(u_splat, c)); }
 

@@ -12,7 +12,13 @@
 // solid obstacle either, and only its excess beyond a margin elsewhere: a cell near the surface
 // reads the air above it as a deficit that gathering liquid into it would not fill, only draw the
 // surface down; beside an obstacle the particles' skin leaves a gap the same way.
-// Output: target 0 = (h^2 div u* / dt, the diagonal's weight, -rate e h^2, 0) in liquid cells; 0 in air.
+// It also takes the first Jacobi iteration (projection_jacobi.frag) from the last step's (p, psi), the
+// row being at hand: one pass fewer, whose fixed cost on lavapipe is most of an iteration's.
+// Output: target 0 = (h^2 div u* / dt, the diagonal's weight, -rate e h^2, fraction) in liquid cells,
+// (0, 0, 0, fraction) in air, where fraction is the cell's liquid fraction (k_solid_cell_fraction in
+// a solid cell), which the grid pass reads instead of computing it again at each neighbour.
+// Target 1 = the first iterate's (p, psi), 0 in air.
+// With dt = 0 (the grid passes of a frame that does not step) only the fractions are needed.
 #extension GL_GOOGLE_include_directive : require
 #define LIQUID_BODIES  // the bodies are solid (projection.glsl)
 #include "liquid/common.glsl"
@@ -20,10 +26,12 @@
 #include "liquid/solver/pressure.glsl"
 
 layout(set = 0, binding = LIQUID_BINDING_PRESSURE_SPLAT) uniform GRID_SAMPLER u_splat;
+layout(set = 0, binding = LIQUID_BINDING_PROJECTION_PRESSURE) uniform GRID_SAMPLER u_pressure;  // the last step's
 
 #include "liquid/solver/projection.glsl"
 
 layout(location = 0) out vec4 out_system;
+layout(location = 1) out vec2 out_first_iterate;
 
 // u* of a cell whose splat is s and where the brushes' acceleration is f.
 vec3 provisional_velocity(vec4 s, vec3 f) { return s.rgb / max(s.a, k_fluid_epsilon) + u.dt * (u.gravity + f); }
@@ -49,6 +57,7 @@ vec3 brush_accelerations(ivec3 c, out float along[2 * DIM]) {
 
 void main() {
   ivec3 c;
+  out_first_iterate = vec2(0.0);
   if (!grid_fragment_cell(c)) {
     out_system = vec4(0.0);
     return;
@@ -56,14 +65,15 @@ void main() {
   vec4 splat = fetch_grid(u_splat, c);
   SolidObstacle nearest = nearest_solid_obstacle(c);
   float fc = liquid_fraction(c, splat, nearest);  // 0 in a solid cell: no row
-  if (fc < k_surface_fraction) {
-    out_system = vec4(0.0);
+  if (fc < k_surface_fraction || u.dt <= 0.0) {
+    out_system = vec4(0.0, 0.0, 0.0, nearest.distance < 0.0 ? k_solid_cell_fraction : fc);
     return;
   }
   ivec3 n = grid_cells();
   float f_along[2 * DIM];
   vec3 here = provisional_velocity(splat, brush_accelerations(c, f_along));
   float divergence = 0.0, weight = 0.0;
+  vec2 neighbours = vec2(0.0);  // the last step's (p, psi) summed as projection_jacobi.frag sums them
   int reach = int(ceil(u.kernel_radius));
   float h = cell_size();
   bool deep = nearest.distance >= float(reach) * h;
@@ -72,6 +82,7 @@ void main() {
       ivec3 q = c;
       q[a] += side;
       if (q[a] < 0 || q[a] >= n[a]) continue;  // a wall: no flow, no term
+      neighbours += fetch_grid(u_pressure, q).rg;
       SolidObstacle solid = nearest_solid_obstacle(q);
       if (solid.distance < 0.0) {  // the obstacle's flow through the face, no term
         vec3 face = cell_center(c);
@@ -90,5 +101,6 @@ void main() {
   }
   float error = deep ? fc - 1.0 : max(fc - 1.0 - k_surface_excess_margin, 0.0);
   // h^2 (divergence / h) / dt, and the correction's h^2 (-rate e)
-  out_system = vec4(h * divergence / u.dt, weight, -k_density_correction_rate * error * h * h, 0.0);
+  out_system = vec4(h * divergence / u.dt, weight, -k_density_correction_rate * error * h * h, fc);
+  out_first_iterate = (neighbours - out_system.xz) / out_system.y;
 }

@@ -7,6 +7,7 @@
 // first iteration starts from the last step's p (where a cell has just turned to air, its old p
 // enters that one iteration's sum; the iterations after it read 0 there).
 // The density correction's psi (m^2, projection.glsl) is solved beside p, by the same rows' weights.
+// The row pass (projection_divergence.frag) takes the first iteration, these passes the others.
 // Output: target 0 = (p (m^2/s^2), psi (m^2)); 0 in air.
 #extension GL_GOOGLE_include_directive : require
 #include "liquid/common.glsl"
