@@ -96,6 +96,25 @@ FrontError compare_front(std::span<const double> T, std::span<const double> Z, d
   return error;
 }
 
+ReleasedFront compare_front_released(std::span<const double> T, std::span<const double> Z, double max_delay) {
+  ReleasedFront result;
+  result.at_once = compare_front(T, Z);
+  result.released = result.at_once;
+  std::vector<double> later(T.begin(), T.end());
+  const int steps = int(std::floor(max_delay / k_release_delay_step + 1e-9));
+  for (int k = 1; k <= steps; ++k) {
+    const double delay = k * k_release_delay_step;
+    for (size_t i = 0; i < later.size(); ++i) later[i] = T[i] + delay;
+    const FrontError e = compare_front(later, Z);
+    // A delay that leaves experimental points uncovered measures less, so it cannot win.
+    if (e.points >= result.released.points && e.mean < result.released.mean) {
+      result.released = e;
+      result.delay = delay;
+    }
+  }
+  return result;
+}
+
 Scene scene_at_spacing(const Scene& base, double spacing) {
   Scene s = base;
   const double scale = spacing / base.particle_spacing;
