@@ -7,6 +7,7 @@
 #include "liquid/scene/format.h"
 #include "liquid/solver/active_region.h"
 #include "liquid/solver/bodies.h"
+#include "liquid/solver/projection_start.h"
 #include "liquid/solver/specialization.h"
 
 #include <algorithm>
@@ -90,6 +91,10 @@ Simulation::Simulation(engine::vk::Context& context, const Scene& scene, const L
   const std::vector<glm::vec4> body_texels = initial_body_texels(scene_, setup_);
   bodies_ = decode_bodies(scene_, setup_.dimension, body_texels);
   state_ = std::make_unique<LiquidState>(context, setup_, layout, splat_format_, body_texels, variant_.affine_textures());
+  if (engine::vk::Image* p = projection_pressure()) {  // its first guess: still water's (projection_start.h)
+    const std::vector<float> start = hydrostatic_projection_start(setup_, layout);
+    engine::graph::upload_image(context, *p, std::as_bytes(std::span(start)));
+  }
   max_steps_per_frame_ = options.max_steps_per_frame > 0 ? options.max_steps_per_frame : scene.substeps;
   uniforms_ = std::make_unique<engine::vk::UniformArena>(
       context, engine::vk::UniformArena::frame_bytes({sizeof(gpu::SolverUniforms)}, max_steps_per_frame_),
