@@ -61,17 +61,19 @@ float stored_fraction(ivec3 c) { return fetch_grid(u_projection_system, c).w; }
 // both are liquid); psi's gradient is 0 there. Without it the surface cell keeps only g dt, and the
 // top particles, whose velocity blends it with the liquid cell below, sink into the layer under them.
 // Cost, under lavapipe: every neighbour is read once, with no branch per neighbour (a fragment group
-// that straddles the surface ran both sides of one), and its fraction only where it can matter: a
-// liquid cell whose diagonal counts exactly its neighbours inside the grid has only liquid ones (an
-// air neighbour adds 1 / theta > 1, a solid one nothing), and an air cell whose neighbours' p are all
-// 0 has a zero gradient whatever they are. The fractions were half the pass's reads.
+// that straddles the surface ran both sides of one), and its fraction only where it can matter. A
+// liquid cell's neighbours are all liquid where its diagonal counts exactly its neighbours inside the
+// grid and none of their p is 0 (the Jacobi passes leave 0 in air and solid cells; the count alone
+// would miss a solid neighbour, which adds nothing, beside an air one whose 1 / theta is exactly 2),
+// and an air cell whose neighbours' p are all 0 has a zero gradient whatever they are. The fractions
+// were half the pass's reads.
 void projection_gradients(ivec3 c, vec2 sc, vec4 row, out vec3 grad_p, out vec3 grad_psi) {
   ivec3 n = grid_cells();
   float fc = max(row.w, 0.0);  // a solid cell's is 0, as liquid_fraction() gives
   bool liquid = fc >= k_surface_fraction;
   vec2 neighbour[2 * DIM];  // (p, psi) at the lower [2 a] and upper [2 a + 1] neighbour along axis a
   float inside = 0.0;      // the neighbours inside the grid
-  bool any_pressure = false;
+  bool any_pressure = false, any_zero = false;
   [[unroll]] for (int k = 0; k < 2 * DIM; ++k) {
     ivec3 q = c;
     q[k / 2] += k % 2 == 0 ? -1 : 1;
@@ -79,9 +81,10 @@ void projection_gradients(ivec3 c, vec2 sc, vec4 row, out vec3 grad_p, out vec3 
     bool in_grid = q[k / 2] >= 0 && q[k / 2] < n[k / 2];
     inside += in_grid ? 1.0 : 0.0;
     any_pressure = any_pressure || (in_grid && neighbour[k].x != 0.0);
+    any_zero = any_zero || (in_grid && neighbour[k].x == 0.0);
   }
   float fraction[2 * DIM];
-  bool mixed = liquid ? row.y != inside : any_pressure;
+  bool mixed = liquid ? row.y != inside || any_zero : any_pressure;
   [[unroll]] for (int k = 0; k < 2 * DIM; ++k) fraction[k] = 1.0;  // liquid
   if (mixed) {
     [[unroll]] for (int k = 0; k < 2 * DIM; ++k) {
