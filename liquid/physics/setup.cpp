@@ -150,6 +150,17 @@ bool inside_any_obstacle(const Scene& scene, const std::vector<PlacedObstacle>& 
   return false;
 }
 
+}  // namespace
+
+int single_gravity_axis(int dimension, glm::vec3 gravity) {
+  int axis = -1;
+  for (int a = 0; a < dimension; ++a)
+    if (gravity[a] != 0.0f) axis = axis < 0 ? a : dimension;  // more than one: none
+  return axis < dimension ? axis : -1;
+}
+
+namespace {
+
 // Still water under the splat-adjoint pressure holds its weight by compression: the solver's
 // acceleration is -grad P + g, so at rest P = |g| d at depth d and the Tait form gives
 // rho / rho0 = (1 + |g| d / k)^(1 / gamma). A block resting on the wall gravity points into
@@ -167,10 +178,8 @@ class HydrostaticStart {
     if (scene.pressure_force != PressureForce::SplatAdjoint || scene.mode != SimulationMode::Liquid ||
         scene.projection_iterations > 0)
       return;
-    int axis = -1;
-    for (int a = 0; a < scene.dimension; ++a)
-      if (scene.gravity[a] != 0.0f) axis = axis < 0 ? a : scene.dimension;  // more than one: none
-    if (axis < 0 || axis >= scene.dimension || scene.stiffness <= 0.0f) return;
+    const int axis = single_gravity_axis(scene.dimension, scene.gravity);
+    if (axis < 0 || scene.stiffness <= 0.0f) return;
     const double s = scene.particle_spacing;
     const bool down = scene.gravity[axis] < 0.0f;
     const double bottom = down ? double(block.min[axis]) : double(block.min[axis]) + counts[axis] * s;

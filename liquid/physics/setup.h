@@ -70,6 +70,10 @@ struct SimulationSetup {
   std::vector<glm::vec4> velocities;  // initial particles: xyz in m/s, w = 0
 };
 
+// The axis gravity lies along, or -1 where it has no component or more than one (still water's
+// pressure then has no single column direction).
+int single_gravity_axis(int dimension, glm::vec3 gravity);
+
 // Integral of w(d, r) = (1 - d^2/r^2)^3 over the plane (d = 2) or space (d = 3), r in cells:
 // pi r^2 / 4 in 2D, 64 pi r^3 / 315 in 3D.
 double kernel_integral_cells(int dimension, double radius_cells);

@@ -10,10 +10,8 @@ namespace liquid {
 std::vector<float> hydrostatic_projection_start(const SimulationSetup& setup, const GridLayout& layout) {
   const engine::vk::ImageDesc desc = layout.image_desc(k_projection_pressure_format, 0);
   std::vector<float> values(size_t(desc.width) * desc.height * desc.depth_or_layers * k_projection_pressure_channels, 0.0f);
-  int axis = -1;
-  for (int a = 0; a < setup.dimension; ++a)
-    if (setup.gravity[a] != 0.0f) axis = axis < 0 ? a : setup.dimension;  // more than one: none
-  if (axis < 0 || axis >= setup.dimension) return values;
+  const int axis = single_gravity_axis(setup.dimension, setup.gravity);
+  if (axis < 0) return values;
   const glm::ivec3 n = setup.grid_cells;
   const double h = setup.cell_size;
   const auto cell_of = [&](const glm::vec4& p) {
