@@ -76,6 +76,10 @@ double volume_under_surface(const std::vector<double>& heights, const Simulation
   return sum * std::pow(double(setup.cell_size), setup.dimension - 1);
 }
 
+double particles_rest_volume(const SimulationSetup& setup) {
+  return double(setup.initial_particles) * double(setup.particle_mass) / double(setup.rest_density);
+}
+
 FrontError compare_front(std::span<const double> T, std::span<const double> Z, double t_min, double t_max) {
   FrontError error;
   if (T.size() < 2 || T.size() != Z.size()) return error;

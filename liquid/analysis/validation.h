@@ -35,6 +35,11 @@ double occupied_volume(const std::vector<float>& density_ratio, const Simulation
 // occupied_volume(); it counts spray and overhangs as if they lay under the surface.
 double volume_under_surface(const std::vector<double>& heights, const SimulationSetup& setup);
 
+// The volume the initial particles fill at the rest density, their mass over rho0, m^3 (m^2 in 2D):
+// what a settled pool of incompressible liquid holds, the reference volume_under_surface() is held to
+// once the liquid is at rest (a frame in the middle of a collapse reads its column's surface high).
+double particles_rest_volume(const SimulationSetup& setup);
+
 // Height of the free surface over every grid column (x in 2D, x and z in 3D): the highest point where
 // rho / rho0 falls through `iso`, interpolated between cell centres; -1 for a column with no liquid.
 std::vector<double> surface_heights(const std::vector<float>& density_ratio, const SimulationSetup& setup,

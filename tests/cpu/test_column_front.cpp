@@ -1,5 +1,5 @@
 // The collapsing column's front against Martin and Moyce with no GPU: the comparison, and the
-// release delay fitted to it (liquid::k_max_release_delay).
+// release delay fitted to it (liquid::k_max_release_delay); the volume a settled pool is held to.
 #include "liquid/analysis/validation.h"
 
 #include <catch2/catch.hpp>
@@ -65,4 +65,14 @@ TEST_CASE("a front that starts a constant time early is met after that release d
   const ReleasedFront behind = compare_front_released(late.T, late.Z);
   CHECK(behind.delay == 0.0);
   CHECK(behind.released.mean == behind.at_once.mean);
+}
+
+TEST_CASE("the particles' rest volume is their mass over the rest density") {
+  SimulationSetup setup;
+  setup.initial_particles = 1000;
+  setup.particle_mass = 0.04f;  // kg (2D: per metre of depth)
+  setup.rest_density = 1000.0f;
+  CHECK(particles_rest_volume(setup) == Approx(0.04).epsilon(1e-6));
+  setup.rest_density = 800.0f;  // a lattice read lighter: the same mass fills more
+  CHECK(particles_rest_volume(setup) == Approx(0.05).epsilon(1e-6));
 }

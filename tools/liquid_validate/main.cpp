@@ -237,8 +237,14 @@ void energy(engine::vk::Context& context, const Options& o, std::vector<Check>& 
   const double gain = liquid::max_gain_in_window(t, e, impact, 1.0);
   checks.push_back({"dam break: max gain of KE + PE in 1 s after impact / PE0", gain / pe0, "< 0.01",
                     gain / pe0 < 0.01});
-  const double drift = std::abs(run.samples.back().volume / run.samples.front().volume - 1.0);
-  checks.push_back({"dam break: volume at the end against the first frame", drift, "< 0.01", drift < 0.01});
+  // Held to the particles' volume at rest density: the first frame, 37 steps into the collapse,
+  // reads the column's surface high under the projection (docs/physics.md, "The dam break's volume against its particles").
+  const double end = run.samples.back().volume;
+  const double drift = std::abs(end / liquid::particles_rest_volume(run.setup) - 1.0);
+  checks.push_back({"dam break: end volume / the particles' at rest density", drift, "< 0.01",
+                    drift < 0.01});
+  checks.push_back({"dam break: end volume / the first frame's", std::abs(end / run.samples.front().volume - 1.0),
+                    "", false, false});
   runs.push_back(run);
 }
 
