@@ -355,6 +355,7 @@ SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
     fail(scene, "dimension", "must be 2 or 3, got " + std::to_string(scene.dimension));
   // Again for a scene built in code; a file's was checked when read.
   check_list_limits(scene);
+  check_projection(scene);
   for (size_t i = 0; i < scene.obstacles.size(); ++i)
     if (scene.obstacles[i].dynamic) check_body_inside_domain(scene, i);
   SimulationSetup setup;

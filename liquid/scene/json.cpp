@@ -154,6 +154,7 @@ Scene parse_scene(const std::string& json_text, const std::string& source_name) 
   Scene scene = scene_reader::read_scene(doc, source_name);
   scene.source = source_name;
   check_list_limits(scene);
+  check_projection(scene);
   return scene;
 }
 

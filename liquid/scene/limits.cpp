@@ -45,4 +45,13 @@ void check_list_limits(const Scene& scene) {
   require_at_most(scene, "obstacles", meshes, gpu::k_max_mesh_obstacles, " meshes");
 }
 
+void check_projection(const Scene& scene) {
+  const std::string prefix = (scene.source.empty() ? scene.name : scene.source) + ": projection_iterations: ";
+  // The first iteration reads the last step's solution and the last writes the next's: two at least.
+  if (scene.projection_iterations == 1) throw SceneError(prefix + "must be 0 (no projection) or at least 2, got 1");
+  if (scene.projection_iterations > 0 && scene.pressure_force != PressureForce::SplatAdjoint)
+    throw SceneError(prefix + "needs \"pressure_force\": \"splat_adjoint\", got " +
+                     std::to_string(scene.projection_iterations));
+}
+
 }  // namespace liquid

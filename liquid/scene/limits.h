@@ -12,4 +12,9 @@ namespace liquid {
 // supported, got 9".
 void check_list_limits(const Scene& scene);
 
+// The pressure projection's keys against what its passes need (the splat-adjoint pressure, two
+// iterations at least), checked at the same two places: a scene built in code that asks for the
+// projection under the chapter's pressure would otherwise reach the solver without its images.
+void check_projection(const Scene& scene);
+
 }  // namespace liquid

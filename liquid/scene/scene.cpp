@@ -441,13 +441,6 @@ void read_contents(const Reader& r, const Json& doc, Scene& scene) {
       r.fail(element("obstacles", i) + ".dynamic",
              "not yet with \"position_correction\" (it floats bodies 20 to 57 % high), got " +
                  format_number(scene.position_correction));
-  // The projection's first iteration reads the last step's solution and its last writes the next's:
-  // two at least.
-  if (scene.projection_iterations == 1)
-    r.fail("projection_iterations", "must be 0 (no projection) or at least 2, got 1");
-  if (scene.projection_iterations > 0 && scene.pressure_force != PressureForce::SplatAdjoint)
-    r.fail("projection_iterations", "needs \"pressure_force\": \"splat_adjoint\", got " +
-                                      std::to_string(scene.projection_iterations));
   if (!shallow && Reader::find(doc, "ground")) r.fail("ground", "only allowed in shallow_water mode");
   scene.ground = read_array<GroundHill>(r, doc, "ground", read_ground_hill);
   if (const Json* v = Reader::find(doc, "camera")) {

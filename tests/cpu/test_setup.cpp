@@ -546,3 +546,15 @@ TEST_CASE("dam_break_tank_2d is SPlisHSPlasH's DamBreakModel_2D at 64,516 partic
   CHECK(scene.fluid_blocks[0].max.y == Approx(1.525f));
   CHECK(scene.particle_spacing == Approx(2.0 * 0.0029412));
 }
+
+TEST_CASE("a scene built in code is held to the projection's needs as a file is", "[setup]") {
+  Scene scene = scene_of("rest_pool_2d.json");
+  REQUIRE(scene.projection_iterations > 0);
+  scene.pressure_force = PressureForce::Chapter;
+  scene.time_step = 0.0f;
+  REQUIRE_THROWS_WITH(make_setup(scene, {}),
+                      Catch::Contains("rest_pool_2d.json: projection_iterations: needs \"pressure_force\": \"splat_adjoint\""));
+  scene.pressure_force = PressureForce::SplatAdjoint;
+  scene.projection_iterations = 1;
+  REQUIRE_THROWS_WITH(make_setup(scene, {}), Catch::Contains("projection_iterations: must be 0 (no projection) or at least 2"));
+}

@@ -17,6 +17,15 @@ inline liquid::Scene shipped_scene(const std::string& name) {
   return liquid::load_scene(std::string(LIQUID_ASSET_DIR) + "/scenes/" + name + ".json");
 }
 
+// A shipped scene under the equation of state instead of the pressure projection it ships with,
+// with the PIC share it shipped with before (`pic_ratio`, per its reference step): for the tests of
+// that model (its stiffness, its acoustic steps, its damping).
+inline liquid::Scene under_equation_of_state(liquid::Scene scene, float pic_ratio) {
+  scene.projection_iterations = 0;
+  scene.pic_ratio = pic_ratio;
+  return scene;
+}
+
 // A 0.32 m box of 16 cells with no gravity and one particle at `at` moving at (0.5, -0.25, 0.125)
 // m/s: the splat tests' scene.
 inline liquid::Scene single_particle_scene(int dimension, glm::vec3 at) {
