@@ -37,6 +37,12 @@ ImageHandle RenderGraph::create_image(const std::string& name, const vk::ImageDe
 }
 
 ImageHandle RenderGraph::import_image(const std::string& name, vk::Image& image) {
+  // An image imported again in the same graph is the same resource, at its latest version: its
+  // uses chain in declaration order, each barrier from the state the one before leaves. Two
+  // resources would each start from the state before the graph, and the later one's barriers
+  // would transition from a layout the image is no longer in.
+  for (size_t i = 0; i < resources_.size(); ++i)
+    if (resources_[i].image == &image) return {static_cast<uint32_t>(i), resources_[i].version};
   Resource r;
   r.name = name;
   r.desc = image.desc();

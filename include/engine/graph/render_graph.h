@@ -92,7 +92,8 @@ class RenderGraph {
   // A transient image: contents undefined until a pass writes it; reused across reset().
   ImageHandle create_image(const std::string& name, const vk::ImageDesc& desc);
   // A persistent image owned elsewhere (simulation state, a host's target). Its contents are valid
-  // and its last access is taken from image.sync_state(); execute() updates that state.
+  // and its last access is taken from image.sync_state(); execute() updates that state. Imported
+  // again in the same graph it is the same resource, at its latest version.
   ImageHandle import_image(const std::string& name, vk::Image& image);
   // CPU-only import for tests: a description and a starting state, no Vulkan object.
   ImageHandle import_image(const std::string& name, const vk::ImageDesc& desc,
