@@ -9,9 +9,12 @@
 namespace liquid {
 namespace {
 
+// What an error names first: the file, or a scene built in code by its name.
+std::string label(const Scene& scene) { return scene.source.empty() ? scene.name : scene.source; }
+
 void require_at_most(const Scene& scene, const char* list, size_t count, int limit, const char* what = "") {
   if (count > size_t(limit))
-    throw SceneError((scene.source.empty() ? scene.name : scene.source) + ": " + list + ": at most " +
+    throw SceneError(label(scene) + ": " + list + ": at most " +
                      std::to_string(limit) + what + " are supported, got " + std::to_string(count));
 }
 
@@ -32,21 +35,21 @@ void check_list_limits(const Scene& scene) {
     // A file's mesh was checked when read; a host's (built in code) is checked here.
     const TriangleMesh& mesh = scene.obstacles[i].mesh;
     if (const std::string problem = mesh_problem(mesh); !problem.empty())
-      throw SceneError((scene.source.empty() ? scene.name : scene.source) + ": obstacles[" + std::to_string(i) +
+      throw SceneError(label(scene) + ": obstacles[" + std::to_string(i) +
                        "]: " + (mesh.file.empty() ? "the host's mesh" : mesh.file) + ": " + problem);
     if (!(mesh.scale > 0.0f && std::isfinite(mesh.scale)))
-      throw SceneError((scene.source.empty() ? scene.name : scene.source) + ": obstacles[" + std::to_string(i) +
+      throw SceneError(label(scene) + ": obstacles[" + std::to_string(i) +
                        "]: the mesh's scale must be a finite number > 0");
     // The scene file refuses it too (liquid/scene/scene.cpp); a host's scene is checked here.
     if (scene.obstacles[i].dynamic && scene.dimension != 3)
-      throw SceneError((scene.source.empty() ? scene.name : scene.source) + ": obstacles[" + std::to_string(i) +
+      throw SceneError(label(scene) + ": obstacles[" + std::to_string(i) +
                        "].dynamic: a mesh obstacle can be dynamic in 3D only");
   }
   require_at_most(scene, "obstacles", meshes, gpu::k_max_mesh_obstacles, " meshes");
 }
 
 void check_projection(const Scene& scene) {
-  const std::string prefix = (scene.source.empty() ? scene.name : scene.source) + ": projection_iterations: ";
+  const std::string prefix = label(scene) + ": projection_iterations: ";
   // The first iteration reads the last step's solution and the last writes the next's: two at least.
   if (scene.projection_iterations == 1) throw SceneError(prefix + "must be 0 (no projection) or at least 2, got 1");
   if (scene.projection_iterations > 0 && scene.pressure_force != PressureForce::SplatAdjoint)
