@@ -147,6 +147,11 @@ inline constexpr double k_acoustic_cfl_smoothed_stable = 2.4;  // the largest me
 inline constexpr double k_max_acoustic_cfl_chapter = 1.0;
 inline constexpr double k_max_acoustic_cfl = 2.0;
 
+// The shipped model's projection iterations (the default), and the chapter's PIC share (section
+// 5.1's r), which a scene naming the chapter's pressure gets by default.
+inline constexpr int k_default_projection_iterations = 4;
+inline constexpr float k_chapter_pic_ratio = 0.05f;
+
 // The range a scene's time_step may take, s.
 inline constexpr double k_min_time_step = 1e-6;
 inline constexpr double k_max_time_step = 0.1;
@@ -195,7 +200,9 @@ struct Scene {
   float stiffness = 50.0f;          // k, m^2/s^2 (specific pressure; speed of sound c = sqrt(k gamma))
   float gamma = 5.0f;               // pressure exponent
   float kernel_radius_cells = 3.0f; // splat radius r, in grid cells
-  float pic_ratio = 0.05f;          // r in the PIC/FLIP blend
+  // r in the PIC/FLIP blend: the shipped model's; a scene file that names the chapter's pressure
+  // gets k_chapter_pic_ratio when it leaves the key out.
+  float pic_ratio = 0.002f;
   // s; when set, pic_ratio is the blend over a step of this length and steps of other lengths
   // blend at the same rate per second (liquid/physics/pic_blend.h); empty: r per step, as the chapter.
   std::optional<float> pic_ratio_reference_step;
@@ -206,8 +213,10 @@ struct Scene {
   int substeps = 8;                 // steps per rendered frame
   float wall_margin_cells = 0.5f;   // particles are clamped this many cells inside the walls (or where they started)
   SplatFormat splat_format = SplatFormat::Auto;
-  PressureForce pressure_force = PressureForce::Chapter;
-  SplatMode splat = SplatMode::PointSprite;
+  // The defaults are the shipped physical scenes' model: the splat-adjoint pressure, solved as a
+  // projection, on the separable splat. The chapter's is named (the paper_* scenes).
+  PressureForce pressure_force = PressureForce::SplatAdjoint;
+  SplatMode splat = SplatMode::Separable;
   Transfer transfer = Transfer::PicFlip;
   // beta: each step the particle pass moves every particle down the gradient of how far the
   // separable splat's deposit (a kernel one cell wide) reads above the wide kernel's density, by
@@ -216,8 +225,9 @@ struct Scene {
   // separable splat.
   float position_correction = 0.0f;
   // Jacobi iterations of a pressure projection per step (0: none, the pressure is the equation of
-  // state's): experimental, splat-adjoint pressure only, without bodies or meshes.
-  int projection_iterations = 0;
+  // state's); splat-adjoint pressure only, liquid mode only. A scene file that names the chapter's
+  // pressure gets 0 when it leaves the key out.
+  int projection_iterations = k_default_projection_iterations;
   float rest_depth = 0.1f;          // m, shallow water: water height where rho = rho0
   std::vector<FluidBlock> fluid_blocks;
   std::vector<Emitter> emitters;
@@ -234,9 +244,14 @@ struct Scene {
 };
 
 // The long-step regime: the splat-adjoint pressure with the PIC blend per second
-// (pic_ratio_reference_step), the one where steps past the chapter's acoustic CFL stay stable and
-// accurate (docs/physics.md, "Longer steps").
+// (pic_ratio_reference_step) or solved as a projection, the one where steps past the chapter's
+// acoustic CFL stay stable and accurate (docs/physics.md, "Longer steps").
 bool long_step_regime(const Scene& scene);
+
+// What the solver runs for a scene: shallow water takes neither the splat-adjoint pressure nor the
+// projection, whatever those fields hold (their defaults are the liquid's).
+bool uses_splat_adjoint_pressure(const Scene& scene);
+int projection_iterations_of(const Scene& scene);
 
 // Parses and validates a scene. `source_name` prefixes every error message.
 Scene parse_scene(const std::string& json_text, const std::string& source_name);

@@ -130,8 +130,8 @@ void check_grid_limits(const Scene& scene, const SimulationSetup& setup, const D
 // obstacle adds no density (it is solid to the solve): the block is carved to the particles' skin
 // only, where the particle pass would move them; a band's gap would drop the pool into it.
 float carved_share(const Scene& scene) {
-  if (scene.projection_iterations > 0) return float(LIQUID_OBSTACLE_SKIN_CELLS / double(scene.kernel_radius_cells));
-  return scene.pressure_force == PressureForce::SplatAdjoint ? 1.5f : 0.75f;
+  if (projection_iterations_of(scene) > 0) return float(LIQUID_OBSTACLE_SKIN_CELLS / double(scene.kernel_radius_cells));
+  return uses_splat_adjoint_pressure(scene) ? 1.5f : 0.75f;
 }
 
 std::vector<PlacedObstacle> obstacles_at_start(const Scene& scene, float band) {
@@ -175,8 +175,7 @@ namespace {
 class HydrostaticStart {
  public:
   HydrostaticStart(const Scene& scene, const FluidBlock& block, glm::ivec3 counts, const SimulationSetup& setup) {
-    if (scene.pressure_force != PressureForce::SplatAdjoint || scene.mode != SimulationMode::Liquid ||
-        scene.projection_iterations > 0)
+    if (!uses_splat_adjoint_pressure(scene) || projection_iterations_of(scene) > 0)
       return;
     const int axis = single_gravity_axis(scene.dimension, scene.gravity);
     if (axis < 0 || scene.stiffness <= 0.0f) return;
@@ -366,7 +365,7 @@ SimulationSetup make_setup(const Scene& scene, const DeviceLimits& limits) {
   setup.kernel_radius_cells = scene.kernel_radius_cells;
   setup.pic_ratio = scene.pic_ratio;
   setup.pic_ratio_reference_step = scene.pic_ratio_reference_step.value_or(0.0f);
-  setup.splat_adjoint_pressure = scene.pressure_force == PressureForce::SplatAdjoint;
+  setup.splat_adjoint_pressure = uses_splat_adjoint_pressure(scene);
   setup.splat = scene.splat;
   setup.long_steps = long_step_regime(scene);
   setup.rest_depth = scene.rest_depth;

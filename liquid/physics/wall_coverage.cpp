@@ -56,7 +56,7 @@ std::vector<float> wall_share_beyond(const Scene& scene, double spacing_cells, i
   if (scene.splat == SplatMode::Separable) return table;
   const double r = scene.kernel_radius_cells;
   for (int k = 0; k < size; ++k)
-    table[size_t(k)] = float(scene.pressure_force == PressureForce::SplatAdjoint
+    table[size_t(k)] = float(uses_splat_adjoint_pressure(scene)
                                  ? lattice_mass_beyond_wall(scene.dimension, spacing_cells, r, k + 0.5)
                                  : kernel_mass_beyond_wall(scene.dimension, r, k + 0.5, k_wall_samples_chapter));
   return table;

@@ -51,10 +51,11 @@ void check_list_limits(const Scene& scene) {
 void check_projection(const Scene& scene) {
   const std::string prefix = label(scene) + ": projection_iterations: ";
   // The first iteration reads the last step's solution and the last writes the next's: two at least.
-  if (scene.projection_iterations == 1) throw SceneError(prefix + "must be 0 (no projection) or at least 2, got 1");
-  if (scene.projection_iterations > 0 && scene.pressure_force != PressureForce::SplatAdjoint)
-    throw SceneError(prefix + "needs \"pressure_force\": \"splat_adjoint\", got " +
-                     std::to_string(scene.projection_iterations));
+  const int iterations = projection_iterations_of(scene);  // shallow water runs none
+  if (iterations == 1) throw SceneError(prefix + "must be 0 (no projection) or at least 2, got 1");
+  if (iterations > 0 && scene.pressure_force != PressureForce::SplatAdjoint)
+    throw SceneError(prefix + "needs \"pressure_force\": \"splat_adjoint\" (set it to 0 for the chapter's pressure), got " +
+                     std::to_string(iterations));
 }
 
 }  // namespace liquid

@@ -390,6 +390,13 @@ void read_physics(const Reader& r, const Json& doc, Scene& scene) {
                                ? PressureForce::Chapter
                                : PressureForce::SplatAdjoint;
   }
+  // A scene that names the chapter's pressure, and shallow water, get the chapter's own defaults
+  // for the keys they leave out: no projection (it needs the splat-adjoint pressure), its PIC share.
+  if (shallow) scene.pressure_force = PressureForce::Chapter;  // not used there
+  if (scene.pressure_force == PressureForce::Chapter) {
+    if (!Reader::find(doc, "projection_iterations")) scene.projection_iterations = 0;
+    if (!Reader::find(doc, "pic_ratio")) scene.pic_ratio = k_chapter_pic_ratio;
+  }
   if (const Json* v = Reader::find(doc, "splat"))
     scene.splat = r.choice(*v, "splat", {"point_sprite", "separable"}) == 0 ? SplatMode::PointSprite
                                                                             : SplatMode::Separable;
@@ -413,7 +420,7 @@ void read_physics(const Reader& r, const Json& doc, Scene& scene) {
       !liquid::long_step_regime(scene))
     r.fail("adaptive_time_step.acoustic_cfl",
            "above " + format_number(k_max_acoustic_cfl_chapter) +
-               " needs \"pressure_force\": \"splat_adjoint\" and pic_ratio_reference_step, got " +
+               " needs \"pressure_force\": \"splat_adjoint\" with pic_ratio_reference_step or the projection, got " +
                format_number(scene.adaptive_time_step->acoustic_cfl));
 }
 
@@ -485,9 +492,17 @@ Scene read_scene(const Json& doc, const std::string& source_name) {
 
 namespace liquid {
 
+bool uses_splat_adjoint_pressure(const Scene& scene) {
+  return scene.mode == SimulationMode::Liquid && scene.pressure_force == PressureForce::SplatAdjoint;
+}
+
+int projection_iterations_of(const Scene& scene) {
+  return scene.mode == SimulationMode::Liquid ? scene.projection_iterations : 0;
+}
+
 bool long_step_regime(const Scene& scene) {
-  return scene.pressure_force == PressureForce::SplatAdjoint && scene.pic_ratio_reference_step &&
-         *scene.pic_ratio_reference_step > 0.0f;
+  return uses_splat_adjoint_pressure(scene) &&
+         ((scene.pic_ratio_reference_step && *scene.pic_ratio_reference_step > 0.0f) || projection_iterations_of(scene) > 0);
 }
 
 }  // namespace liquid

@@ -36,7 +36,7 @@ SolverVariant solver_variant(const Scene& scene, const SimulationSetup& setup, c
   v.active_region = active_region && layout.dimension == 3;
   v.affine = scene.transfer == Transfer::Affine;
   v.position_correction = scene.position_correction > 0.0f;
-  v.projection_iterations = scene.projection_iterations;
+  v.projection_iterations = projection_iterations_of(scene);
   return v;
 }
 

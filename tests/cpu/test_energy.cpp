@@ -41,12 +41,17 @@ TEST_CASE("potential energy is measured from the domain's floor along gravity", 
 TEST_CASE("pressure_force picks the chapter's or the splat-adjoint pressure gradient", "[energy][scene]") {
   const std::string head = R"({"dimension": 2, "domain": [1.0, 0.5], "particle_spacing": 0.01,
     "fluid_blocks": [{"min": [0.0, 0.0], "max": [0.2, 0.2]}])";
-  const liquid::Scene plain = liquid::parse_scene(head + "}", "plain.json");
-  CHECK(plain.pressure_force == liquid::PressureForce::Chapter);
-  CHECK_FALSE(liquid::make_setup(plain, {}).splat_adjoint_pressure);
-  const liquid::Scene adjoint = liquid::parse_scene(head + R"(, "pressure_force": "splat_adjoint"})", "adjoint.json");
-  CHECK(adjoint.pressure_force == liquid::PressureForce::SplatAdjoint);
-  CHECK(liquid::make_setup(adjoint, {}).splat_adjoint_pressure);
+  const liquid::Scene plain = liquid::parse_scene(head + "}", "plain.json");  // the default
+  CHECK(plain.pressure_force == liquid::PressureForce::SplatAdjoint);
+  CHECK(liquid::make_setup(plain, {}).splat_adjoint_pressure);
+  const liquid::Scene chapter = liquid::parse_scene(head + R"(, "pressure_force": "chapter"})", "chapter.json");
+  CHECK(chapter.pressure_force == liquid::PressureForce::Chapter);
+  CHECK_FALSE(liquid::make_setup(chapter, {}).splat_adjoint_pressure);
+  // Shallow water runs the chapter's, whatever a scene built in code holds.
+  liquid::Scene shallow = plain;
+  shallow.mode = liquid::SimulationMode::ShallowWater;
+  CHECK_FALSE(liquid::make_setup(shallow, {}).splat_adjoint_pressure);
+  CHECK(liquid::projection_iterations_of(shallow) == 0);
   CHECK_THROWS_WITH(liquid::parse_scene(head + R"(, "pressure_force": "sph"})", "bad.json"),
                     Catch::Contains("pressure_force"));
 }

@@ -234,6 +234,7 @@ TEST_CASE("the transfer is the chapter's unless the affine one is asked for with
   CHECK(parse(valid_2d()).transfer == Transfer::PicFlip);
   Json j = valid_2d();
   j["transfer"] = "affine";
+  j["splat"] = "point_sprite";  // the default is the separable splat
   CHECK(parse(j).transfer == Transfer::Affine);
   refused_with("/transfer", "\"apic\"", "dam.json: transfer: must be one of \"pic_flip\", \"affine\", got \"apic\"");
   j["splat"] = "separable";
@@ -252,8 +253,8 @@ TEST_CASE("the position correction is off unless asked for, and needs the separa
   CHECK(parse(j).position_correction == Approx(0.1));
   j["splat"] = "point_sprite";
   REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: position_correction: needs \"splat\": \"separable\""));
-  j.erase("splat");
-  REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: position_correction: needs \"splat\": \"separable\""));
+  j.erase("splat");  // the default is the separable splat
+  CHECK(parse(j).position_correction == Approx(0.1));
   j["position_correction"] = 0;
   CHECK(parse(j).position_correction == 0.0f);
   // Not yet with a dynamic body, which it floats too high.
@@ -266,10 +267,20 @@ TEST_CASE("the position correction is off unless asked for, and needs the separa
   CHECK(parse(j).obstacles.at(0).dynamic);
 }
 
-TEST_CASE("the pressure projection is off unless asked for, and needs the splat-adjoint pressure",
-          "[scene]") {
-  CHECK(parse(valid_2d()).projection_iterations == 0);
+TEST_CASE("the pressure projection is the default, and needs the splat-adjoint pressure", "[scene]") {
+  // Only the required keys: the shipped physical scenes' model.
+  const Scene plain = parse(valid_2d());
+  CHECK(plain.projection_iterations == k_default_projection_iterations);
+  CHECK(plain.pressure_force == PressureForce::SplatAdjoint);
+  CHECK(plain.splat == SplatMode::Separable);
+  CHECK(plain.pic_ratio == 0.002f);
+  CHECK(long_step_regime(plain));
   Json j = valid_2d();
+  // Naming the chapter's pressure brings its own defaults for the keys left out.
+  j["pressure_force"] = "chapter";
+  CHECK(parse(j).projection_iterations == 0);
+  CHECK(parse(j).pic_ratio == k_chapter_pic_ratio);
+  CHECK_FALSE(long_step_regime(parse(j)));
   j["projection_iterations"] = 40;
   REQUIRE_THROWS_WITH(parse(j), Contains("dam.json: projection_iterations: needs \"pressure_force\": \"splat_adjoint\""));
   j["pressure_force"] = "splat_adjoint";

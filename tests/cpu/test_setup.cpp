@@ -145,16 +145,23 @@ TEST_CASE("the default grid follows the particle spacing, two spacings a cell, a
 }
 
 TEST_CASE("a scene without time_step gets its regime's step at its own cell size", "[setup][time_step]") {
-  // Only the required keys: the chapter's regime, k = 50, gamma = 5, 2 cm cells: an acoustic CFL
-  // of 0.16 at the speed of sound at rest, sqrt(250) m/s.
+  // Only the required keys: the projection, in the long-step regime, k = 50, gamma = 5, 2 cm
+  // cells: an acoustic CFL of 1.3 at the speed of sound at rest, sqrt(250) m/s.
   Scene scene = block_scene(2, {1.0f, 0.6f, 0.0f}, {{0.0f, 0.0f, 0.0f}, {0.3f, 0.4f, 0.0f}, {}}, 0.01f);
   REQUIRE(scene.time_step == 0.0f);
   SimulationSetup setup = make_setup(scene, {});
-  CHECK(setup.time_step == Approx(k_acoustic_cfl_chapter * 0.02 / std::sqrt(250.0)));
+  CHECK(setup.time_step == Approx(k_acoustic_cfl_smoothed * 0.02 / std::sqrt(250.0)));
   CHECK(scene_time_step(scene) == Approx(setup.time_step));
   CHECK(setup.time_step < largest_stable_time_step(setup));
 
-  // The long-step regime: its CFL, scaled by the kernel radius over 3 cells.
+  // The chapter's pressure: its regime's CFL of 0.16.
+  scene.pressure_force = PressureForce::Chapter;
+  scene.projection_iterations = 0;
+  setup = make_setup(scene, {});
+  CHECK(setup.time_step == Approx(k_acoustic_cfl_chapter * 0.02 / std::sqrt(250.0)));
+  CHECK(setup.time_step < largest_stable_time_step(setup));
+
+  // The long-step regime without the projection: its CFL, scaled by the kernel radius over 3 cells.
   scene.pressure_force = PressureForce::SplatAdjoint;
   scene.pic_ratio_reference_step = 1e-4f;
   scene.kernel_radius_cells = 4.0f;
@@ -176,8 +183,11 @@ TEST_CASE("a scene without time_step gets its regime's step at its own cell size
 }
 
 TEST_CASE("a fixed time_step past its regime's stable step is refused before the run", "[setup][time_step]") {
-  // The old default of 2 ms on the scene above: an acoustic CFL of 1.6, past the chapter's 1.
+  // The old default of 2 ms on the scene above under the chapter's pressure: an acoustic CFL of
+  // 1.6, past the chapter's 1.
   Scene scene = block_scene(2, {1.0f, 0.6f, 0.0f}, {{0.0f, 0.0f, 0.0f}, {0.3f, 0.4f, 0.0f}, {}}, 0.01f);
+  scene.pressure_force = PressureForce::Chapter;
+  scene.projection_iterations = 0;
   scene.source = "scene.json";
   scene.time_step = 0.002f;
   CHECK_THROWS_WITH(make_setup(scene, {}),
@@ -499,7 +509,7 @@ TEST_CASE("shipped scenes are in the stable weakly compressible regime", "[setup
     // step is one of the chapter's regime (where r = 0.05 was chosen).
     const double acoustic_step = setup.cell_size / sound;
     CHECK(scene.time_step <= regime_acoustic_cfl(setup) * acoustic_step);
-    if (setup.long_steps) {
+    if (setup.long_steps && setup.pic_ratio_reference_step > 0.0f) {  // the projection needs none
       CHECK(setup.pic_ratio_reference_step <= k_acoustic_cfl_chapter * acoustic_step * 1.001);
       // and r was chosen at a step of the chapter's regime, not far below it (r(dt) would near PIC).
       CHECK(scene.time_step <= 8.2 * setup.pic_ratio_reference_step);
@@ -511,7 +521,7 @@ TEST_CASE("shipped scenes are in the stable weakly compressible regime", "[setup
 
 TEST_CASE("fluid blocks are carved around the obstacles they overlap", "[setup]") {
   const Scene scene = parse_scene(R"({
-    "name": "carved", "dimension": 2, "domain": [1.0, 0.5], "grid_resolution": 64,
+    "name": "carved", "dimension": 2, "domain": [1.0, 0.5], "grid_resolution": 64, "pressure_force": "chapter",
     "particle_spacing": 0.01, "fluid_blocks": [ { "min": [0.0, 0.0], "max": [1.0, 0.2] } ],
     "obstacles": [ { "shape": "sphere", "center": [0.5, 0.1], "radius": 0.08 } ] })",
                                   "carved.json");

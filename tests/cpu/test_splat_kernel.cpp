@@ -115,7 +115,7 @@ TEST_CASE("the separable splat needs no wall coverage table", "[setup][splat][un
 TEST_CASE("the scene key splat picks the point sprites or the separable splat", "[scene][splat]") {
   const std::string head = R"({"dimension": 2, "domain": [1, 1], "particle_spacing": 0.02,
     "fluid_blocks": [{"min": [0.1, 0.1], "max": [0.3, 0.3]}])";
-  CHECK(parse_scene(head + "}", "plain.json").splat == SplatMode::PointSprite);
+  CHECK(parse_scene(head + "}", "plain.json").splat == SplatMode::Separable);  // the default
   CHECK(parse_scene(head + R"(, "splat": "point_sprite"})", "p.json").splat == SplatMode::PointSprite);
   CHECK(parse_scene(head + R"(, "splat": "separable"})", "s.json").splat == SplatMode::Separable);
   CHECK_THROWS_WITH(parse_scene(head + R"(, "splat": "gaussian"})", "bad.json"),

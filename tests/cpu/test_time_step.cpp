@@ -55,11 +55,15 @@ TEST_CASE("adaptive_time_step: the scene key, its defaults and its bounds", "[sc
   CHECK_THROWS_WITH(parse(j), Contains("dam.json: adaptive_time_step.acoustic_cfl: must be in (0, 2], got 0"));
   j["adaptive_time_step"] = {{"velocity_cfl", 3}};
   CHECK_THROWS_WITH(parse(j), Contains("dam.json: adaptive_time_step.velocity_cfl: must be in (0, 2], got 3"));
-  // Past the chapter's regime only with the twice-smoothed pressure and the PIC blend per second.
+  // Past the chapter's regime only with the twice-smoothed pressure, and with the PIC blend per
+  // second or the projection (the default).
   j["adaptive_time_step"] = {{"acoustic_cfl", 1.3}};
+  CHECK(parse(j).adaptive_time_step->acoustic_cfl == 1.3f);
+  j["pressure_force"] = "chapter";
   CHECK_THROWS_WITH(parse(j), Contains("dam.json: adaptive_time_step.acoustic_cfl: above 1 needs \"pressure_force\": "
-                                       "\"splat_adjoint\" and pic_ratio_reference_step, got 1.3"));
+                                       "\"splat_adjoint\" with pic_ratio_reference_step or the projection, got 1.3"));
   j["pressure_force"] = "splat_adjoint";
+  j["projection_iterations"] = 0;
   j["pic_ratio_reference_step"] = 1e-4;
   CHECK(parse(j).adaptive_time_step->acoustic_cfl == 1.3f);
   j.erase("pressure_force");

@@ -26,10 +26,20 @@ inline liquid::Scene under_equation_of_state(liquid::Scene scene, float pic_rati
   return scene;
 }
 
+// The chapter's model, named (the library's default is the shipped physical scenes' projection on
+// the separable splat): its pressure, its point-sprite splat, its PIC share, no projection.
+inline liquid::Scene with_chapter_model(liquid::Scene scene) {
+  scene.pressure_force = liquid::PressureForce::Chapter;
+  scene.splat = liquid::SplatMode::PointSprite;
+  scene.projection_iterations = 0;
+  scene.pic_ratio = liquid::k_chapter_pic_ratio;
+  return scene;
+}
+
 // A 0.32 m box of 16 cells with no gravity and one particle at `at` moving at (0.5, -0.25, 0.125)
-// m/s: the splat tests' scene.
+// m/s, in the chapter's model: the splat tests' scene.
 inline liquid::Scene single_particle_scene(int dimension, glm::vec3 at) {
-  liquid::Scene scene;
+  liquid::Scene scene = with_chapter_model({});
   scene.name = "single_particle";
   scene.dimension = dimension;
   scene.domain = glm::vec3(0.32f);

@@ -90,7 +90,7 @@ TEMPLATE_TEST_CASE("frame golden: 3D dam break, raymarched with FXAA", "[gpu][fr
                    test::VertexLayerPath, test::AtlasPath) {
   engine::vk::Context& context = test::gpu_for(TestType::path);
   liquid::LiquidNode node(context, liquid::parse_scene(R"({
-    "name": "frame golden 3D", "dimension": 3, "domain": [0.5, 0.3, 0.25], "grid_resolution": 32,
+    "name": "frame golden 3D", "pressure_force": "chapter", "splat": "point_sprite", "dimension": 3, "domain": [0.5, 0.3, 0.25], "grid_resolution": 32,
     "particle_spacing": 0.008, "density": 1000, "stiffness": 12, "time_step": 0.0005, "substeps": 20,
     "fluid_blocks": [ { "min": [0.0, 0.0, 0.0], "max": [0.16, 0.2, 0.25] } ],
     "camera": { "position": [0.25, 0.35, 0.8], "target": [0.25, 0.08, 0.12], "fov_y_degrees": 45 } })",
@@ -121,7 +121,7 @@ TEMPLATE_TEST_CASE("frame golden: 3D sphere obstacle in the liquid, raymarched",
                    test::GeometryPath, test::VertexLayerPath, test::AtlasPath) {
   engine::vk::Context& context = test::gpu_for(TestType::path);
   liquid::LiquidNode node(context, liquid::parse_scene(R"({
-    "name": "frame golden 3D obstacle", "dimension": 3, "domain": [0.4, 0.3, 0.3], "grid_resolution": 28,
+    "name": "frame golden 3D obstacle", "pressure_force": "chapter", "splat": "point_sprite", "dimension": 3, "domain": [0.4, 0.3, 0.3], "grid_resolution": 28,
     "particle_spacing": 0.009, "density": 1000, "stiffness": 12, "time_step": 0.0005, "substeps": 20,
     "fluid_blocks": [ { "min": [0.0, 0.0, 0.0], "max": [0.4, 0.08, 0.3] } ],
     "obstacles": [ { "shape": "sphere", "center": [0.2, 0.09, 0.15], "radius": 0.06 } ],
@@ -135,7 +135,7 @@ TEMPLATE_TEST_CASE("frame golden: 3D sphere obstacle in the liquid, raymarched",
 TEST_CASE("frame golden: 2D dam break with obstacles, 2D view with FXAA", "[gpu][frames][view2d]") {
   engine::vk::Context& context = test::gpu();
   liquid::LiquidNode node(context, liquid::parse_scene(R"({
-    "name": "frame golden 2D", "dimension": 2, "domain": [1.0, 0.6], "grid_resolution": 96,
+    "name": "frame golden 2D", "pressure_force": "chapter", "splat": "point_sprite", "dimension": 2, "domain": [1.0, 0.6], "grid_resolution": 96,
     "particle_spacing": 0.008, "density": 1000, "stiffness": 20, "time_step": 0.0006, "substeps": 25,
     "fluid_blocks": [ { "min": [0.0, 0.0], "max": [0.3, 0.4] } ],
     "obstacles": [ { "shape": "sphere", "center": [0.6, 0.1], "radius": 0.07 },
@@ -148,7 +148,7 @@ TEST_CASE("frame golden: 2D dam break with obstacles, 2D view with FXAA", "[gpu]
 TEST_CASE("frame golden: shallow water over a hill, height field with FXAA", "[gpu][frames][height_field]") {
   engine::vk::Context& context = test::gpu();
   liquid::LiquidNode node(context, liquid::parse_scene(R"({
-    "name": "frame golden shallow water", "dimension": 2, "mode": "shallow_water", "domain": [1.0, 1.0],
+    "name": "frame golden shallow water", "dimension": 2, "mode": "shallow_water", "splat": "point_sprite", "domain": [1.0, 1.0],
     "grid_resolution": 64, "particle_spacing": 0.0125, "density": 1000, "rest_depth": 0.05,
     "time_step": 0.002, "substeps": 10,
     "fluid_blocks": [ { "min": [0.0, 0.0], "max": [0.5, 1.0] } ],
@@ -161,7 +161,7 @@ TEST_CASE("frame golden: shallow water over a hill, height field with FXAA", "[g
 TEST_CASE("FXAA changes the raymarched frame only along edges", "[gpu][frames][raymarch]") {
   engine::vk::Context& context = test::gpu();
   const auto scene = liquid::parse_scene(R"({
-    "name": "fxaa 3D", "dimension": 3, "domain": [0.4, 0.3, 0.3], "grid_resolution": 24,
+    "name": "fxaa 3D", "pressure_force": "chapter", "splat": "point_sprite", "dimension": 3, "domain": [0.4, 0.3, 0.3], "grid_resolution": 24,
     "particle_spacing": 0.01, "density": 1000, "stiffness": 12, "time_step": 0.0005, "substeps": 10,
     "fluid_blocks": [ { "min": [0.1, 0.0, 0.1], "max": [0.3, 0.15, 0.2] } ] })",
                                          "fxaa_3d.json");

@@ -1124,7 +1124,7 @@ TEST_CASE("a context the library creates takes a host's extra extensions, featur
 TEST_CASE("a host's own mesh, from its interleaved vertex buffer, is an obstacle it moves and turns each frame",
           "[gpu][liquid][mesh][host]") {
   engine::vk::Context& context = test::gpu();
-  liquid::Scene scene = liquid::parse_scene(R"({ "name": "host mesh", "dimension": 3, "domain": [0.3, 0.24, 0.2],
+  liquid::Scene scene = liquid::parse_scene(R"({ "name": "host mesh", "pressure_force": "chapter", "splat": "point_sprite", "dimension": 3, "domain": [0.3, 0.24, 0.2],
     "grid_resolution": 15, "particle_spacing": 0.01, "stiffness": 9.8, "kernel_radius_cells": 3, "time_step": 0.0004,
     "substeps": 5, "fluid_blocks": [ { "min": [0.0, 0.0, 0.0], "max": [0.3, 0.08, 0.2] } ] })", "host_mesh.json");
   // A host's interleaved vertices: float3 position first, then whatever else (here a float3 normal).

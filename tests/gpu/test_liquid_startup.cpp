@@ -20,7 +20,7 @@ constexpr int k_steps = 20;
 // A block floating in the middle of the domain (touching no wall, so only the obstacle acts on
 // it) in the resolution and stiffness of the shipped obstacle scenes.
 liquid::Scene floating_block(int dimension) {
-  liquid::Scene scene;
+  liquid::Scene scene = test::with_chapter_model({});  // each test names its pressure force
   scene.name = "floating block " + std::to_string(dimension) + "D";
   scene.dimension = dimension;
   if (dimension == 2) {

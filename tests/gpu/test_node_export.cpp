@@ -121,7 +121,7 @@ TEST_CASE("a node restored from a checkpoint continues the run bit for bit", "[g
 TEST_CASE("under the affine transfer a checkpoint carries the velocity gradients and continues bit for bit",
           "[gpu][liquid][export][affine]") {
   std::string text = k_scene;
-  text.replace(text.find("\"substeps\": 5,"), 14, "\"substeps\": 5, \"transfer\": \"affine\",");
+  text.replace(text.find("\"substeps\": 5,"), 14, "\"substeps\": 5, \"transfer\": \"affine\", \"splat\": \"point_sprite\",");
   const liquid::Scene scene = liquid::parse_scene(text, "checkpoint.json");
   liquid::LiquidNode first(test::gpu(), scene);
   test::run_steps(first, 25);

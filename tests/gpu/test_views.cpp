@@ -284,7 +284,7 @@ TEST_CASE("2D view golden: a wave, a droplet, a thin sheet, obstacles and partic
   // Three obstacles (a sphere breaking the surface, a submerged box, merged metaballs in the air)
   // and a block of particles under the surface.
   const liquid::Scene scene = liquid::parse_scene(R"({
-    "name": "view2d golden", "dimension": 2, "domain": [1.0, 0.6], "grid_resolution": 128,
+    "name": "view2d golden", "pressure_force": "chapter", "splat": "point_sprite", "dimension": 2, "domain": [1.0, 0.6], "grid_resolution": 128,
     "particle_spacing": 0.01, "density": 1000, "stiffness": 50, "substeps": 1,
     "fluid_blocks": [ { "min": [0.03, 0.03], "max": [0.33, 0.2] } ],
     "obstacles": [
@@ -344,7 +344,7 @@ TEST_CASE("2D view golden: a wave, a droplet, a thin sheet, obstacles and partic
 TEST_CASE("height-field golden: waves around a dry island over a sandy bed", "[gpu][height_field]") {
   engine::vk::Context& context = test::gpu();
   const liquid::Scene scene = liquid::parse_scene(R"({
-    "name": "height field golden", "dimension": 2, "mode": "shallow_water", "domain": [1.0, 1.0],
+    "name": "height field golden", "splat": "point_sprite", "dimension": 2, "mode": "shallow_water", "domain": [1.0, 1.0],
     "grid_resolution": 128, "particle_spacing": 0.01, "density": 1000, "rest_depth": 0.05,
     "time_step": 0.001, "substeps": 1,
     "fluid_blocks": [ { "min": [0.0, 0.0], "max": [1.0, 1.0] } ],

@@ -16,7 +16,7 @@ inline liquid::Scene whitewater_dam_break(bool whitewater = true) {
   "name": "whitewater dam break", "dimension": 3, "domain": [0.5, 0.4, 0.25], "grid_resolution": 32,
   "particle_spacing": 0.0104, "density": 1000, "stiffness": 14.112, "gamma": 5, "kernel_radius_cells": 3,
   "pic_ratio": 0.05, "pic_ratio_reference_step": 0.0002801, "pressure_force": "splat_adjoint", "splat": "separable",
-  "time_step": 0.002241, "substeps": 15, "wall_margin_cells": 0.3,
+  "projection_iterations": 0, "time_step": 0.002241, "substeps": 15, "wall_margin_cells": 0.3,
   "fluid_blocks": [ { "min": [0.0, 0.0, 0.0], "max": [0.16, 0.3, 0.25] } ],
   "obstacles": [ { "shape": "box", "center": [0.35, 0.05, 0.125], "half_extent": [0.02, 0.05, 0.05] } ],
   "whitewater": {},
