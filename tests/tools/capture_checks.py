@@ -6,6 +6,7 @@ standard library (and OpenVDB's Python module for the volume check). Used by cte
 Each check raises (exit 1, naming what is wrong) or prints 'ok'."""
 import argparse
 import json
+import math
 import os
 import re
 import select
@@ -22,6 +23,13 @@ SMALL = ["--width", "48", "--height", "36", "--validation"]
 
 def fail(message):
     raise SystemExit("FAILED: " + message)
+
+
+def simulated_domain(scene):
+    """The box the liquid runs in: the scene's domain snapped to whole cubic cells of its longest
+    side over grid_resolution (README, `domain`), which an axis may pass by up to half a cell."""
+    h = max(scene["domain"]) / scene["grid_resolution"]
+    return [max(1, math.floor(d / h + 0.5)) * h for d in scene["domain"]]  # std::round
 
 
 def run(args, expect=0):
@@ -595,8 +603,9 @@ def check_range():
     ply = read_ply(os.path.join(zero, "particles_00000.ply"))
     if ply["time_s"] != 0.0 or any(v != 0.0 for v in ply["vx"] + ply["vy"] + ply["vz"]):
         fail("frame 0 is not the initial state at rest")
-    # Deep inside the block the lattice is at the rest density; the small block's edges read less.
-    if not 0.95 < max(ply["density"]) <= 1.001 or not min(ply["density"]) < 0.5:
+    # Deep inside the block the lattice is at the rest density (read at the particles, which sit where
+    # the separable splat's deposit peaks, up to 1 % above the cells' mean); its edges read less.
+    if not 0.95 < max(ply["density"]) <= 1.01 or not min(ply["density"]) < 0.5:
         fail(f"frame 0's particle densities span {min(ply['density'])} to {max(ply['density'])}, expected up to 1")
 
 
@@ -678,8 +687,9 @@ def check_surface():
         block = (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2])
         if not 0.7 * block < volume < 1.05 * block:
             fail(f"frame {f}: the mesh encloses {volume} m^3, the block {block} m^3")
-        if any(not -1e-6 <= p[i] <= domain[i] + 1e-6 for p in v for i in range(3)):
-            fail(f"frame {f}: a vertex outside the domain")
+        box = simulated_domain(record["scene"])
+        if any(not -1e-6 <= p[i] <= box[i] + 1e-6 for p in v for i in range(3)):
+            fail(f"frame {f}: a vertex outside the domain {box}")
         if len(mesh["velocities"]) != len(v) or max(sum(c * c for c in u) for u in mesh["velocities"]) > 100.0:
             fail(f"frame {f}: velocities")
 
@@ -700,14 +710,15 @@ def check_whitewater():
     json.dump(scene, open(path, "w"))
     out = os.path.join(ARGS.work, "whitewater")
     shutil.rmtree(out, ignore_errors=True)
-    last = run([path, "-s", "0", "-e", "6", "--export-whitewater", "--export-volume", "-o", out]
+    # The block is let go at rest: its first spray comes about frame 10, once it has fallen.
+    last = run([path, "-s", "0", "-e", "14", "--export-whitewater", "--export-volume", "-o", out]
                + SMALL).stdout.splitlines()[-1]
     if not re.search(r"; the whitewater export took [0-9.]+ ms a frame$", last):
         fail(f"last line {last!r} does not give the whitewater export's time")
     summary = json.load(open(os.path.join(out, "summary.json")))
     if not 0.0 < summary["whitewater_export_ms"]["median"] <= summary["whitewater_export_ms"]["max"]:
         fail(f"summary whitewater_export_ms {summary.get('whitewater_export_ms')}")
-    domain = scene["domain"]
+    domain = simulated_domain(scene)
     counts = []
     for row in stats_rows(out):
         f = int(row["frame"])
@@ -766,7 +777,7 @@ def check_whitewater():
         expected = read_whitewater(os.path.join(straight, f"w_{f:04d}.ply"))
         if any(ply[k] != expected[k] for k in ("x", "y", "z", "type", "id")):
             fail(f"resumed run, frame {f}: its whitewater differs from the uninterrupted run's")
-    print(f"whitewater: {counts} particles in frames 0 to 6, the foam grids summing to the files' foam; resumed "
+    print(f"whitewater: {counts} particles in frames 0 to 14, the foam grids summing to the files' foam; resumed "
           "as the uninterrupted run")
 
 
