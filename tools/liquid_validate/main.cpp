@@ -52,14 +52,16 @@ struct Options {
   std::string grid_path;  // --3d-path: empty for the device's choice
   std::vector<liquid::SceneOverride> overrides;  // --set, applied to every scene
   std::vector<double> column_2d_spacings, column_3d_spacings;  // empty: the defaults
+  fs::path budget_scene;         // --budget-scene: the budget of this scene instead of the tank's
+  double budget_seconds = 0.25;  // --budget-seconds: how long it is run
 };
 
 // A scene of the scenes folder with the --set overrides applied.
-liquid::Scene load(const Options& o, const char* file) {
-  const fs::path path = o.scenes / file;
+liquid::Scene load_path(const Options& o, const fs::path& path) {
   if (o.overrides.empty()) return liquid::load_scene(path);
   return liquid::parse_scene(liquid::scene_document(path, o.overrides), path.string());
 }
+liquid::Scene load(const Options& o, const char* file) { return load_path(o, o.scenes / file); }
 
 // One sample per rendered frame of simulated time.
 struct Sample {
@@ -519,13 +521,63 @@ void still_water(engine::vk::Context& context, const Options& o, std::vector<Che
   }
 }
 
-// The energy budget (liquid/analysis/energy_budget.h) of the sloshing tank and of the travelling
-// pulse, at 64 cells along L: a step at a time for two of the first mode's periods, each term of
-// the particle pass's update added up and printed per period as a share of the wave's energy (its
-// largest kinetic energy in the first period). Figures, not targets: they say which part of the
-// method removes the motion (docs/physics.md, "Where sloshing loses its energy"). --quick: the 2D
-// tank alone.
+// One scene's energy budget (liquid/analysis/energy_budget.h), a step at a time for `steps` steps:
+// each term of the particle pass's update added up, and the largest kinetic energy before `until`.
+struct BudgetRun {
+  liquid::EnergyBudget total;
+  double largest_kinetic = 0.0;
+  double time_step = 0.0;
+};
+BudgetRun run_budget(engine::vk::Context& context, const Options& o, const std::string& name,
+                     const liquid::Scene& scene, double seconds, double until) {
+  liquid::LiquidOptions node_options;
+  node_options.grid_path = tools::grid_path_from_flag(o.grid_path);
+  liquid::LiquidNode node(context, scene, node_options);
+  const liquid::SimulationSetup& setup = simulation_of(node).setup();
+  const double pic_step = liquid::pic_blend_for_step(setup.pic_ratio, setup.pic_ratio_reference_step, setup.time_step);
+  const int steps = std::max(1, int(std::ceil(seconds / setup.time_step)));
+  std::printf("%s: %d steps of %.3g ms, PIC share %.3g per step...\n", name.c_str(), steps, 1e3 * setup.time_step,
+              pic_step);
+  tools::FrameLoop loop(context);
+  BudgetRun run;
+  run.time_step = setup.time_step;
+  liquid::ParticleSnapshot before = node.read_particles();
+  for (int step = 0; step < steps; ++step) {
+    loop.run([&](engine::graph::RenderGraph& graph) { node.add_to(graph, 1); });
+    liquid::ParticleSnapshot after = node.read_particles();
+    run.total.add(liquid::step_energy_budget(setup, pic_step, before, after, node.read_splat(), node.read_grid_velocity(),
+                                             scene.transfer));
+    if (node.time() < until) run.largest_kinetic = std::max(run.largest_kinetic, node.diagnose(after).kinetic_energy);
+    before = std::move(after);
+  }
+  tools::fail_on_validation_messages(context.validation_message_count());
+  return run;
+}
+
+void add_budget_terms(const std::string& name, const liquid::EnergyBudget& total, double scale,
+                      const std::string& unit, std::vector<Check>& checks) {
+  const std::pair<const char*, double> terms[] = {
+      {"kinetic + potential", total.kinetic + total.potential},
+      {"grid increment: pressure and the grid's walls", total.pressure_and_grid_walls},
+      {"PIC share", total.pic},
+      {"particle pass: walls and obstacles", total.particle_walls},
+      {"advection (potential change + gravity's work)", total.advection()}};
+  for (const auto& [what, joules] : terms) checks.push_back({name + ": " + what + ", " + unit, joules * scale, "", true, false});
+}
+
+// The energy budget of the sloshing tank and of the travelling pulse, at 64 cells along L, for two
+// of the first mode's periods, printed per period as a share of the wave's energy (its largest
+// kinetic energy in the first period). Figures, not targets: they say which part of the method
+// removes the motion (docs/physics.md, "Where sloshing loses its energy"). --quick: the 2D tank
+// alone. --budget-scene: that scene's budget over its first --budget-seconds instead, in joules.
 void budget(engine::vk::Context& context, const Options& o, std::vector<Check>& checks) {
+  if (!o.budget_scene.empty()) {
+    const liquid::Scene scene = load_path(o, o.budget_scene);
+    const std::string name = "budget " + scene.name + ", first " + tools::format_cli_number(o.budget_seconds) + " s";
+    const BudgetRun run = run_budget(context, o, name, scene, o.budget_seconds, o.budget_seconds);
+    add_budget_terms(name, run.total, 1.0, "J", checks);
+    return;
+  }
   const liquid::Scene physics = load(o, "rest_pool_2d.json");
   struct Case {
     std::string name;
@@ -543,37 +595,10 @@ void budget(engine::vk::Context& context, const Options& o, std::vector<Check>& 
   for (const auto& [name, scene] : cases) {
     const liquid::SloshingTank tank = liquid::sloshing_tank(scene.dimension, 64);
     const double period = liquid::sloshing_period(tank.length, tank.depth, glm::length(scene.gravity));
-    liquid::LiquidOptions node_options;
-    node_options.grid_path = tools::grid_path_from_flag(o.grid_path);
-    liquid::LiquidNode node(context, scene, node_options);
-    const liquid::SimulationSetup& setup = simulation_of(node).setup();
-    const double pic_step =
-        liquid::pic_blend_for_step(setup.pic_ratio, setup.pic_ratio_reference_step, setup.time_step);
-    const int steps = int(std::ceil(2.0 * period / setup.time_step));
-    std::printf("%s: %d steps of %.3g ms, PIC share %.3g per step...\n", name.c_str(), steps, 1e3 * setup.time_step,
-                pic_step);
-    tools::FrameLoop loop(context);
-    liquid::EnergyBudget total;
-    liquid::ParticleSnapshot before = node.read_particles();
-    double mode_energy = 0.0;
-    for (int step = 0; step < steps; ++step) {
-      loop.run([&](engine::graph::RenderGraph& graph) { node.add_to(graph, 1); });
-      liquid::ParticleSnapshot after = node.read_particles();
-      total.add(liquid::step_energy_budget(setup, pic_step, before, after, node.read_splat(), node.read_grid_velocity(),
-                                           scene.transfer));
-      if (node.time() < period) mode_energy = std::max(mode_energy, node.diagnose(after).kinetic_energy);
-      before = std::move(after);
-    }
-    tools::fail_on_validation_messages(context.validation_message_count());
-    const double per_period = 1.0 / (mode_energy * steps * setup.time_step / period);
-    const std::pair<const char*, double> terms[] = {
-        {"kinetic + potential", total.kinetic + total.potential},
-        {"grid increment: pressure and the grid's walls", total.pressure_and_grid_walls},
-        {"PIC share", total.pic},
-        {"particle pass: walls and obstacles", total.particle_walls},
-        {"advection (potential change + gravity's work)", total.advection()}};
-    for (const auto& [what, joules] : terms)
-      checks.push_back({name + ": " + what + ", per period / wave energy", joules * per_period, "", true, false});
+    const BudgetRun run = run_budget(context, o, name, scene, 2.0 * period, period);
+    const double steps = std::ceil(2.0 * period / run.time_step);
+    add_budget_terms(name, run.total, 1.0 / (run.largest_kinetic * steps * run.time_step / period),
+                     "per period / wave energy", checks);
   }
 }
 
@@ -594,6 +619,10 @@ int run(const Options& o) {
       {"column_3d.json", wanted(o, "column") || wanted(o, "column_3d")}};
   for (const auto& [file, runs] : scenes)
     if (runs) load(o, file);
+  if (!o.budget_scene.empty()) {
+    if (o.only.empty() || !wanted(o, "budget")) throw std::invalid_argument("--budget-scene needs --only budget");
+    load_path(o, o.budget_scene);
+  }
   engine::vk::Context context(engine::vk::ContextOptions{.validation = o.validation});
   std::printf("device %s (%s)%s\n", context.device_name().c_str(), context.driver_description().c_str(),
               o.quick ? ", quick" : "");
@@ -651,6 +680,12 @@ int main(int argc, char** argv) {
                  "when named; repeatable)")
       ->check(CLI::IsMember({"rest_pool", "energy", "sloshing", "travelling", "still", "budget", "column",
                              "column_2d", "column_3d"}));
+  app.add_option("--budget-scene", o.budget_scene,
+                 "with --only budget: the energy budget of this scene (with the --set overrides) instead of the "
+                 "sloshing tank's, in joules")
+      ->check(CLI::ExistingFile);
+  app.add_option("--budget-seconds", o.budget_seconds, "how long --budget-scene runs, s (default 0.25)")
+      ->check(tools::finite_range(1e-4, 60.0));
   app.add_flag("--validation", o.validation, "enable the Vulkan validation layer");
   std::vector<std::string> sets;
   app.add_option("--set", sets, "override a field of every scene run, checked like the file (key=value, repeatable)")
