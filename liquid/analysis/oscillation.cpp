@@ -1,6 +1,7 @@
 #include "liquid/analysis/oscillation.h"
 
 #include "liquid/analysis/validation.h"
+#include "liquid/physics/setup.h"
 
 #include <algorithm>
 #include <cmath>
@@ -44,7 +45,9 @@ Scene tank_scene(const Scene& physics, const SloshingTank& tank, const std::func
                                             physics.dimension == 3 ? physics.domain.z : 0.0f})) /
                            double(physics.grid_resolution.value_or(1));
   const double cell = tank.length / tank.cells_along;
-  double spacing = physics.grid_resolution ? cell * physics.particle_spacing / base_cell : 0.5 * cell;
+  // Without a grid in the base, the default grid's spacings per cell, as make_setup() would choose.
+  double spacing = physics.grid_resolution ? cell * physics.particle_spacing / base_cell
+                                           : cell / k_default_spacings_per_cell;
   // 3D: the nearest spacing that fills the width with whole spacings. Ten spacings of the regime's
   // in the six cells across left 0.97 of one empty, and the liquid, spreading over it, started 9 %
   // below rest density: the surface came down for as long as the run.
