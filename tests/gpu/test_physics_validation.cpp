@@ -185,8 +185,8 @@ TEST_CASE("with the PIC blend per second the column's front keeps its place at 8
           "[gpu][liquid][physics][energy]") {
   // column_2d at 4 mm under the equation of state (column_front): at the chapter's step (its
   // reference step), at the shipped 8 times that step, and at 8 times the step with r per step (the
-  // chapter's blend). Measured: Z at T = 3.33 of
-  // 3.56, 3.72 and 4.23 (docs/physics.md, "The PIC blend per second", has the 2 mm figures).
+  // chapter's blend). Measured (2026-12-07): Z at T = 3.33 of
+  // 3.40, 3.59 and 4.16 (docs/physics.md, "The PIC blend per second", has the 2 mm figures).
   liquid::Scene chapter_step = column_at(2.0);
   chapter_step.time_step = chapter_step.pic_ratio_reference_step.value();
   const liquid::Scene shipped = column_at(2.0);
